@@ -1,0 +1,349 @@
+//! The canvas: colour and depth planes of `width × height` pixels.
+
+use std::path::Path;
+
+use glam::Vec2;
+
+use crate::{Pixel, Rgba, Viewport, ascii};
+
+/// The value a cleared depth plane holds: the far end of the depth range
+/// `[0, 1]` (OpenGL's default `glClearDepth(1.0)`).
+pub const DEPTH_CLEAR: f32 = 1.0;
+
+/// A vertex as rasterizers receive it: after projection and viewport
+/// transform, in pixel coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Position in pixel coordinates (pixel centres at integers, y up).
+    pub position: Vec2,
+    /// Depth in `[0, 1]`, 0 nearest.
+    pub depth: f32,
+    /// Colour.
+    pub colour: Rgba,
+}
+
+impl Vertex {
+    /// A vertex at `position` with the given depth and colour.
+    #[must_use]
+    pub const fn new(position: Vec2, depth: f32, colour: Rgba) -> Self {
+        Self {
+            position,
+            depth,
+            colour,
+        }
+    }
+
+    /// Linear interpolation of position, depth and colour:
+    /// `self · (1 − t) + other · t` (the sheet's `MeshVertex.mix`).
+    #[must_use]
+    pub fn mix(&self, other: &Self, t: f32) -> Self {
+        Self {
+            position: self.position.lerp(other.position, t),
+            depth: self.depth * (1.0 - t) + other.depth * t,
+            colour: self.colour.lerp(other.colour, t),
+        }
+    }
+}
+
+/// What a rasterizer emits for one covered pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fragment {
+    /// The pixel.
+    pub pixel: Pixel,
+    /// Interpolated depth.
+    pub depth: f32,
+    /// Interpolated colour.
+    pub colour: Rgba,
+}
+
+/// Why a canvas could not be made, read or written.
+#[derive(Debug, thiserror::Error)]
+pub enum CanvasError {
+    /// Reading or writing a PNG failed.
+    #[error("{path}: {source}")]
+    Image {
+        /// The file.
+        path: String,
+        /// What the `image` crate reported.
+        source: image::ImageError,
+    },
+    /// Creating the folder for an output file failed.
+    #[error("{path}: {source}")]
+    Io {
+        /// The folder.
+        path: String,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The canvas would have more pixels than fit in memory.
+    #[error("a canvas of {width} × {height} pixels is too large")]
+    TooLarge {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+    },
+}
+
+/// A raster of `width × height` pixels with a colour plane and a depth plane.
+///
+/// Pixel `(x, y)` is stored at index `y · width + x`, row 0 at the bottom
+/// (see the crate documentation for the full convention). Every write
+/// outside the canvas is ignored, so rasterizers need not clip pixels
+/// themselves; every read outside returns `None`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Canvas {
+    width: u32,
+    height: u32,
+    colour: Vec<Rgba>,
+    depth: Vec<f32>,
+}
+
+impl Canvas {
+    /// The largest number of pixels a canvas may have (a 16384² image).
+    pub const MAX_PIXELS: u64 = 1 << 28;
+
+    /// A canvas cleared to [`Rgba::BLACK`] and [`DEPTH_CLEAR`].
+    ///
+    /// # Panics
+    /// If `width · height` exceeds [`Canvas::MAX_PIXELS`]; see
+    /// [`Canvas::try_new`] for the fallible version.
+    #[must_use]
+    pub fn new(width: u32, height: u32) -> Self {
+        match Self::try_new(width, height) {
+            Ok(canvas) => canvas,
+            Err(e) => panic!("{e}"),
+        }
+    }
+
+    /// A cleared canvas, or an error if it would exceed
+    /// [`Canvas::MAX_PIXELS`]. A zero width or height gives an empty canvas.
+    pub fn try_new(width: u32, height: u32) -> Result<Self, CanvasError> {
+        let n = u64::from(width) * u64::from(height);
+        if n > Self::MAX_PIXELS {
+            return Err(CanvasError::TooLarge { width, height });
+        }
+        Ok(Self {
+            width,
+            height,
+            colour: vec![Rgba::BLACK; n as usize],
+            depth: vec![DEPTH_CLEAR; n as usize],
+        })
+    }
+
+    /// Width in pixels.
+    #[must_use]
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    #[must_use]
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The whole canvas as a viewport: `[0, width − 1] × [0, height − 1]`.
+    #[must_use]
+    pub fn viewport(&self) -> Viewport {
+        Viewport::new(0, 0, self.width as i32 - 1, self.height as i32 - 1)
+    }
+
+    #[inline]
+    fn index(&self, p: Pixel) -> Option<usize> {
+        // Casting a negative i32 to u32 wraps to a huge value, so one
+        // comparison per axis rejects both sides.
+        if (p.x as u32) < self.width && (p.y as u32) < self.height {
+            Some(p.y as usize * self.width as usize + p.x as usize)
+        } else {
+            None
+        }
+    }
+
+    /// Whether the pixel lies on the canvas.
+    #[must_use]
+    pub fn contains(&self, p: Pixel) -> bool {
+        self.index(p).is_some()
+    }
+
+    /// Sets every pixel to `colour` and every depth to [`DEPTH_CLEAR`].
+    pub fn clear(&mut self, colour: Rgba) {
+        self.colour.fill(colour);
+        self.depth.fill(DEPTH_CLEAR);
+    }
+
+    /// The colour at `p`, or `None` outside the canvas.
+    #[must_use]
+    pub fn get(&self, p: Pixel) -> Option<Rgba> {
+        self.index(p).map(|i| self.colour[i])
+    }
+
+    /// Sets the colour at `p`; ignored outside the canvas.
+    #[inline]
+    pub fn set(&mut self, p: Pixel, colour: Rgba) {
+        if let Some(i) = self.index(p) {
+            self.colour[i] = colour;
+        }
+    }
+
+    /// The depth at `p`, or `None` outside the canvas.
+    #[must_use]
+    pub fn depth(&self, p: Pixel) -> Option<f32> {
+        self.index(p).map(|i| self.depth[i])
+    }
+
+    /// Sets the depth at `p`; ignored outside the canvas.
+    pub fn set_depth(&mut self, p: Pixel, depth: f32) {
+        if let Some(i) = self.index(p) {
+            self.depth[i] = depth;
+        }
+    }
+
+    /// Writes a fragment's colour and depth without a depth test; ignored
+    /// outside the canvas.
+    #[inline]
+    pub fn plot(&mut self, fragment: Fragment) {
+        if let Some(i) = self.index(fragment.pixel) {
+            self.colour[i] = fragment.colour;
+            self.depth[i] = fragment.depth;
+        }
+    }
+
+    /// Blends `colour` over the pixel with the given coverage in `[0, 1]`
+    /// (the antialiasing write): with `s = colour.a · coverage`,
+    /// `result = colour · s + old · (1 − s)` for the colour channels and
+    /// `s + old.a · (1 − s)` for alpha. Coverage is clamped to `[0, 1]`
+    /// (NaN counts as 0); ignored outside the canvas.
+    #[inline]
+    pub fn blend(&mut self, p: Pixel, colour: Rgba, coverage: f32) {
+        if let Some(i) = self.index(p) {
+            let s = colour.a * if coverage >= 0.0 { coverage.min(1.0) } else { 0.0 };
+            let old = self.colour[i];
+            self.colour[i] = Rgba::new(
+                colour.r * s + old.r * (1.0 - s),
+                colour.g * s + old.g * (1.0 - s),
+                colour.b * s + old.b * (1.0 - s),
+                s + old.a * (1.0 - s),
+            );
+        }
+    }
+
+    /// All pixels of the canvas whose colour differs from `background`, in
+    /// row-major order from the bottom row.
+    #[must_use]
+    pub fn pixels_not(&self, background: Rgba) -> Vec<Pixel> {
+        self.enumerate()
+            .filter(|&(_, c)| c != background)
+            .map(|(p, _)| p)
+            .collect()
+    }
+
+    /// Every pixel with its colour, row-major from the bottom row.
+    pub fn enumerate(&self) -> impl Iterator<Item = (Pixel, Rgba)> + '_ {
+        let w = self.width.max(1) as usize;
+        self.colour
+            .iter()
+            .enumerate()
+            .map(move |(i, &c)| (Pixel::new((i % w) as i32, (i / w) as i32), c))
+    }
+
+    /// The colour plane as an 8-bit RGBA image, top row first (flipped, so
+    /// that y points up in the picture).
+    #[must_use]
+    pub fn to_image(&self) -> image::RgbaImage {
+        image::RgbaImage::from_fn(self.width, self.height, |col, row| {
+            let y = self.height - 1 - row;
+            image::Rgba(self.colour[(y * self.width + col) as usize].to_rgba8())
+        })
+    }
+
+    /// A canvas holding the image's colours (top image row becomes the top
+    /// canvas row); depth is cleared.
+    #[must_use]
+    pub fn from_image(image: &image::RgbaImage) -> Self {
+        let mut canvas = Self::new(image.width(), image.height());
+        for (col, row, px) in image.enumerate_pixels() {
+            let p = Pixel::new(col as i32, (image.height() - 1 - row) as i32);
+            canvas.set(p, Rgba::from_rgba8(px.0));
+        }
+        canvas
+    }
+
+    /// Writes the colour plane as a PNG, creating missing folders.
+    pub fn save_png(&self, path: impl AsRef<Path>) -> Result<(), CanvasError> {
+        let path = path.as_ref();
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir).map_err(|source| CanvasError::Io {
+                path: dir.display().to_string(),
+                source,
+            })?;
+        }
+        self.to_image()
+            .save_with_format(path, image::ImageFormat::Png)
+            .map_err(|source| CanvasError::Image {
+                path: path.display().to_string(),
+                source,
+            })
+    }
+
+    /// Reads a PNG into a canvas.
+    pub fn load_png(path: impl AsRef<Path>) -> Result<Self, CanvasError> {
+        let path = path.as_ref();
+        let image = image::open(path).map_err(|source| CanvasError::Image {
+            path: path.display().to_string(),
+            source,
+        })?;
+        Ok(Self::from_image(&image.to_rgba8()))
+    }
+
+    /// ASCII art of the colour plane's ink (see [`crate::ink_char`]) with
+    /// axes and a legend: the form snapshots and diffs use.
+    #[must_use]
+    pub fn to_ascii(&self) -> String {
+        ascii::ascii_grid(self.width, self.height, |p| {
+            ascii::ink_char(self.get(p).map_or(0.0, Rgba::ink))
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writes_outside_are_ignored_and_reads_are_none() {
+        let mut c = Canvas::new(3, 2);
+        c.set(Pixel::new(-1, 0), Rgba::WHITE);
+        c.set(Pixel::new(3, 0), Rgba::WHITE);
+        c.set(Pixel::new(0, 2), Rgba::WHITE);
+        c.blend(Pixel::new(i32::MIN, i32::MAX), Rgba::WHITE, 1.0);
+        assert!(c.pixels_not(Rgba::BLACK).is_empty());
+        assert_eq!(c.get(Pixel::new(0, -1)), None);
+        assert_eq!(c.depth(Pixel::new(5, 5)), None);
+    }
+
+    #[test]
+    fn image_rows_are_flipped_so_y_points_up() {
+        let mut c = Canvas::new(2, 2);
+        c.set(Pixel::new(0, 1), Rgba::WHITE); // top-left in the picture
+        let img = c.to_image();
+        assert_eq!(img.get_pixel(0, 0).0, [255, 255, 255, 255]);
+        assert_eq!(img.get_pixel(0, 1).0, [0, 0, 0, 255]);
+        assert_eq!(Canvas::from_image(&img), c);
+    }
+
+    #[test]
+    fn blend_with_half_coverage_mixes_half() {
+        let mut c = Canvas::new(1, 1);
+        c.blend(Pixel::new(0, 0), Rgba::WHITE, 0.5);
+        assert!(c.get(Pixel::new(0, 0)).unwrap().approx_eq(Rgba::grey(0.5), 1e-6));
+        c.blend(Pixel::new(0, 0), Rgba::WHITE, f32::NAN);
+        assert!(c.get(Pixel::new(0, 0)).unwrap().approx_eq(Rgba::grey(0.5), 1e-6));
+    }
+
+    #[test]
+    fn too_large_canvas_is_an_error() {
+        assert!(Canvas::try_new(u32::MAX, u32::MAX).is_err());
+        assert_eq!(Canvas::new(0, 5).pixels_not(Rgba::BLACK), vec![]);
+    }
+}

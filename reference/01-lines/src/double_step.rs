@@ -1,0 +1,152 @@
+//! The N-step line with N = 2, the double-step algorithm: lecture slides
+//! "N-Schritt-Verfahren" (seed 002), generalised from its pseudo-code for
+//! `m < ½` to slopes up to 1 and to all octants.
+//!
+//! Convention (see `canvas`): pixel centres at integers, y up; both
+//! endpoints are drawn; ties go to the smaller minor coordinate, exactly as
+//! in `midpoint_line`, whose pixels this must reproduce.
+
+use canvas::{MAX_COORD, Pixel};
+
+/// The four two-pixel patterns of a double step from the pixel `P` in the
+/// first octant: which of the next two columns go up.
+///
+/// ```text
+///   (1)      (2)      (3)      (4)
+///   · ·      · ■      ■ ■      · ■
+///   · ·      · ·      · ·      ■ ·
+///  P■ ■ ■   P■ ■ ·   P■ · ·   P■ · ·
+/// ```
+///
+/// Pattern 4 cannot occur for slopes `m ≤ ½`, pattern 1 not for `m ≥ ½`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pattern {
+    /// E, E: both pixels on P's row.
+    Flat,
+    /// E, NE: the second pixel one row up.
+    StepSecond,
+    /// NE, E: both pixels one row up.
+    StepFirst,
+    /// NE, NE: one row up, then two rows up.
+    Steep,
+}
+
+impl Pattern {
+    /// The rows (relative to P) of the two pixels this pattern draws.
+    #[must_use]
+    pub const fn rows(self) -> [i64; 2] {
+        match self {
+            Pattern::Flat => [0, 0],
+            Pattern::StepSecond => [0, 1],
+            Pattern::StepFirst => [1, 1],
+            Pattern::Steep => [1, 2],
+        }
+    }
+}
+
+/// Rasterizes the line from `from` to `to` two pixels per step and calls
+/// `plot` once per pixel, in order from `from` to `to`; the pixels are
+/// exactly those of the midpoint line.
+///
+/// In the first octant (`0 ≤ Δy ≤ Δx`) the decision variable looks at the
+/// midpoints of the two columns ahead. For `m ≤ ½` the slides' variable
+/// `d = 4Δy − Δx` picks pattern 1 when `d ≤ 0`, pattern 2 when
+/// `d ≤ cond = 2Δy`, and pattern 3 otherwise; it grows by `4Δy` after
+/// pattern 1 and by `4Δy − 2Δx` after patterns 2 and 3. For `m > ½` the
+/// mirror image, `e = 4Δy − 3Δx`, picks pattern 4 when `e > 0`, pattern 2
+/// when `e ≤ 2(Δy − Δx)`, and pattern 3 otherwise; it grows by `4Δy − 4Δx`
+/// after pattern 4 and by `4Δy − 2Δx` after patterns 2 and 3. When the
+/// line has an odd number of steps, the last pixel is its endpoint.
+///
+/// Endpoints beyond ±[`MAX_COORD`] draw nothing.
+pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+    // BEGIN SOLUTION double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code); the pixels must equal the midpoint line's
+    if [from.x, from.y, to.x, to.y]
+        .iter()
+        .any(|c| c.unsigned_abs() > MAX_COORD as u32)
+    {
+        return;
+    }
+    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
+    let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
+    let x_major = dx.abs() >= dy.abs();
+    let (long, short) = if x_major {
+        (dx.abs(), dy.abs())
+    } else {
+        (dy.abs(), dx.abs())
+    };
+    // Ties go to the smaller minor coordinate (see `midpoint_line`); in
+    // first-octant terms that is "up" when the minor axis runs backwards.
+    let up_on_tie = if x_major { sy < 0 } else { sx < 0 };
+    // `is_up(v)` reads "v > 0, or v = 0 and ties go up": every comparison of
+    // the slides' pseudo-code with a tie in it goes through it.
+    let is_up = |v: i64| v > 0 || (v == 0 && up_on_tie);
+    // Map first-octant offsets (i along the major axis, j along the minor)
+    // back to the line's octant.
+    let pixel = |i: i64, j: i64| {
+        let (major, minor) = (i as i32, j as i32);
+        if x_major {
+            Pixel::new(from.x + sx * major, from.y + sy * minor)
+        } else {
+            Pixel::new(from.x + sx * minor, from.y + sy * major)
+        }
+    };
+    plot(from);
+    let (mut i, mut j) = (0, 0);
+    if 2 * short <= long {
+        // m ≤ ½: patterns 1, 2, 3 (the slides' pseudo-code).
+        let incr1 = 4 * short;
+        let incr2 = 4 * short - 2 * long;
+        let cond = 2 * short;
+        let mut d = 4 * short - long;
+        while i + 2 <= long {
+            let pattern = if !is_up(d) {
+                d += incr1;
+                Pattern::Flat
+            } else {
+                // The slides test `d < cond`; with `d = cond` the first
+                // midpoint lies on the line, a tie that the direction rule
+                // must decide like the midpoint line does.
+                let first_up = is_up(d - cond);
+                d += incr2;
+                if first_up {
+                    Pattern::StepFirst
+                } else {
+                    Pattern::StepSecond
+                }
+            };
+            let [r1, r2] = pattern.rows();
+            plot(pixel(i + 1, j + r1));
+            plot(pixel(i + 2, j + r2));
+            i += 2;
+            j += r2;
+        }
+    } else {
+        // m > ½: patterns 2, 3, 4, by the same reasoning one row higher.
+        let mut e = 4 * short - 3 * long;
+        while i + 2 <= long {
+            let pattern = if is_up(e) {
+                e += 4 * short - 4 * long;
+                Pattern::Steep
+            } else {
+                let first_up = is_up(e - 2 * (short - long));
+                e += 4 * short - 2 * long;
+                if first_up {
+                    Pattern::StepFirst
+                } else {
+                    Pattern::StepSecond
+                }
+            };
+            let [r1, r2] = pattern.rows();
+            plot(pixel(i + 1, j + r1));
+            plot(pixel(i + 2, j + r2));
+            i += 2;
+            j += r2;
+        }
+    }
+    if i < long {
+        // An odd number of steps leaves one column: the endpoint itself.
+        plot(to);
+    }
+    // END SOLUTION
+}

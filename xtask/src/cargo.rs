@@ -1,0 +1,36 @@
+//! Finding the project and running cargo the way the user runs it.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// `$CARGO` (set by cargo for `cargo xtask ...`, so the same toolchain is
+/// used), falling back to `cargo` on the `PATH`.
+#[must_use]
+pub fn cargo() -> Command {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    Command::new(cargo)
+}
+
+/// The workspace root: the parent of the folder this crate lives in.
+#[must_use]
+pub fn project_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask lives in a subfolder of the workspace")
+        .to_path_buf()
+}
+
+/// A command line as the user would type it, for headings and errors.
+#[must_use]
+pub fn display(command: &Command) -> String {
+    let mut line = Path::new(command.get_program())
+        .file_name()
+        .unwrap_or(command.get_program())
+        .to_string_lossy()
+        .into_owned();
+    for arg in command.get_args() {
+        line.push(' ');
+        line.push_str(&arg.to_string_lossy());
+    }
+    line
+}

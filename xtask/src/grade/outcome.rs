@@ -1,0 +1,402 @@
+//! Reading a finished test process: did it pass, and if not, why.
+//!
+//! The grader runs one test per process (`<exe> --exact <name> --nocapture
+//! --test-threads=1`) with stdout and stderr in one file, so the output is
+//! what libtest and the panic hook print, in order:
+//!
+//! ```text
+//! running 1 test
+//! test dda::steep ... 
+//! thread 'dda::steep' (4568) panicked at tests/dda.rs:2:23:
+//! assertion `left == right` failed          <- the panic message: the lines
+//!   left: 1                                    after the header, up to `note:`
+//!  right: 2                                    or libtest's `FAILED`
+//! note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace
+//! FAILED
+//! ...
+//! test result: FAILED. 0 passed; 1 failed; ...
+//! ```
+//!
+//! A proptest failure prints one panic per case it tried while shrinking;
+//! the last panic is proptest's final report (`Test failed: <why>.` then
+//! `minimal failing input: ...`). testkit puts an ASCII raster diff into
+//! panic messages between [`RASTER_DIFF_BEGIN`] and [`RASTER_DIFF_END`].
+
+use serde::{Deserialize, Serialize};
+
+/// The line that opens a raster diff in a panic message (testkit's
+/// `RASTER_DIFF_BEGIN`; repeated here so that xtask needs no course crate).
+pub const RASTER_DIFF_BEGIN: &str = "--- raster diff: expected vs yours ---";
+/// The line that closes a raster diff (testkit's `RASTER_DIFF_END`).
+pub const RASTER_DIFF_END: &str = "--- end raster diff ---";
+/// What libtest prints when the one selected test passed.
+const PASSED_SUMMARY: &str = "test result: ok. 1 passed";
+/// What libtest prints when the one selected test is `#[ignore]`d.
+const IGNORED_SUMMARY: &str = "test result: ok. 0 passed; 0 failed; 1 ignored";
+/// The message of `todo!()` (and of `unimplemented!` with "not implemented").
+const TODO_PREFIX: &str = "not yet implemented";
+/// proptest's prefix of a failed property.
+const PROPTEST_FAILED: &str = "Test failed: ";
+/// proptest's line that starts the shrunk input.
+const PROPTEST_MINIMAL: &str = "minimal failing input: ";
+/// proptest's statistics after the minimal input.
+const PROPTEST_STATS: &str = "\tsuccesses: ";
+/// The std panic hook's hint after the first panic message.
+const BACKTRACE_NOTE: &str = "note: run with `RUST_BACKTRACE=1`";
+
+/// How the test process ended.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Exit {
+    /// The exit code, if it exited.
+    pub code: Option<i32>,
+    /// The signal that ended it, if one did (Unix).
+    pub signal: Option<i32>,
+    /// The grader killed it at the time limit.
+    pub timed_out: bool,
+    /// The grader killed it for printing more than this many bytes.
+    pub output_limit: Option<u64>,
+}
+
+/// The verdict on one test run.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Verdict {
+    /// Status 0 and libtest's `1 passed`.
+    pub passed: bool,
+    /// The test is `#[ignore]`d (counted neither way).
+    pub ignored: bool,
+    /// Why it failed, in one short paragraph for a student.
+    pub reason: Option<String>,
+    /// `file:line:col` of the final panic.
+    pub panic_location: Option<String>,
+    /// proptest's shrunk input.
+    pub minimal_input: Option<String>,
+    /// The ASCII raster diff (between the marker lines, markers excluded).
+    pub raster_diff: Option<String>,
+}
+
+/// A panic as the default hook prints it.
+#[derive(Debug, PartialEq)]
+struct Panic {
+    location: String,
+    message: String,
+}
+
+/// Judges a finished test from its exit and its output. `time_limit_s` is
+/// only used to word the timeout reason.
+#[must_use]
+pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
+    if exit.code == Some(0) && output.contains(PASSED_SUMMARY) {
+        return Verdict { passed: true, ..Verdict::default() };
+    }
+    if exit.code == Some(0) && output.contains(IGNORED_SUMMARY) {
+        return Verdict { ignored: true, ..Verdict::default() };
+    }
+    let panic = last_panic(output);
+    let mut verdict = Verdict {
+        panic_location: panic.as_ref().map(|p| p.location.clone()),
+        ..Verdict::default()
+    };
+    let mut panic_reason = None;
+    if let Some(panic) = &panic {
+        let parts = split_message(&panic.message);
+        verdict.minimal_input = parts.minimal_input;
+        verdict.raster_diff = parts.raster_diff;
+        panic_reason = Some(match parts.text.strip_prefix(TODO_PREFIX) {
+            Some(rest) => {
+                let rest = rest.trim_start_matches(':').trim();
+                if rest.is_empty() {
+                    "not implemented yet".to_owned()
+                } else {
+                    format!("not implemented yet: {rest}")
+                }
+            }
+            None => format!("panicked: {}", parts.text),
+        });
+    }
+    let reason = if exit.timed_out {
+        format!("timed out after {} s (infinite loop?)", seconds(time_limit_s))
+    } else if let Some(limit) = exit.output_limit {
+        format!("printed more than {} MiB of output (endless printing?)", limit >> 20)
+    } else if output.contains("has overflowed its stack") {
+        "stack overflow".to_owned()
+    } else if output.contains("memory allocation of") {
+        match allocation_size(output) {
+            Some(bytes) => format!("out of memory (an allocation of {bytes} bytes failed)"),
+            None => "out of memory".to_owned(),
+        }
+    } else if let Some(reason) = panic_reason {
+        reason
+    } else if let Some(signal) = exit.signal {
+        match signal {
+            6 => "aborted (signal 6)".to_owned(),
+            9 => "killed (signal 9; out of memory?)".to_owned(),
+            11 => "crashed (signal 11, segmentation fault)".to_owned(),
+            _ => format!("aborted (signal {signal})"),
+        }
+    } else if let Some(reason) = returned_error(output).or_else(|| failure_note(output)) {
+        reason
+    } else if output.contains("test result: FAILED") {
+        "failed".to_owned()
+    } else {
+        match exit.code {
+            Some(code) => format!(
+                "the test process exited with code {code} before the test finished (process::exit in student code?)"
+            ),
+            None => "the test process ended before the test finished".to_owned(),
+        }
+    };
+    verdict.reason = Some(reason);
+    verdict
+}
+
+/// `20` for 20.0, `2.5` for 2.5.
+fn seconds(s: f64) -> String {
+    if s.fract() == 0.0 { format!("{s:.0}") } else { format!("{s}") }
+}
+
+/// The size in `memory allocation of N bytes failed`.
+fn allocation_size(output: &str) -> Option<u64> {
+    let rest = output.split("memory allocation of ").nth(1)?;
+    rest.split_whitespace().next()?.parse().ok()
+}
+
+/// The header `thread 'name' (id) panicked at file:line:col:`, found
+/// anywhere in a line (libtest's `test name ... ` may precede it).
+fn panic_header(line: &str) -> Option<(usize, String)> {
+    let start = line.find("thread '")?;
+    let rest = &line[start..];
+    let at = rest.find("' panicked at ").or_else(|| {
+        // Newer std prints the thread id: `thread 'name' (4568) panicked at`.
+        let quote = rest[8..].find('\'')? + 8;
+        let after = &rest[quote + 1..];
+        let offset = after.find(" panicked at ")?;
+        after[..offset].trim().starts_with('(').then_some(quote + offset)
+    })?;
+    let location = rest[at..].split_once("panicked at ")?.1.trim_end();
+    let location = location.strip_suffix(':').unwrap_or(location);
+    Some((start, location.to_owned()))
+}
+
+/// The last panic in the output: its location and its message lines.
+fn last_panic(output: &str) -> Option<Panic> {
+    let lines: Vec<&str> = output.lines().collect();
+    let (index, location) = lines
+        .iter()
+        .enumerate()
+        .rev()
+        .find_map(|(index, line)| panic_header(line).map(|(_, location)| (index, location)))?;
+    // Old std printed `panicked at 'message', file:line:col` on one line.
+    if let Some(rest) = location.strip_prefix('\'')
+        && let Some((message, location)) = rest.rsplit_once("', ")
+    {
+        return Some(Panic { location: location.to_owned(), message: message.to_owned() });
+    }
+    let mut message = Vec::new();
+    for line in &lines[index + 1..] {
+        if line.starts_with("note: ")
+            || *line == "FAILED"
+            || line.starts_with("failures:")
+            || line.starts_with("test result: ")
+            || line.starts_with("stack backtrace:")
+            || line.starts_with("fatal runtime error:")
+        {
+            break;
+        }
+        message.push(*line);
+    }
+    while message.last().is_some_and(|line| line.trim().is_empty()) {
+        message.pop();
+    }
+    Some(Panic { location, message: message.join("\n") })
+}
+
+/// A panic message taken apart.
+#[derive(Debug, Default, PartialEq)]
+struct MessageParts {
+    /// The message without the diff, the minimal input and proptest's
+    /// statistics.
+    text: String,
+    minimal_input: Option<String>,
+    raster_diff: Option<String>,
+}
+
+fn split_message(message: &str) -> MessageParts {
+    let mut parts = MessageParts::default();
+    let mut why = message;
+    if let Some(rest) = message.strip_prefix(PROPTEST_FAILED) {
+        // `Test failed: <why>.\nminimal failing input: <input>\n\tsuccesses: ...`
+        let (before, input) = match rest.find(&format!("\n{PROPTEST_MINIMAL}")) {
+            Some(at) => (&rest[..at], Some(&rest[at + 1 + PROPTEST_MINIMAL.len()..])),
+            None => (rest, None),
+        };
+        why = before.strip_suffix('.').unwrap_or(before);
+        parts.minimal_input = input.map(|input| {
+            let input = input.find(&format!("\n{PROPTEST_STATS}")).map_or(input, |at| &input[..at]);
+            input.trim().to_owned()
+        });
+    }
+    let mut text = Vec::new();
+    let mut diffs: Vec<Vec<&str>> = Vec::new();
+    let mut in_diff = false;
+    for line in why.lines() {
+        if in_diff {
+            if line.trim_start().starts_with(RASTER_DIFF_END) {
+                in_diff = false;
+            } else if let Some(diff) = diffs.last_mut() {
+                diff.push(line);
+            }
+        } else if line.trim() == RASTER_DIFF_BEGIN {
+            in_diff = true;
+            diffs.push(Vec::new());
+        } else {
+            text.push(line);
+        }
+    }
+    // Keep the first diff of a message: later ones repeat the story.
+    let diff = diffs.into_iter().next();
+    while text.last().is_some_and(|line| line.trim().is_empty()) {
+        text.pop();
+    }
+    parts.text = text.join("\n").trim().to_owned();
+    if parts.text.is_empty() && diff.is_some() {
+        "the rasters differ".clone_into(&mut parts.text); // a message that is only a diff
+    }
+    parts.raster_diff = diff.map(|lines| lines.join("\n"));
+    parts
+}
+
+/// A test returning `Err(e)` prints `Error: <e:?>` then fails.
+fn returned_error(output: &str) -> Option<String> {
+    let at = output.find("Error: ")?;
+    let rest = &output[at + "Error: ".len()..];
+    let end = rest.find("\nFAILED").unwrap_or(rest.len());
+    let error = rest[..end].trim();
+    (!error.is_empty()).then(|| format!("returned an error: {error}"))
+}
+
+/// libtest's own failure note, e.g. `note: test did not panic as expected`.
+fn failure_note(output: &str) -> Option<String> {
+    let block = output.split("\n---- ").nth(1)?;
+    let note = block.lines().nth(1)?.trim();
+    let note = note.strip_prefix("note: ").unwrap_or(note);
+    (!note.is_empty()).then(|| format!("failed: {note}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn exit(code: i32) -> Exit {
+        Exit { code: Some(code), ..Exit::default() }
+    }
+
+    fn signal(signal: i32) -> Exit {
+        Exit { signal: Some(signal), ..Exit::default() }
+    }
+
+    fn reason(output: &str, exit: &Exit) -> String {
+        judge(output, exit, 20.0).reason.expect("a failure has a reason")
+    }
+
+    const PASSED: &str = "\nrunning 1 test\ntest a ... ok\n\ntest result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 3 filtered out; finished in 0.00s\n\n";
+
+    #[test]
+    fn passes_only_with_status_zero_and_the_summary() {
+        assert!(judge(PASSED, &exit(0), 20.0).passed);
+        assert!(!judge(PASSED, &exit(1), 20.0).passed);
+        assert!(!judge("\nrunning 1 test\ntest a ... ", &exit(0), 20.0).passed);
+        let ignored = "running 1 test\ntest a ... ignored\n\ntest result: ok. 0 passed; 0 failed; 1 ignored; 0 measured; 3 filtered out\n";
+        let verdict = judge(ignored, &exit(0), 20.0);
+        assert!(verdict.ignored && !verdict.passed);
+    }
+
+    #[test]
+    fn assertion_message_is_the_lines_up_to_the_note() {
+        let output = "\nrunning 1 test\ntest panics ... \nthread 'panics' (4568) panicked at tests/t.rs:2:23:\nassertion `left == right` failed: values differ\n  left: 1\n right: 2\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\nFAILED\n\nfailures:\n\nfailures:\n    panics\n\ntest result: FAILED. 0 passed; 1 failed; 0 ignored\n";
+        let verdict = judge(output, &exit(101), 20.0);
+        assert_eq!(
+            verdict.reason.as_deref(),
+            Some("panicked: assertion `left == right` failed: values differ\n  left: 1\n right: 2")
+        );
+        assert_eq!(verdict.panic_location.as_deref(), Some("tests/t.rs:2:23"));
+    }
+
+    #[test]
+    fn todo_is_not_implemented_yet() {
+        let output = "test todo ... \nthread 'todo' panicked at src/dda.rs:3:22:\nnot yet implemented: dda: draw {x}\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\nFAILED\n";
+        assert_eq!(reason(output, &exit(101)), "not implemented yet: dda: draw {x}");
+        let bare = "thread 'todo' panicked at src/dda.rs:3:22:\nnot yet implemented\nFAILED\n";
+        assert_eq!(reason(bare, &exit(101)), "not implemented yet");
+    }
+
+    #[test]
+    fn last_panic_wins_and_header_may_follow_libtest_text() {
+        let output = "test multi ... thread 'multi' (1) panicked at a.rs:1:1:\ncase 0\nnote: run with `RUST_BACKTRACE=1` environment variable\n\nthread 'multi' (1) panicked at a.rs:1:2:\ncase 1\n\nthread 'multi' panicked at a.rs:1:3:\nfinal\nline2\nFAILED\n\nfailures:\n";
+        let verdict = judge(output, &exit(101), 20.0);
+        assert_eq!(verdict.reason.as_deref(), Some("panicked: final\nline2"));
+        assert_eq!(verdict.panic_location.as_deref(), Some("a.rs:1:3"));
+        let old_style = "thread 'x' panicked at 'boom', src/lib.rs:1:1\nnote: run\n";
+        assert_eq!(reason(old_style, &exit(101)), "panicked: boom");
+    }
+
+    #[test]
+    fn raster_diff_is_taken_out_of_the_message() {
+        let output = format!(
+            "thread 't' panicked at tests/dda.rs:9:5:\nsteep line: the pixels differ\n{RASTER_DIFF_BEGIN}\nlegend\n2 |.+\n1 |#-\n{RASTER_DIFF_END}\nnote: run with\nFAILED\n"
+        );
+        let verdict = judge(&output, &exit(101), 20.0);
+        assert_eq!(verdict.reason.as_deref(), Some("panicked: steep line: the pixels differ"));
+        assert_eq!(verdict.raster_diff.as_deref(), Some("legend\n2 |.+\n1 |#-"));
+        assert_eq!(verdict.minimal_input, None);
+    }
+
+    #[test]
+    fn proptest_report_gives_reason_minimal_input_and_diff() {
+        // proptest prints every shrinking step's panic; the last one is its report.
+        let output = format!(
+            "test p ... \nthread 'p' panicked at tests/dda.rs:9:5:\nfirst {RASTER_DIFF_BEGIN}\n\nthread 'p' panicked at tests/dda.rs:9:5:\nstep\n\nthread 'p' panicked at tests/dda.rs:20:1:\nTest failed: covers both ends\n{RASTER_DIFF_BEGIN}\n1 |#-\n{RASTER_DIFF_END}.\nminimal failing input: line = Line {{\n    a: 1.0,\n}}\n\tsuccesses: 3\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n"
+        );
+        let verdict = judge(&output, &exit(101), 20.0);
+        assert_eq!(verdict.reason.as_deref(), Some("panicked: covers both ends"));
+        assert_eq!(verdict.minimal_input.as_deref(), Some("line = Line {\n    a: 1.0,\n}"));
+        assert_eq!(verdict.raster_diff.as_deref(), Some("1 |#-"));
+        assert_eq!(verdict.panic_location.as_deref(), Some("tests/dda.rs:20:1"));
+
+        let todo = "thread 'p' panicked at tests/dda.rs:20:1:\nTest failed: not yet implemented: dda: draw it.\nminimal failing input: a = 0.0, b = 1.0\n\tsuccesses: 0\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n";
+        let verdict = judge(todo, &exit(101), 20.0);
+        assert_eq!(verdict.reason.as_deref(), Some("not implemented yet: dda: draw it"));
+        assert_eq!(verdict.minimal_input.as_deref(), Some("a = 0.0, b = 1.0"));
+    }
+
+    #[test]
+    fn crashes_have_their_own_reasons() {
+        let timed_out = Exit { timed_out: true, signal: Some(9), ..Exit::default() };
+        assert_eq!(reason("test l ... ", &timed_out), "timed out after 20 s (infinite loop?)");
+        assert_eq!(judge("", &timed_out, 2.5).reason.as_deref(), Some("timed out after 2.5 s (infinite loop?)"));
+        let flood = Exit { output_limit: Some(64 << 20), signal: Some(9), ..Exit::default() };
+        assert!(reason("aaaa", &flood).starts_with("printed more than 64 MiB"));
+        assert_eq!(
+            reason("test o ... \nthread 'o' (1) has overflowed its stack\nfatal runtime error: stack overflow, aborting\n", &signal(6)),
+            "stack overflow"
+        );
+        assert_eq!(
+            reason("test a ... memory allocation of 1099511627776 bytes failed\nnote: run with\n", &signal(6)),
+            "out of memory (an allocation of 1099511627776 bytes failed)"
+        );
+        assert_eq!(reason("test a ... ", &signal(6)), "aborted (signal 6)");
+        assert_eq!(reason("test a ... ", &signal(11)), "crashed (signal 11, segmentation fault)");
+        assert_eq!(
+            reason("\nrunning 1 test\ntest exits ... ", &exit(3)),
+            "the test process exited with code 3 before the test finished (process::exit in student code?)"
+        );
+        assert!(reason("\nrunning 1 test\ntest exits ... ", &exit(0)).contains("exited with code 0"));
+    }
+
+    #[test]
+    fn libtest_failures_without_a_panic() {
+        let returned = "test err ... Error: \"bad\"\nFAILED\n\nfailures:\n\ntest result: FAILED. 0 passed; 1 failed\n";
+        assert_eq!(reason(returned, &exit(101)), "returned an error: \"bad\"");
+        let should_panic = "test sp - should panic ... FAILED\n\nfailures:\n\n---- sp stdout ----\nnote: test did not panic as expected at tests/t.rs:5:28\n\nfailures:\n    sp\n\ntest result: FAILED. 0 passed; 1 failed\n";
+        assert_eq!(reason(should_panic, &exit(101)), "failed: test did not panic as expected at tests/t.rs:5:28");
+    }
+}

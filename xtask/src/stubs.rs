@@ -1,0 +1,393 @@
+//! `cargo xtask stubs [--check]`: the student files, generated from the
+//! solutions.
+//!
+//! Every `reference/NN-topic/src/X.rs` is copied to `exercises/NN-topic/src/X.rs`
+//! with each marked solution replaced by a `todo!`:
+//!
+//! ```text
+//!     // BEGIN SOLUTION dda: draw the line with the DDA        todo!("dda: draw the line with the DDA")
+//!     let steps = ...;                                    =>
+//!     // END SOLUTION
+//! ```
+//!
+//! The `todo!` sits at the indentation of the `BEGIN` line. A bare
+//! `// BEGIN SOLUTION` (no `<task>: <instruction>`) removes its region
+//! entirely: helpers and `use` lines only the solution needs. Everything
+//! else, doc comments and signatures included, is copied verbatim.
+//! `src/lib.rs` is hand-written and exists only in `exercises/`.
+
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+
+use crate::topics::{self, Topic};
+
+/// Opens a solution region; may be followed by `<task>: <instruction>`.
+const BEGIN_MARKER: &str = "// BEGIN SOLUTION";
+/// Closes a solution region.
+const END_MARKER: &str = "// END SOLUTION";
+/// The hand-written crate root of every exercise crate.
+const CRATE_ROOT: &str = "lib.rs";
+
+/// What a marker line says, if it is one.
+#[derive(Debug, PartialEq)]
+enum Marker<'a> {
+    /// `// BEGIN SOLUTION <rest>`; `rest` is trimmed, possibly empty.
+    Begin { rest: &'a str },
+    /// `// END SOLUTION`.
+    End,
+}
+
+fn marker(line: &str) -> Option<Marker<'_>> {
+    let code = line.trim();
+    let after = |prefix: &str| {
+        let rest = code.strip_prefix(prefix)?;
+        // `// BEGIN SOLUTIONS` is not a marker.
+        (rest.is_empty() || rest.starts_with(char::is_whitespace)).then(|| rest.trim())
+    };
+    if let Some(rest) = after(BEGIN_MARKER) {
+        Some(Marker::Begin { rest })
+    } else {
+        after(END_MARKER).map(|_| Marker::End)
+    }
+}
+
+/// The `todo!` line for a region: the string literal escapes `\` and `"`,
+/// and doubles `{`/`}` because `todo!("...")` is a format string.
+fn todo_line(indent: &str, task: &str, instruction: &str, newline: &str) -> String {
+    let mut literal = String::new();
+    for c in format!("{task}: {instruction}").chars() {
+        match c {
+            '\\' => literal.push_str("\\\\"),
+            '"' => literal.push_str("\\\""),
+            '{' => literal.push_str("{{"),
+            '}' => literal.push_str("}}"),
+            c => literal.push(c),
+        }
+    }
+    format!("{indent}todo!(\"{literal}\"){newline}")
+}
+
+/// Generates the student file from a reference file. `file` names the
+/// reference file in errors (`file:line: ...`); `task_ids` are the topic's
+/// tasks. Every problem in the file is reported, not just the first.
+pub fn generate(source: &str, file: &str, task_ids: &[&str]) -> Result<String, Vec<String>> {
+    let mut out = String::with_capacity(source.len());
+    let mut errors = Vec::new();
+    // The line number of the open region's BEGIN, if inside one.
+    let mut open: Option<usize> = None;
+    for (index, line) in source.split_inclusive('\n').enumerate() {
+        let number = index + 1;
+        match marker(line) {
+            Some(Marker::Begin { rest }) => {
+                if let Some(outer) = open {
+                    errors.push(format!(
+                        "{file}:{number}: nested `{BEGIN_MARKER}` (the region opened at line {outer} is not closed)"
+                    ));
+                    continue;
+                }
+                open = Some(number);
+                if rest.is_empty() {
+                    continue; // a helper region: removed without a trace
+                }
+                let Some((task, instruction)) = rest.split_once(':') else {
+                    errors.push(format!(
+                        "{file}:{number}: expected `{BEGIN_MARKER} <task>: <instruction>`, found `{}`",
+                        line.trim()
+                    ));
+                    continue;
+                };
+                let (task, instruction) = (task.trim(), instruction.trim());
+                if !task_ids.contains(&task) {
+                    errors.push(format!(
+                        "{file}:{number}: task `{task}` is not a task of this topic (the task sheet lists: {})",
+                        task_ids.join(", ")
+                    ));
+                } else if instruction.is_empty() {
+                    errors.push(format!("{file}:{number}: the instruction for task `{task}` is empty"));
+                }
+                let indent = &line[..line.len() - line.trim_start().len()];
+                let newline = if line.ends_with("\r\n") {
+                    "\r\n"
+                } else if line.ends_with('\n') {
+                    "\n"
+                } else {
+                    ""
+                };
+                out.push_str(&todo_line(indent, task, instruction, newline));
+            }
+            Some(Marker::End) => {
+                if open.take().is_none() {
+                    errors.push(format!("{file}:{number}: `{END_MARKER}` without a `{BEGIN_MARKER}`"));
+                }
+            }
+            None if open.is_some() => {} // solution code
+            None => out.push_str(line),
+        }
+    }
+    if let Some(begin) = open {
+        errors.push(format!("{file}:{begin}: `{BEGIN_MARKER}` without an `{END_MARKER}`"));
+    }
+    if errors.is_empty() { Ok(out) } else { Err(errors) }
+}
+
+/// Lists the `.rs` files under `dir`, relative to it, sorted.
+fn rust_files(dir: &Path) -> Result<Vec<PathBuf>> {
+    fn walk(base: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
+        let entries = fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))?;
+        for entry in entries {
+            let path = entry.with_context(|| format!("cannot list {}", dir.display()))?.path();
+            if path.is_dir() {
+                walk(base, &path, files)?;
+            } else if path.extension().is_some_and(|ext| ext == "rs") {
+                files.push(path.strip_prefix(base).expect("walked from base").to_path_buf());
+            }
+        }
+        Ok(())
+    }
+    let mut files = Vec::new();
+    if dir.is_dir() {
+        walk(dir, dir, &mut files)?;
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// What happened to the stubs of one checkout.
+#[derive(Debug, Default)]
+pub struct Outcome {
+    /// Student files whose content is not what the reference generates
+    /// (`--check`) or that were rewritten.
+    pub changed: Vec<PathBuf>,
+    /// Student files that were already up to date.
+    pub unchanged: usize,
+    /// Marker errors and files without a counterpart.
+    pub errors: Vec<String>,
+}
+
+/// Generates (or with `check`, compares) the stubs of every topic in `root`.
+/// Returns what it found; only failures to read or write are `Err`.
+pub fn sync(root: &Path, check: bool) -> Result<Outcome> {
+    let reference_root = root.join("reference");
+    if !reference_root.is_dir() {
+        bail!(
+            "{} does not exist: stubs are generated from the tutor edition's solutions",
+            reference_root.display()
+        );
+    }
+    let mut outcome = Outcome::default();
+    for topic in topics::discover(root)? {
+        sync_topic(root, &topic, check, &mut outcome)?;
+    }
+    Ok(outcome)
+}
+
+fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) -> Result<()> {
+    let relative = |path: &Path| path.strip_prefix(root).unwrap_or(path).display().to_string();
+    let reference_src = root.join("reference").join(&topic.name).join("src");
+    let exercise_src = topic.dir.join("src");
+    if !reference_src.is_dir() {
+        outcome.errors.push(format!(
+            "{} has no solutions: {} is missing",
+            topic.name,
+            relative(&reference_src)
+        ));
+        return Ok(());
+    }
+    let ids: Vec<&str> = topic.sheet.tasks.iter().map(|t| t.id.as_str()).collect();
+    let reference_files = rust_files(&reference_src)?;
+    for file in &reference_files {
+        let source_path = reference_src.join(file);
+        let target_path = exercise_src.join(file);
+        if file == Path::new(CRATE_ROOT) {
+            outcome.errors.push(format!(
+                "{}: the crate root is hand-written in {} and has no reference copy",
+                relative(&source_path),
+                relative(&target_path)
+            ));
+            continue;
+        }
+        let source = fs::read_to_string(&source_path)
+            .with_context(|| format!("cannot read {}", source_path.display()))?;
+        let generated = match generate(&source, &relative(&source_path), &ids) {
+            Ok(generated) => generated,
+            Err(errors) => {
+                outcome.errors.extend(errors);
+                continue;
+            }
+        };
+        let current = fs::read_to_string(&target_path).ok();
+        if current.as_deref() == Some(generated.as_str()) {
+            outcome.unchanged += 1;
+            continue;
+        }
+        if check {
+            if current.is_none() {
+                outcome.errors.push(format!(
+                    "{} has no student file {}",
+                    relative(&source_path),
+                    relative(&target_path)
+                ));
+            } else {
+                outcome.changed.push(target_path);
+            }
+            continue;
+        }
+        if let Some(parent) = target_path.parent() {
+            fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        fs::write(&target_path, generated)
+            .with_context(|| format!("cannot write {}", target_path.display()))?;
+        outcome.changed.push(target_path);
+    }
+    for file in rust_files(&exercise_src)? {
+        if file != Path::new(CRATE_ROOT) && !reference_files.contains(&file) {
+            outcome.errors.push(format!(
+                "{} has no solution file {} to be generated from",
+                relative(&exercise_src.join(&file)),
+                relative(&reference_src.join(&file))
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `cargo xtask stubs [--check]`: prints what it did; fails when `check`
+/// finds a difference or when any file has a marker error.
+pub fn run(root: &Path, check: bool) -> Result<()> {
+    let outcome = sync(root, check)?;
+    let relative = |path: &Path| path.strip_prefix(root).unwrap_or(path).display().to_string();
+    let mut message = String::new();
+    for path in &outcome.changed {
+        let verb = if check { "out of date" } else { "wrote" };
+        writeln!(message, "{verb}: {}", relative(path)).expect("writing to a String");
+    }
+    for error in &outcome.errors {
+        writeln!(message, "error: {error}").expect("writing to a String");
+    }
+    print!("{message}");
+    let stale = check && !outcome.changed.is_empty();
+    if stale || !outcome.errors.is_empty() {
+        let mut problems = Vec::new();
+        if stale {
+            problems.push(format!(
+                "{} student file(s) differ from what `cargo xtask stubs` generates",
+                outcome.changed.len()
+            ));
+        }
+        if !outcome.errors.is_empty() {
+            problems.push(format!("{} error(s)", outcome.errors.len()));
+        }
+        bail!("stubs are not in sync with reference/: {}", problems.join(", "));
+    }
+    println!(
+        "stubs: {} file(s) {}, {} up to date",
+        outcome.changed.len(),
+        if check { "differ" } else { "written" },
+        outcome.unchanged
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const IDS: &[&str] = &["dda", "wu"];
+
+    fn stub(source: &str) -> String {
+        generate(source, "ref.rs", IDS).unwrap_or_else(|errors| panic!("{errors:#?}"))
+    }
+
+    fn errors(source: &str) -> Vec<String> {
+        generate(source, "ref.rs", IDS).expect_err("should be rejected")
+    }
+
+    #[test]
+    fn marked_body_becomes_todo_at_the_begin_indentation() {
+        let source = "\
+/// Draws a line.
+pub fn dda(a: u32) -> u32 {
+    // BEGIN SOLUTION dda: draw the line with the DDA
+    let b = a + 1;
+    b * 2
+    // END SOLUTION
+}
+";
+        assert_eq!(
+            stub(source),
+            "\
+/// Draws a line.
+pub fn dda(a: u32) -> u32 {
+    todo!(\"dda: draw the line with the DDA\")
+}
+"
+        );
+    }
+
+    #[test]
+    fn bare_begin_removes_the_region() {
+        let source = "\
+// BEGIN SOLUTION
+use std::f32::consts::PI;
+// END SOLUTION
+pub fn f() {
+        // BEGIN SOLUTION wu: use Wu's algorithm
+        let _ = PI;
+        // END SOLUTION
+}
+// BEGIN SOLUTION
+fn helper() {}
+// END SOLUTION
+";
+        assert_eq!(stub(source), "pub fn f() {\n        todo!(\"wu: use Wu's algorithm\")\n}\n");
+    }
+
+    #[test]
+    fn instruction_is_escaped_for_a_format_string_literal() {
+        let source = "  // BEGIN SOLUTION dda: say \"hi\" \\ fill {x} \n  x\n  // END SOLUTION\n";
+        assert_eq!(stub(source), "  todo!(\"dda: say \\\"hi\\\" \\\\ fill {{x}}\")\n");
+    }
+
+    #[test]
+    fn text_outside_markers_and_crlf_line_ends_are_kept() {
+        let source = "//! Doc.\r\nfn f() {\r\n\t// BEGIN SOLUTION dda: x\r\n\t1\r\n\t// END SOLUTION\r\n}";
+        assert_eq!(stub(source), "//! Doc.\r\nfn f() {\r\n\ttodo!(\"dda: x\")\r\n}");
+        assert_eq!(stub("no markers\n// BEGIN SOLUTIONS are not markers\n"), "no markers\n// BEGIN SOLUTIONS are not markers\n");
+    }
+
+    #[test]
+    fn nested_begin_is_an_error_with_its_line() {
+        let errors = errors("// BEGIN SOLUTION dda: a\n// BEGIN SOLUTION dda: b\n// END SOLUTION\n");
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert!(errors[0].starts_with("ref.rs:2: nested"), "{errors:?}");
+        assert!(errors[0].contains("line 1"), "{errors:?}");
+    }
+
+    #[test]
+    fn end_without_begin_is_an_error() {
+        let errors = errors("fn f() {}\n    // END SOLUTION\n");
+        assert!(errors[0].starts_with("ref.rs:2: `// END SOLUTION` without"), "{errors:?}");
+    }
+
+    #[test]
+    fn begin_without_end_is_an_error() {
+        let errors = errors("\n\n// BEGIN SOLUTION dda: a\nx\n");
+        assert!(errors[0].starts_with("ref.rs:3: `// BEGIN SOLUTION` without"), "{errors:?}");
+    }
+
+    #[test]
+    fn unknown_task_and_missing_instruction_are_errors() {
+        let errors = errors(
+            "// BEGIN SOLUTION bresenham: a\n// END SOLUTION\n// BEGIN SOLUTION dda\n// END SOLUTION\n// BEGIN SOLUTION wu:\n// END SOLUTION\n",
+        );
+        assert_eq!(errors.len(), 3, "{errors:?}");
+        assert!(errors[0].starts_with("ref.rs:1: task `bresenham` is not a task"), "{errors:?}");
+        assert!(errors[0].contains("dda, wu"), "{errors:?}");
+        assert!(errors[1].starts_with("ref.rs:3: expected"), "{errors:?}");
+        assert!(errors[2].starts_with("ref.rs:5: the instruction"), "{errors:?}");
+    }
+}

@@ -1,0 +1,295 @@
+//! Topics: the exercise crates under `exercises/` and their task sheets.
+//!
+//! A topic is a folder `exercises/NN-topic/` holding a cargo package (its
+//! name is read from `Cargo.toml`) and a task sheet `README.md` whose TOML
+//! front matter, between two `+++` lines, is the only place points live:
+//!
+//! ```text
+//! +++
+//! time_limit_s = 20          # optional: per-test wall-clock limit (default 20)
+//! memory_limit_mib = 4096    # optional: per-test address-space limit (0 = none)
+//! [[tasks]]
+//! id = "dda"
+//! title = "DDA with colour and depth interpolation"
+//! points = 3
+//! bonus = false              # optional: bonus points do not count in the maximum
+//! +++
+//! # Topic 01: Lines
+//! ```
+
+use std::collections::HashSet;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail, ensure};
+use serde::{Deserialize, Serialize};
+
+/// Per-test wall-clock limit when the task sheet gives none.
+pub const DEFAULT_TIME_LIMIT_S: f64 = 20.0;
+/// Per-test address-space limit when the task sheet gives none: generous
+/// for rasterizers, small enough that a runaway allocation fails at once.
+pub const DEFAULT_MEMORY_LIMIT_MIB: u64 = 4096;
+/// The line that opens and closes the front matter of a task sheet.
+const FRONT_MATTER_FENCE: &str = "+++";
+
+/// One exercise crate.
+#[derive(Debug, Clone)]
+pub struct Topic {
+    /// Folder name, e.g. `01-lines`.
+    pub name: String,
+    /// Cargo package name, e.g. `lines`.
+    pub package: String,
+    /// `<root>/exercises/01-lines`.
+    pub dir: PathBuf,
+    /// The task sheet's front matter.
+    pub sheet: TaskSheet,
+}
+
+/// The front matter of `exercises/NN-topic/README.md`.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TaskSheet {
+    /// Per-test wall-clock limit in seconds.
+    #[serde(default = "default_time_limit")]
+    pub time_limit_s: f64,
+    /// Per-test address-space limit in MiB (`0` switches it off).
+    #[serde(default = "default_memory_limit")]
+    pub memory_limit_mib: u64,
+    /// The tasks, in the order of the sheet.
+    pub tasks: Vec<Task>,
+}
+
+fn default_time_limit() -> f64 {
+    DEFAULT_TIME_LIMIT_S
+}
+
+fn default_memory_limit() -> u64 {
+    DEFAULT_MEMORY_LIMIT_MIB
+}
+
+/// One task of a topic; its tests are `tests/<id>.rs`.
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Task {
+    /// Task id: the name of its test binary and the prefix of its `todo!`s.
+    pub id: String,
+    /// One-line title for tables.
+    pub title: String,
+    /// Full points for the task.
+    pub points: f64,
+    /// Bonus points count in the score but not in the maximum.
+    #[serde(default)]
+    pub bonus: bool,
+}
+
+impl TaskSheet {
+    /// Parses the front matter of a task sheet (the whole README text).
+    pub fn parse(readme: &str) -> Result<Self> {
+        let mut lines = readme.lines();
+        ensure!(
+            lines.next().map(str::trim_end) == Some(FRONT_MATTER_FENCE),
+            "the task sheet must start with a `{FRONT_MATTER_FENCE}` line opening its TOML front matter"
+        );
+        let mut front = String::new();
+        let mut closed = false;
+        for line in lines {
+            if line.trim_end() == FRONT_MATTER_FENCE {
+                closed = true;
+                break;
+            }
+            front.push_str(line);
+            front.push('\n');
+        }
+        ensure!(closed, "the front matter has no closing `{FRONT_MATTER_FENCE}` line");
+        let sheet: TaskSheet = toml::from_str(&front).context("invalid front matter")?;
+        sheet.validate()?;
+        Ok(sheet)
+    }
+
+    fn validate(&self) -> Result<()> {
+        ensure!(!self.tasks.is_empty(), "the front matter lists no [[tasks]]");
+        ensure!(
+            self.time_limit_s.is_finite() && self.time_limit_s > 0.0,
+            "time_limit_s must be a positive number of seconds"
+        );
+        let mut seen = HashSet::new();
+        for task in &self.tasks {
+            ensure!(
+                !task.id.is_empty()
+                    && task
+                        .id
+                        .chars()
+                        .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-'),
+                "task id `{}` must be a non-empty test file name (letters, digits, `_`, `-`)",
+                task.id
+            );
+            ensure!(seen.insert(task.id.as_str()), "task id `{}` is listed twice", task.id);
+            ensure!(
+                task.points.is_finite() && task.points >= 0.0,
+                "task `{}` has invalid points {}",
+                task.id,
+                task.points
+            );
+        }
+        Ok(())
+    }
+
+    /// The task with this id.
+    #[must_use]
+    pub fn task(&self, id: &str) -> Option<&Task> {
+        self.tasks.iter().find(|task| task.id == id)
+    }
+
+    /// Task ids, comma separated, for error messages.
+    #[must_use]
+    pub fn task_ids(&self) -> String {
+        let ids: Vec<&str> = self.tasks.iter().map(|t| t.id.as_str()).collect();
+        ids.join(", ")
+    }
+}
+
+impl Topic {
+    /// Reads the topic in `dir` (`exercises/NN-topic`).
+    pub fn load(dir: &Path) -> Result<Self> {
+        let name = dir
+            .file_name()
+            .context("a topic folder has a name")?
+            .to_string_lossy()
+            .into_owned();
+        let manifest_path = dir.join("Cargo.toml");
+        let manifest = fs::read_to_string(&manifest_path)
+            .with_context(|| format!("cannot read {}", manifest_path.display()))?;
+        let package = package_name(&manifest)
+            .with_context(|| format!("cannot read the package name in {}", manifest_path.display()))?;
+        let readme_path = dir.join("README.md");
+        let readme = fs::read_to_string(&readme_path).with_context(|| {
+            format!("cannot read the task sheet {} (it lists the tasks and points)", readme_path.display())
+        })?;
+        let sheet = TaskSheet::parse(&readme)
+            .with_context(|| format!("in the task sheet {}", readme_path.display()))?;
+        Ok(Self { name, package, dir: dir.to_path_buf(), sheet })
+    }
+
+    /// The folder name without its number: `lines` for `01-lines`.
+    #[must_use]
+    pub fn short_name(&self) -> &str {
+        match self.name.split_once('-') {
+            Some((number, rest)) if number.chars().all(|c| c.is_ascii_digit()) => rest,
+            _ => &self.name,
+        }
+    }
+
+    /// Whether the user's `TOPIC` argument names this topic: the folder
+    /// name, the folder name without its number, the package name or the
+    /// number alone (`01`, `1`).
+    #[must_use]
+    pub fn matches(&self, wanted: &str) -> bool {
+        let number = self.name.split('-').next().unwrap_or_default();
+        wanted == self.name
+            || wanted == self.short_name()
+            || wanted == self.package
+            || (!wanted.is_empty()
+                && wanted.chars().all(|c| c.is_ascii_digit())
+                && number.trim_start_matches('0') == wanted.trim_start_matches('0'))
+    }
+}
+
+fn package_name(manifest: &str) -> Result<String> {
+    #[derive(Deserialize)]
+    struct Manifest {
+        package: Package,
+    }
+    #[derive(Deserialize)]
+    struct Package {
+        name: String,
+    }
+    let manifest: Manifest = toml::from_str(manifest)?;
+    Ok(manifest.package.name)
+}
+
+/// All topics of the checkout at `root`, in course order (folder names).
+pub fn discover(root: &Path) -> Result<Vec<Topic>> {
+    let exercises = root.join("exercises");
+    let entries = fs::read_dir(&exercises)
+        .with_context(|| format!("cannot list the topics in {}", exercises.display()))?;
+    let mut dirs = Vec::new();
+    for entry in entries {
+        let path = entry.with_context(|| format!("cannot list {}", exercises.display()))?.path();
+        if path.join("Cargo.toml").is_file() {
+            dirs.push(path);
+        }
+    }
+    dirs.sort();
+    dirs.iter().map(|dir| Topic::load(dir)).collect()
+}
+
+/// The topics the user asked for (all when `wanted` is empty), in course
+/// order; an unknown name is an error that lists the topics there are.
+pub fn select(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
+    let all = discover(root)?;
+    if wanted.is_empty() {
+        return Ok(all);
+    }
+    for name in wanted {
+        if !all.iter().any(|topic| topic.matches(name)) {
+            let known: Vec<String> =
+                all.iter().map(|t| format!("{} ({})", t.name, t.package)).collect();
+            bail!(
+                "unknown topic `{name}`; the topics in {} are: {}",
+                root.join("exercises").display(),
+                if known.is_empty() { "none".to_owned() } else { known.join(", ") }
+            );
+        }
+    }
+    Ok(all.into_iter().filter(|topic| wanted.iter().any(|name| topic.matches(name))).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SHEET: &str = "+++\ntime_limit_s = 3\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 3\n[[tasks]]\nid = \"wu\"\ntitle = \"Wu\"\npoints = 1.5\nbonus = true\n+++\n# Topic\n";
+
+    #[test]
+    fn front_matter_gives_tasks_points_and_limits() {
+        let sheet = TaskSheet::parse(SHEET).unwrap();
+        assert_eq!(sheet.time_limit_s, 3.0);
+        assert_eq!(sheet.memory_limit_mib, DEFAULT_MEMORY_LIMIT_MIB);
+        assert_eq!(sheet.task_ids(), "dda, wu");
+        assert_eq!(sheet.task("dda").unwrap().points, 3.0);
+        assert!(sheet.task("wu").unwrap().bonus);
+    }
+
+    #[test]
+    fn time_limit_defaults() {
+        let sheet =
+            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n+++\n").unwrap();
+        assert_eq!(sheet.time_limit_s, DEFAULT_TIME_LIMIT_S);
+    }
+
+    #[test]
+    fn bad_front_matter_is_an_error() {
+        assert!(TaskSheet::parse("# no front matter\n").is_err());
+        assert!(TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n").is_err());
+        let twice = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n[[tasks]]\nid = \"a\"\ntitle = \"B\"\npoints = 1\n+++\n";
+        assert!(format!("{:#}", TaskSheet::parse(twice).unwrap_err()).contains("twice"));
+        let typo = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoint = 1\n+++\n";
+        assert!(TaskSheet::parse(typo).is_err());
+    }
+
+    #[test]
+    fn topic_names_match_folder_suffix_package_and_number() {
+        let topic = Topic {
+            name: "01-lines".into(),
+            package: "raster-lines".into(),
+            dir: PathBuf::new(),
+            sheet: TaskSheet::parse(SHEET).unwrap(),
+        };
+        for name in ["01-lines", "lines", "raster-lines", "01", "1"] {
+            assert!(topic.matches(name), "{name}");
+        }
+        for name in ["02", "line", "", "01-line"] {
+            assert!(!topic.matches(name), "{name}");
+        }
+    }
+}
