@@ -20,10 +20,12 @@ use canvas::{MAX_COORD, Pixel};
 ///   row j    ■  ▓  ▒  ·  so every column sums to exactly 1
 /// ```
 ///
-/// The fraction `f` lives in a 32-bit error accumulator (a "0.32"
-/// fixed-point number): each column adds `Δminor / Δmajor · 2³²`, and an
+/// The fraction `f` lives in an unsigned error accumulator, a "0.64"
+/// fixed-point number: each column adds `⌈Δminor / Δmajor · 2⁶⁴⌉`, and an
 /// overflow (wrap-around) is the step to the next row. The intensity is
-/// the accumulator's top 8 bits, as in Wu's original.
+/// the accumulator's top 8 bits, as in Wu's original. (Wu used 16 bits;
+/// 64 keep the accumulated rounding error below `Δmajor / 2⁶⁴`, so a line
+/// through a pixel centre lands on it exactly.)
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
@@ -62,9 +64,10 @@ pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
         plot(to, 1.0);
         return;
     }
-    // short < long, so the step is below 1: a 0.32 fixed-point fraction.
-    let error_adjust = ((short << 32) / long) as u32;
-    let mut error = 0_u32;
+    // short < long, so the step is below 1: a 0.64 fixed-point fraction,
+    // rounded up so that reaching a whole row wraps exactly there.
+    let error_adjust = ((u128::from(short.unsigned_abs()) << 64).div_ceil(u128::from(long.unsigned_abs()))) as u64;
+    let mut error = 0_u64;
     let mut j = 0;
     for i in 1..long {
         let (next, wrapped) = error.overflowing_add(error_adjust);
@@ -74,7 +77,7 @@ pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
         }
         // The top 8 bits of the fraction weigh the far pixel (Wu's 8-bit
         // intensities); the near pixel gets the rest.
-        let far = (error >> 24) as f32 / 256.0;
+        let far = (error >> 56) as f32 / 256.0;
         plot(pixel(i, j), 1.0 - far);
         plot(pixel(i, j + 1), far);
     }

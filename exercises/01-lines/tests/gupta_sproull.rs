@@ -1,0 +1,107 @@
+//! Task 5b: antialiasing after Gupta and Sproull.
+
+mod common;
+
+use canvas::{Canvas, MAX_COORD, Pixel, Rgba};
+use common::{collect_weighted, nearest_pixels};
+use lines::gupta_sproull::{TABLE_LEN, distance_table, filter, gupta_sproull_line};
+use proptest::prelude::*;
+use testkit::strategies::pixel_line;
+
+fn gs(from: Pixel, to: Pixel) -> Vec<(Pixel, f32)> {
+    collect_weighted(|plot| gupta_sproull_line(from, to, plot))
+}
+
+#[test]
+fn the_table_falls_from_one_to_nothing() {
+    let table = distance_table();
+    assert_eq!(table.len(), TABLE_LEN);
+    assert!((table[0] - 1.0).abs() < 1e-6);
+    assert!(table.windows(2).all(|w| w[1] < w[0]), "{table:?}");
+    assert!(table[TABLE_LEN - 1] < 0.01);
+    assert_eq!(filter(1.6), 0.0);
+}
+
+#[test]
+fn horizontal_line_has_full_middle_and_equal_neighbours() {
+    let got = gs(Pixel::new(0, 0), Pixel::new(5, 0));
+    assert_eq!(got.len(), 18, "three pixels for each of six columns: {got:?}");
+    for (p, w) in got {
+        let expected = if p.y == 0 { 1.0 } else { filter(1.0) };
+        assert!((-1..=1).contains(&p.y) && (0..=5).contains(&p.x), "unexpected pixel {p}");
+        assert!((w - expected).abs() < 1e-6, "pixel {p}: intensity {w}, expected {expected}");
+    }
+}
+
+#[test]
+fn diagonal_line_neighbours_are_cos_45_away() {
+    // Pixel centres beside a 45° line lie 1/√2 ≈ 0.707 from it.
+    for (p, w) in gs(Pixel::new(0, 0), Pixel::new(4, 4)) {
+        let expected = if p.x == p.y { 1.0 } else { filter(std::f64::consts::FRAC_1_SQRT_2) };
+        assert!((w - expected).abs() < 1e-6, "pixel {p}: intensity {w}, expected {expected}");
+    }
+}
+
+#[test]
+fn a_shallow_line() {
+    let mut canvas = Canvas::new(24, 10);
+    gupta_sproull_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| canvas.blend(p, Rgba::WHITE, w));
+    testkit::assert_raster_snapshot!("a_shallow_line", canvas);
+}
+
+#[test]
+fn endpoints_beyond_max_coord_draw_nothing() {
+    assert!(gs(Pixel::new(-MAX_COORD - 1, 0), Pixel::new(0, 0)).is_empty());
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn middle_pixels_are_the_midpoint_line([from, to] in pixel_line(40)) {
+        let got = gs(from, to);
+        prop_assert_eq!(got.len() % 3, 0, "three pixels per column");
+        let middles: Vec<Pixel> = got.iter().step_by(3).map(|&(p, _)| p).collect();
+        prop_assert_eq!(middles, nearest_pixels(from, to, None), "every third pixel (the first of each column) is the midpoint line's");
+    }
+
+    #[test]
+    fn intensities_are_table_values_and_never_above_full([from, to] in pixel_line(40)) {
+        let table = distance_table();
+        for (p, w) in gs(from, to) {
+            prop_assert!(w == 0.0 || table.contains(&w), "pixel {p}: {w} is not a table value");
+            prop_assert!((0.0..=1.0).contains(&w));
+        }
+    }
+
+    #[test]
+    fn intensity_matches_the_distance_to_the_line([from, to] in pixel_line(40)) {
+        prop_assume!(from != to);
+        let (a, b) = (from.centre().as_dvec2(), to.centre().as_dvec2());
+        let n = (b - a).perp().normalize();
+        for (p, w) in gs(from, to) {
+            let d = (p.centre().as_dvec2() - a).dot(n).abs();
+            // The table is sampled every 1/16 pixel: allow the value at a
+            // neighbouring sample.
+            let (lo, hi) = (filter(d + 1.0 / 32.0 + 1e-9), filter((d - 1.0 / 32.0 - 1e-9).max(0.0)));
+            prop_assert!(w >= lo - 1e-6 && w <= hi + 1e-6, "pixel {p} at distance {d:.4}: {w} outside [{lo}, {hi}]");
+        }
+    }
+
+    #[test]
+    fn reversed_line_gives_the_same_intensities([from, to] in pixel_line(40)) {
+        let mut forward = gs(from, to);
+        let mut backward = gs(to, from);
+        forward.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        backward.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        prop_assert_eq!(forward, backward);
+    }
+
+    #[test]
+    fn total_intensity_grows_with_length([from, to] in pixel_line(30)) {
+        prop_assume!(from != to);
+        let longer = Pixel::new(to.x + (to.x - from.x), to.y + (to.y - from.y));
+        let sum = |v: Vec<(Pixel, f32)>| v.iter().map(|&(_, w)| w).sum::<f32>();
+        prop_assert!(sum(gs(from, longer)) > sum(gs(from, to)));
+    }
+}

@@ -1,0 +1,38 @@
+//! Task 5d: intensity compensation for the slope of aliased lines.
+
+use canvas::Pixel;
+use lines::slope_intensity::slope_intensity;
+use proptest::prelude::*;
+use testkit::strategies::pixel_line;
+
+#[test]
+fn axis_parallel_lines_get_one_over_root_two_and_diagonals_full() {
+    let o = Pixel::new(0, 0);
+    let r = std::f32::consts::FRAC_1_SQRT_2;
+    assert!((slope_intensity(o, Pixel::new(10, 0)) - r).abs() < 1e-6);
+    assert!((slope_intensity(o, Pixel::new(0, -7)) - r).abs() < 1e-6);
+    assert!((slope_intensity(o, Pixel::new(-5, 5)) - 1.0).abs() < 1e-6);
+    assert!((slope_intensity(o, o) - r).abs() < 1e-6);
+    // Slope 1/2: length √5 per 2 steps → √5 / (2√2).
+    let expected = 5.0_f32.sqrt() / (2.0 * 2.0_f32.sqrt());
+    assert!((slope_intensity(o, Pixel::new(4, 2)) - expected).abs() < 1e-6);
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn ink_per_unit_length_is_the_same_for_every_slope([from, to] in pixel_line(1000)) {
+        prop_assume!(from != to);
+        let w = f64::from(slope_intensity(from, to));
+        let (dx, dy) = (f64::from(to.x - from.x), f64::from(to.y - from.y));
+        let pixels_per_length = dx.abs().max(dy.abs()) / dx.hypot(dy);
+        prop_assert!((w * pixels_per_length - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-5);
+        prop_assert!(w <= 1.0 && w > 0.7);
+    }
+
+    #[test]
+    fn reversed_line_gets_the_same_intensity([from, to] in pixel_line(1000)) {
+        prop_assert_eq!(slope_intensity(from, to), slope_intensity(to, from));
+    }
+}
