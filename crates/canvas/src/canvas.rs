@@ -87,6 +87,11 @@ pub enum CanvasError {
 
 /// A raster of `width × height` pixels with a colour plane and a depth plane.
 ///
+/// The colour plane holds 8 bits per channel, like an `RGBA8` framebuffer
+/// and the PNG it is saved as: [`Canvas::set`] rounds each channel of an
+/// [`Rgba`] to the nearest of 256 levels (clamping to `[0, 1]`), and
+/// [`Canvas::get`] returns the stored level. The depth plane holds `f32`.
+///
 /// Pixel `(x, y)` is stored at index `y · width + x`, row 0 at the bottom
 /// (see the crate documentation for the full convention). Every write
 /// outside the canvas is ignored, so rasterizers need not clip pixels
@@ -95,7 +100,7 @@ pub enum CanvasError {
 pub struct Canvas {
     width: u32,
     height: u32,
-    colour: Vec<Rgba>,
+    colour: Vec<[u8; 4]>,
     depth: Vec<f32>,
 }
 
@@ -126,7 +131,7 @@ impl Canvas {
         Ok(Self {
             width,
             height,
-            colour: vec![Rgba::BLACK; n as usize],
+            colour: vec![Rgba::BLACK.to_rgba8(); n as usize],
             depth: vec![DEPTH_CLEAR; n as usize],
         })
     }
@@ -168,21 +173,23 @@ impl Canvas {
 
     /// Sets every pixel to `colour` and every depth to [`DEPTH_CLEAR`].
     pub fn clear(&mut self, colour: Rgba) {
-        self.colour.fill(colour);
+        self.colour.fill(colour.to_rgba8());
         self.depth.fill(DEPTH_CLEAR);
     }
 
-    /// The colour at `p`, or `None` outside the canvas.
+    /// The colour at `p` (as stored, 8 bits per channel), or `None` outside
+    /// the canvas.
     #[must_use]
     pub fn get(&self, p: Pixel) -> Option<Rgba> {
-        self.index(p).map(|i| self.colour[i])
+        self.index(p).map(|i| Rgba::from_rgba8(self.colour[i]))
     }
 
-    /// Sets the colour at `p`; ignored outside the canvas.
+    /// Sets the colour at `p`, rounded to 8 bits per channel; ignored
+    /// outside the canvas.
     #[inline]
     pub fn set(&mut self, p: Pixel, colour: Rgba) {
         if let Some(i) = self.index(p) {
-            self.colour[i] = colour;
+            self.colour[i] = colour.to_rgba8();
         }
     }
 
@@ -204,7 +211,7 @@ impl Canvas {
     #[inline]
     pub fn plot(&mut self, fragment: Fragment) {
         if let Some(i) = self.index(fragment.pixel) {
-            self.colour[i] = fragment.colour;
+            self.colour[i] = fragment.colour.to_rgba8();
             self.depth[i] = fragment.depth;
         }
     }
@@ -214,17 +221,27 @@ impl Canvas {
     /// `result = colour · s + old · (1 − s)` for the colour channels and
     /// `s + old.a · (1 − s)` for alpha. Coverage is clamped to `[0, 1]`
     /// (NaN counts as 0); ignored outside the canvas.
+    ///
+    /// Like an `RGBA8` framebuffer's blender it works on the stored 8-bit
+    /// levels: `s` is rounded to 8 bits, and each channel is
+    /// `(c·s + old·(255 − s)) / 255`, rounded.
     #[inline]
     pub fn blend(&mut self, p: Pixel, colour: Rgba, coverage: f32) {
         if let Some(i) = self.index(p) {
-            let s = colour.a * if coverage >= 0.0 { coverage.min(1.0) } else { 0.0 };
-            let old = self.colour[i];
-            self.colour[i] = Rgba::new(
-                colour.r * s + old.r * (1.0 - s),
-                colour.g * s + old.g * (1.0 - s),
-                colour.b * s + old.b * (1.0 - s),
-                s + old.a * (1.0 - s),
-            );
+            let coverage = if coverage >= 0.0 {
+                coverage.min(1.0)
+            } else {
+                0.0
+            };
+            let s = u32::from(Rgba::new(0.0, 0.0, 0.0, colour.a * coverage).to_rgba8()[3]);
+            let src = colour.to_rgba8();
+            let src = [src[0], src[1], src[2], 255];
+            let old = &mut self.colour[i];
+            for (o, c) in old.iter_mut().zip(src) {
+                let mixed = u32::from(c) * s + u32::from(*o) * (255 - s);
+                // Division by 255 with rounding, exact for 0 ≤ mixed ≤ 255².
+                *o = ((mixed + 128 + ((mixed + 128) >> 8)) >> 8) as u8;
+            }
         }
     }
 
@@ -241,10 +258,12 @@ impl Canvas {
     /// Every pixel with its colour, row-major from the bottom row.
     pub fn enumerate(&self) -> impl Iterator<Item = (Pixel, Rgba)> + '_ {
         let w = self.width.max(1) as usize;
-        self.colour
-            .iter()
-            .enumerate()
-            .map(move |(i, &c)| (Pixel::new((i % w) as i32, (i / w) as i32), c))
+        self.colour.iter().enumerate().map(move |(i, &c)| {
+            (
+                Pixel::new((i % w) as i32, (i / w) as i32),
+                Rgba::from_rgba8(c),
+            )
+        })
     }
 
     /// The colour plane as an 8-bit RGBA image, top row first (flipped, so
@@ -253,7 +272,7 @@ impl Canvas {
     pub fn to_image(&self) -> image::RgbaImage {
         image::RgbaImage::from_fn(self.width, self.height, |col, row| {
             let y = self.height - 1 - row;
-            image::Rgba(self.colour[(y * self.width + col) as usize].to_rgba8())
+            image::Rgba(self.colour[(y * self.width + col) as usize])
         })
     }
 
@@ -336,9 +355,10 @@ mod tests {
     fn blend_with_half_coverage_mixes_half() {
         let mut c = Canvas::new(1, 1);
         c.blend(Pixel::new(0, 0), Rgba::WHITE, 0.5);
-        assert!(c.get(Pixel::new(0, 0)).unwrap().approx_eq(Rgba::grey(0.5), 1e-6));
+        let half = Rgba::from_rgba8([128, 128, 128, 255]);
+        assert_eq!(c.get(Pixel::new(0, 0)), Some(half));
         c.blend(Pixel::new(0, 0), Rgba::WHITE, f32::NAN);
-        assert!(c.get(Pixel::new(0, 0)).unwrap().approx_eq(Rgba::grey(0.5), 1e-6));
+        assert_eq!(c.get(Pixel::new(0, 0)), Some(half));
     }
 
     #[test]

@@ -71,7 +71,10 @@ pub fn assert_image_matches(
     let sizes_match = (expected.width(), expected.height()) == (yours.width(), yours.height());
     if !sizes_match || comparison.mismatched > allowed {
         let pictures = match written {
-            Ok(()) => format!("pictures: {}/{{yours,reference,difference}}.png", dir.display()),
+            Ok(()) => format!(
+                "pictures: {}/{{yours,reference,difference}}.png",
+                dir.display()
+            ),
             Err(e) => format!("(pictures could not be written: {e})"),
         };
         panic!(

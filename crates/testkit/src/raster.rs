@@ -108,10 +108,7 @@ pub fn assert_canvas_eq(expected: &Canvas, yours: &Canvas, tolerance: f32, what:
         let y = yours.get(p).map_or(0.0, Rgba::ink);
         !((e - y).abs() <= tolerance)
     };
-    let count = expected
-        .enumerate()
-        .filter(|&(p, _)| differs(p))
-        .count();
+    let count = expected.enumerate().filter(|&(p, _)| differs(p)).count();
     if count == 0 {
         return;
     }

@@ -22,7 +22,10 @@ fn horizontal_line_through_pixel_centres_covers_half_the_end_pixels() {
     assert_eq!(got.len(), expected.len(), "{got:?}");
     for ((p, w), (x, e)) in got.iter().zip(expected) {
         assert_eq!(*p, Pixel::new(x, 0));
-        assert!((w - e).abs() < 1e-5, "pixel {p}: intensity {w}, expected {e}");
+        assert!(
+            (w - e).abs() < 1e-5,
+            "pixel {p}: intensity {w}, expected {e}"
+        );
     }
 }
 
@@ -33,7 +36,10 @@ fn horizontal_line_between_rows_splits_them_evenly() {
     let total: f32 = got.iter().map(|&(_, w)| w).sum();
     assert!((total - 3.0).abs() < 1e-5);
     for &(p, w) in &got {
-        assert!((1..=3).contains(&p.x) && (0..=1).contains(&p.y), "unexpected pixel {p}");
+        assert!(
+            (1..=3).contains(&p.x) && (0..=1).contains(&p.y),
+            "unexpected pixel {p}"
+        );
         assert!((w - 0.5).abs() < 1e-5, "pixel {p}: intensity {w}");
     }
 }
@@ -46,7 +52,9 @@ fn zero_length_line_draws_nothing() {
 #[test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
-    area_sampling_line(Vec2::new(1.0, 1.0), Vec2::new(22.0, 8.0), |p, w| canvas.blend(p, Rgba::WHITE, w));
+    area_sampling_line(Vec2::new(1.0, 1.0), Vec2::new(22.0, 8.0), |p, w| {
+        canvas.blend(p, Rgba::WHITE, w)
+    });
     testkit::assert_raster_snapshot!("a_shallow_line", canvas);
 }
 

@@ -30,11 +30,22 @@ fn colour_and_depth_are_interpolated_linearly() {
     let from = Vertex::new(Vec2::new(0.0, 0.0), 0.0, Rgba::BLACK);
     let to = Vertex::new(Vec2::new(4.0, 1.0), 1.0, Rgba::WHITE);
     let fragments = dda(&from, &to);
-    assert_eq!(pixels(&fragments), [(0, 0), (1, 0), (2, 1), (3, 1), (4, 1)].map(|(x, y)| Pixel::new(x, y)));
+    assert_eq!(
+        pixels(&fragments),
+        [(0, 0), (1, 0), (2, 1), (3, 1), (4, 1)].map(|(x, y)| Pixel::new(x, y))
+    );
     for (k, f) in fragments.iter().enumerate() {
         let t = k as f32 / 4.0;
-        assert!((f.depth - t).abs() < 1e-6, "depth at column {k}: {} instead of {t}", f.depth);
-        assert!(f.colour.approx_eq(Rgba::grey(t), 1e-6), "colour at column {k}: {:?}", f.colour);
+        assert!(
+            (f.depth - t).abs() < 1e-6,
+            "depth at column {k}: {} instead of {t}",
+            f.depth
+        );
+        assert!(
+            f.colour.approx_eq(Rgba::grey(t), 1e-6),
+            "colour at column {k}: {:?}",
+            f.colour
+        );
     }
 }
 
@@ -43,9 +54,15 @@ fn rounding_is_half_away_from_zero() {
     // (0,0) -> (4,2): at x = 1 and x = 3 the line is at y = 0.5 and 1.5,
     // rounded up; going the other way at negative coordinates, down.
     let up = pixels(&dda(&white(0.0, 0.0), &white(4.0, 2.0)));
-    assert_eq!(up, [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)].map(|(x, y)| Pixel::new(x, y)));
+    assert_eq!(
+        up,
+        [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)].map(|(x, y)| Pixel::new(x, y))
+    );
     let down = pixels(&dda(&white(0.0, 0.0), &white(-4.0, -2.0)));
-    assert_eq!(down, [(0, 0), (-1, -1), (-2, -1), (-3, -2), (-4, -2)].map(|(x, y)| Pixel::new(x, y)));
+    assert_eq!(
+        down,
+        [(0, 0), (-1, -1), (-2, -1), (-3, -2), (-4, -2)].map(|(x, y)| Pixel::new(x, y))
+    );
 }
 
 #[test]
@@ -54,7 +71,10 @@ fn t_is_clamped_when_the_first_column_lies_before_the_endpoint() {
     let from = Vertex::new(Vec2::new(0.4, 0.0), 0.2, Rgba::BLACK);
     let to = Vertex::new(Vec2::new(3.6, 0.0), 0.8, Rgba::WHITE);
     let fragments = dda(&from, &to);
-    assert_eq!(pixels(&fragments), [0, 1, 2, 3, 4].map(|x| Pixel::new(x, 0)));
+    assert_eq!(
+        pixels(&fragments),
+        [0, 1, 2, 3, 4].map(|x| Pixel::new(x, 0))
+    );
     assert_eq!(fragments[0].depth, 0.2);
     assert_eq!(fragments[0].colour, Rgba::BLACK);
     assert_eq!(fragments[4].depth, 0.8);
@@ -66,13 +86,24 @@ fn zero_length_line_is_one_fragment_with_the_first_colour() {
     let from = Vertex::new(Vec2::new(2.5, -1.5), 0.25, Rgba::RED);
     let to = Vertex::new(Vec2::new(2.5, -1.5), 0.75, Rgba::BLUE);
     let fragments = dda(&from, &to);
-    assert_eq!(fragments, [Fragment { pixel: Pixel::new(3, -2), depth: 0.25, colour: Rgba::RED }]);
+    assert_eq!(
+        fragments,
+        [Fragment {
+            pixel: Pixel::new(3, -2),
+            depth: 0.25,
+            colour: Rgba::RED
+        }]
+    );
 }
 
 #[test]
 fn lines_in_all_octants() {
     let sheet = octant_sheet(|from, to, canvas| {
-        dda_line(&white(from.x as f32, from.y as f32), &white(to.x as f32, to.y as f32), |f| canvas.plot(f));
+        dda_line(
+            &white(from.x as f32, from.y as f32),
+            &white(to.x as f32, to.y as f32),
+            |f| canvas.plot(f),
+        );
     });
     testkit::insta::assert_snapshot!("lines_in_all_octants", sheet);
 }
@@ -91,7 +122,11 @@ fn star() -> Canvas {
         );
         // Radii alternate so that the tips also test non-integer endpoints.
         let radius = if k % 2 == 0 { 60.0 } else { 44.3 };
-        let tip = Vertex::new(centre.position + radius * Vec2::new(angle.cos(), angle.sin()), 1.0, colour);
+        let tip = Vertex::new(
+            centre.position + radius * Vec2::new(angle.cos(), angle.sin()),
+            1.0,
+            colour,
+        );
         dda_line(&tip, &centre, |f| canvas.plot(f));
     }
     canvas

@@ -20,7 +20,17 @@ fn each_pattern_appears_where_the_slope_allows_it() {
     //   1 |...####..   (1) flat, (2) second up, (1) flat, (2) second up
     //   0 |###......
     let flat = double_step(Pixel::new(0, 0), Pixel::new(8, 2));
-    let expected = [(0, 0), (1, 0), (2, 0), (3, 1), (4, 1), (5, 1), (6, 1), (7, 2), (8, 2)];
+    let expected = [
+        (0, 0),
+        (1, 0),
+        (2, 0),
+        (3, 1),
+        (4, 1),
+        (5, 1),
+        (6, 1),
+        (7, 2),
+        (8, 2),
+    ];
     assert_eq!(flat, expected.map(|(x, y)| Pixel::new(x, y)));
     // Slope 3/4: patterns 2, 3 and 4; ties at x = 2 and x = 6.
     //   6 |........#   double steps from x = 0, 2, 4, 6:
@@ -31,7 +41,17 @@ fn each_pattern_appears_where_the_slope_allows_it() {
     //   1 |.##......
     //   0 |#........
     let steep = double_step(Pixel::new(0, 0), Pixel::new(8, 6));
-    let expected = [(0, 0), (1, 1), (2, 1), (3, 2), (4, 3), (5, 4), (6, 4), (7, 5), (8, 6)];
+    let expected = [
+        (0, 0),
+        (1, 1),
+        (2, 1),
+        (3, 2),
+        (4, 3),
+        (5, 4),
+        (6, 4),
+        (7, 5),
+        (8, 6),
+    ];
     assert_eq!(steep, expected.map(|(x, y)| Pixel::new(x, y)));
 }
 
@@ -40,7 +60,11 @@ fn odd_number_of_steps_ends_on_the_endpoint() {
     let pixels = double_step(Pixel::new(0, 0), Pixel::new(5, 2));
     assert_eq!(pixels.len(), 6);
     assert_eq!(pixels.last(), Some(&Pixel::new(5, 2)));
-    assert_pixels_eq(&nearest_pixels(Pixel::new(0, 0), Pixel::new(5, 2), None), &pixels, "(0,0) -> (5,2)");
+    assert_pixels_eq(
+        &nearest_pixels(Pixel::new(0, 0), Pixel::new(5, 2), None),
+        &pixels,
+        "(0,0) -> (5,2)",
+    );
 }
 
 #[test]
@@ -62,7 +86,10 @@ fn lines_in_all_octants() {
 
 #[test]
 fn endpoints_beyond_max_coord_draw_nothing() {
-    assert_eq!(double_step(Pixel::new(0, 0), Pixel::new(0, -MAX_COORD - 1)), []);
+    assert_eq!(
+        double_step(Pixel::new(0, 0), Pixel::new(0, -MAX_COORD - 1)),
+        []
+    );
 }
 
 proptest! {

@@ -25,11 +25,21 @@ fn the_table_falls_from_one_to_nothing() {
 #[test]
 fn horizontal_line_has_full_middle_and_equal_neighbours() {
     let got = gs(Pixel::new(0, 0), Pixel::new(5, 0));
-    assert_eq!(got.len(), 18, "three pixels for each of six columns: {got:?}");
+    assert_eq!(
+        got.len(),
+        18,
+        "three pixels for each of six columns: {got:?}"
+    );
     for (p, w) in got {
         let expected = if p.y == 0 { 1.0 } else { filter(1.0) };
-        assert!((-1..=1).contains(&p.y) && (0..=5).contains(&p.x), "unexpected pixel {p}");
-        assert!((w - expected).abs() < 1e-6, "pixel {p}: intensity {w}, expected {expected}");
+        assert!(
+            (-1..=1).contains(&p.y) && (0..=5).contains(&p.x),
+            "unexpected pixel {p}"
+        );
+        assert!(
+            (w - expected).abs() < 1e-6,
+            "pixel {p}: intensity {w}, expected {expected}"
+        );
     }
 }
 
@@ -37,15 +47,24 @@ fn horizontal_line_has_full_middle_and_equal_neighbours() {
 fn diagonal_line_neighbours_are_cos_45_away() {
     // Pixel centres beside a 45° line lie 1/√2 ≈ 0.707 from it.
     for (p, w) in gs(Pixel::new(0, 0), Pixel::new(4, 4)) {
-        let expected = if p.x == p.y { 1.0 } else { filter(std::f64::consts::FRAC_1_SQRT_2) };
-        assert!((w - expected).abs() < 1e-6, "pixel {p}: intensity {w}, expected {expected}");
+        let expected = if p.x == p.y {
+            1.0
+        } else {
+            filter(std::f64::consts::FRAC_1_SQRT_2)
+        };
+        assert!(
+            (w - expected).abs() < 1e-6,
+            "pixel {p}: intensity {w}, expected {expected}"
+        );
     }
 }
 
 #[test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
-    gupta_sproull_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| canvas.blend(p, Rgba::WHITE, w));
+    gupta_sproull_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| {
+        canvas.blend(p, Rgba::WHITE, w)
+    });
     testkit::assert_raster_snapshot!("a_shallow_line", canvas);
 }
 

@@ -20,7 +20,15 @@ fn first_octant_line_matches_the_grid() {
     //   1 |..##.....    (x = 1: y = 0.375 -> 0; x = 4: 1.5 is a tie -> 1)
     //   0 |##.......
     let expected = [
-        (0, 0), (1, 0), (2, 1), (3, 1), (4, 1), (5, 2), (6, 2), (7, 3), (8, 3),
+        (0, 0),
+        (1, 0),
+        (2, 1),
+        (3, 1),
+        (4, 1),
+        (5, 2),
+        (6, 2),
+        (7, 3),
+        (8, 3),
     ]
     .map(|(x, y)| Pixel::new(x, y));
     assert_eq!(midpoint(Pixel::new(0, 0), Pixel::new(8, 3)), expected);
@@ -35,7 +43,10 @@ fn tie_goes_east_left_to_right_and_southwest_right_to_left() {
     // (1,0) and (1,1). The slides: E going right, SW going left: (1,0).
     let right = midpoint(Pixel::new(0, 0), Pixel::new(2, 1));
     let left = midpoint(Pixel::new(2, 1), Pixel::new(0, 0));
-    assert_eq!(right, [Pixel::new(0, 0), Pixel::new(1, 0), Pixel::new(2, 1)]);
+    assert_eq!(
+        right,
+        [Pixel::new(0, 0), Pixel::new(1, 0), Pixel::new(2, 1)]
+    );
     assert_eq!(left, [Pixel::new(2, 1), Pixel::new(1, 0), Pixel::new(0, 0)]);
 }
 
@@ -50,7 +61,10 @@ fn steep_tie_goes_to_the_left_pixel() {
 
 #[test]
 fn zero_length_line_is_its_endpoint() {
-    assert_eq!(midpoint(Pixel::new(-4, 7), Pixel::new(-4, 7)), [Pixel::new(-4, 7)]);
+    assert_eq!(
+        midpoint(Pixel::new(-4, 7), Pixel::new(-4, 7)),
+        [Pixel::new(-4, 7)]
+    );
 }
 
 #[test]
@@ -63,7 +77,13 @@ fn lines_in_all_octants() {
 fn endpoints_beyond_max_coord_draw_nothing() {
     let far = Pixel::new(MAX_COORD + 1, 0);
     assert_eq!(midpoint(Pixel::new(0, 0), far), []);
-    assert_eq!(midpoint(Pixel::new(i32::MIN, i32::MIN), Pixel::new(i32::MAX, i32::MAX)), []);
+    assert_eq!(
+        midpoint(
+            Pixel::new(i32::MIN, i32::MIN),
+            Pixel::new(i32::MAX, i32::MAX)
+        ),
+        []
+    );
 }
 
 proptest! {

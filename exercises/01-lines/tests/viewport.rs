@@ -49,9 +49,16 @@ fn lines_crossing_a_viewport() {
             canvas.set(Pixel::new(x, y), Rgba::grey(0.3));
         }
     }
-    let lines = [((-10, -4), (40, 20)), ((0, 15), (30, 0)), ((12, -50), (14, 60)), ((-5, 8), (9, 30))];
+    let lines = [
+        ((-10, -4), (40, 20)),
+        ((0, 15), (30, 0)),
+        ((12, -50), (14, 60)),
+        ((-5, 8), (9, 30)),
+    ];
     for ((x0, y0), (x1, y1)) in lines {
-        clipped_midpoint_line(Pixel::new(x0, y0), Pixel::new(x1, y1), viewport, |p| canvas.set(p, Rgba::WHITE));
+        clipped_midpoint_line(Pixel::new(x0, y0), Pixel::new(x1, y1), viewport, |p| {
+            canvas.set(p, Rgba::WHITE)
+        });
     }
     testkit::assert_raster_snapshot!("lines_crossing_a_viewport", canvas);
 }
@@ -62,9 +69,17 @@ fn far_outside_line_is_clipped_before_iterating() {
     // viewport finishes within the time limit.
     let (from, to) = (Pixel::new(i32::MIN + 1, -7), Pixel::new(i32::MAX, 19));
     let viewport = Viewport::new(0, -10, 63, 30);
-    assert_pixels_eq(&nearest_pixels(from, to, Some(viewport)), &clipped(from, to, viewport), "a line across the whole i32 range");
+    assert_pixels_eq(
+        &nearest_pixels(from, to, Some(viewport)),
+        &clipped(from, to, viewport),
+        "a line across the whole i32 range",
+    );
     let (from, to) = (Pixel::new(3, i32::MAX), Pixel::new(-2, i32::MIN));
-    assert_pixels_eq(&nearest_pixels(from, to, Some(viewport)), &clipped(from, to, viewport), "a steep line across the whole i32 range");
+    assert_pixels_eq(
+        &nearest_pixels(from, to, Some(viewport)),
+        &clipped(from, to, viewport),
+        "a steep line across the whole i32 range",
+    );
 }
 
 #[test]

@@ -29,12 +29,23 @@ fn quarter_slope_splits_each_column_by_the_fraction() {
     // (0,0) -> (4,1): the ideal line is at y = 0.25, 0.5, 0.75 in columns
     // 1..3: the upper pixel gets that fraction (to 1/256), the lower the rest.
     let got = wu(Pixel::new(0, 0), Pixel::new(4, 1));
-    let intensity = |p: Pixel| got.iter().filter(|&&(q, _)| q == p).map(|&(_, w)| w).sum::<f32>();
+    let intensity = |p: Pixel| {
+        got.iter()
+            .filter(|&&(q, _)| q == p)
+            .map(|&(_, w)| w)
+            .sum::<f32>()
+    };
     assert_eq!(intensity(Pixel::new(0, 0)), 1.0);
     assert_eq!(intensity(Pixel::new(4, 1)), 1.0);
     for (x, f) in [(1, 0.25), (2, 0.5), (3, 0.75)] {
-        assert!((intensity(Pixel::new(x, 1)) - f).abs() <= 1.0 / 256.0, "column {x}: {got:?}");
-        assert!((intensity(Pixel::new(x, 0)) - (1.0 - f)).abs() <= 1.0 / 256.0, "column {x}: {got:?}");
+        assert!(
+            (intensity(Pixel::new(x, 1)) - f).abs() <= 1.0 / 256.0,
+            "column {x}: {got:?}"
+        );
+        assert!(
+            (intensity(Pixel::new(x, 0)) - (1.0 - f)).abs() <= 1.0 / 256.0,
+            "column {x}: {got:?}"
+        );
     }
 }
 
@@ -50,7 +61,9 @@ fn axis_parallel_and_diagonal_lines_are_solid() {
 #[test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
-    wu_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| canvas.blend(p, Rgba::WHITE, w));
+    wu_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| {
+        canvas.blend(p, Rgba::WHITE, w)
+    });
     testkit::assert_raster_snapshot!("a_shallow_line", canvas);
 }
 

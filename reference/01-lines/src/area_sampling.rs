@@ -61,7 +61,11 @@ pub fn area_sampling_line(from: Vec2, to: Vec2, mut plot: impl FnMut(Pixel, f32)
         for y in centre - 2..=centre + 2 {
             let area = square_area_inside(f64::from(x), f64::from(y), &rectangle);
             if area > 0.0 {
-                let p = if x_major { Pixel::new(x, y) } else { Pixel::new(y, x) };
+                let p = if x_major {
+                    Pixel::new(x, y)
+                } else {
+                    Pixel::new(y, x)
+                };
                 plot(p, area.min(1.0) as f32);
             }
         }

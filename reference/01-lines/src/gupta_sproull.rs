@@ -126,8 +126,14 @@ pub fn gupta_sproull_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f3
     let mut j = 0;
     for i in 0..=long {
         plot(pixel(i, j), filter(two_v_dx as f64 * inv_denom));
-        plot(pixel(i, j + 1), filter((two_v_dx - 2 * long) as f64 * inv_denom));
-        plot(pixel(i, j - 1), filter((two_v_dx + 2 * long) as f64 * inv_denom));
+        plot(
+            pixel(i, j + 1),
+            filter((two_v_dx - 2 * long) as f64 * inv_denom),
+        );
+        plot(
+            pixel(i, j - 1),
+            filter((two_v_dx + 2 * long) as f64 * inv_denom),
+        );
         if d > 0 || (d == 0 && diagonal_on_tie) {
             j += 1;
             two_v_dx += 2 * (short - long);

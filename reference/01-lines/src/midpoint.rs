@@ -49,22 +49,24 @@ pub fn midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
     // The diagonal step leads to the smaller minor coordinate exactly when
     // the minor axis runs backwards: then a tie takes it.
     let diagonal_on_tie = if x_major { sy < 0 } else { sx < 0 };
+    // "d > 0, or d = 0 when ties take the diagonal" is, for integers,
+    // "d + 1 > 0" in the second case: one comparison per pixel.
+    let tie_bias = i64::from(diagonal_on_tie);
+    let diagonal = (sx, sy);
+    let straight = if x_major { (sx, 0) } else { (0, sy) };
     let mut d = 2 * short - long;
     let (mut x, mut y) = (from.x, from.y);
     plot(Pixel::new(x, y));
     for _ in 0..long {
-        if d > 0 || (d == 0 && diagonal_on_tie) {
-            x += sx;
-            y += sy;
+        let step = if d + tie_bias > 0 {
             d += 2 * (short - long);
+            diagonal
         } else {
-            if x_major {
-                x += sx;
-            } else {
-                y += sy;
-            }
             d += 2 * short;
-        }
+            straight
+        };
+        x += step.0;
+        y += step.1;
         plot(Pixel::new(x, y));
     }
     // END SOLUTION

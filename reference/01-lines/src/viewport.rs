@@ -40,7 +40,10 @@ pub fn clipped_midpoint_line(
     if viewport.is_empty() {
         return;
     }
-    let (dx, dy) = (i64::from(to.x) - i64::from(from.x), i64::from(to.y) - i64::from(from.y));
+    let (dx, dy) = (
+        i64::from(to.x) - i64::from(from.x),
+        i64::from(to.y) - i64::from(from.y),
+    );
     let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
     let x_major = dx.abs() >= dy.abs();
     let (long, short) = if x_major {
@@ -112,9 +115,19 @@ pub fn clipped_midpoint_line(
     } as i64;
     let mut d = (2 * s * (i128::from(first) + 1) - l * (2 * i128::from(j) + 1)) as i64;
     let pixel = |i: i64, j: i64| {
-        let (major, minor) = (i * if x_major { sx } else { sy }, j * if x_major { sy } else { sx });
-        let (px, py) = if x_major { (major, minor) } else { (minor, major) };
-        Pixel::new((i64::from(from.x) + px) as i32, (i64::from(from.y) + py) as i32)
+        let (major, minor) = (
+            i * if x_major { sx } else { sy },
+            j * if x_major { sy } else { sx },
+        );
+        let (px, py) = if x_major {
+            (major, minor)
+        } else {
+            (minor, major)
+        };
+        Pixel::new(
+            (i64::from(from.x) + px) as i32,
+            (i64::from(from.y) + py) as i32,
+        )
     };
     let mut i = first;
     loop {

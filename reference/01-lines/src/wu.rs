@@ -66,7 +66,8 @@ pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
     }
     // short < long, so the step is below 1: a 0.64 fixed-point fraction,
     // rounded up so that reaching a whole row wraps exactly there.
-    let error_adjust = ((u128::from(short.unsigned_abs()) << 64).div_ceil(u128::from(long.unsigned_abs()))) as u64;
+    let error_adjust =
+        ((u128::from(short.unsigned_abs()) << 64).div_ceil(u128::from(long.unsigned_abs()))) as u64;
     let mut error = 0_u64;
     let mut j = 0;
     for i in 1..long {

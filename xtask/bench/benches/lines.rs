@@ -20,7 +20,9 @@ const LINES: usize = 1000;
 fn line_set() -> Vec<[Pixel; 2]> {
     let mut state: u64 = 0x2545_F491_4F6C_DD1D;
     let mut next = || {
-        state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
         ((state >> 33) % u64::from(SIDE)) as i32
     };
     (0..LINES)

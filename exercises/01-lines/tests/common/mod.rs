@@ -71,7 +71,11 @@ pub fn nearest_pixels(from: Pixel, to: Pixel, window: Option<Viewport>) -> Vec<P
 /// some column (where rounding rules differ).
 pub fn has_tie(from: Pixel, to: Pixel) -> bool {
     let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
-    let (dm, dn) = if dx.abs() >= dy.abs() { (dx, dy) } else { (dy, dx) };
+    let (dm, dn) = if dx.abs() >= dy.abs() {
+        (dx, dy)
+    } else {
+        (dy, dx)
+    };
     dm != 0 && (0..=dm.abs()).any(|k| (2 * dn * k).rem_euclid(2 * dm.abs()) == dm.abs())
 }
 
@@ -135,7 +139,9 @@ pub fn one_step_per_column(pixels: &[Pixel], x_major: bool) -> Result<(), String
             ((b.y - a.y).abs(), (b.x - a.x).abs())
         };
         if dmaj != 1 || dmin > 1 {
-            return Err(format!("step {a} -> {b} is not one column and at most one row"));
+            return Err(format!(
+                "step {a} -> {b} is not one column and at most one row"
+            ));
         }
     }
     Ok(())
