@@ -22,6 +22,41 @@ fn the_table_falls_from_one_to_nothing() {
     assert_eq!(filter(1.6), 0.0);
 }
 
+/// The cone filter's volume over the strip, by brute force: a grid of
+/// small cells over the disk of radius 1, each weighted by the cone's
+/// height `1 − r` and counted when its centre lies in the strip
+/// `|u − D| ≤ ½`.
+fn cone_volume_over_strip(d: f64) -> f64 {
+    const N: usize = 800;
+    let h = 2.0 / N as f64;
+    let mut volume = 0.0;
+    for i in 0..N {
+        let u = -1.0 + (i as f64 + 0.5) * h;
+        if (u - d).abs() > 0.5 {
+            continue;
+        }
+        for j in 0..N {
+            let v = -1.0 + (j as f64 + 0.5) * h;
+            let r = u.hypot(v);
+            if r < 1.0 {
+                volume += (1.0 - r) * h * h;
+            }
+        }
+    }
+    volume
+}
+
+#[test]
+fn the_table_is_the_cone_volume_over_the_strip() {
+    let table = distance_table();
+    let full = cone_volume_over_strip(0.0);
+    for (k, &value) in table.iter().enumerate() {
+        let d = k as f64 / 16.0;
+        let expected = cone_volume_over_strip(d) / full;
+        assert!((f64::from(value) - expected).abs() < 2e-3, "D = {d}: table {value}, brute force {expected:.4}");
+    }
+}
+
 #[test]
 fn horizontal_line_has_full_middle_and_equal_neighbours() {
     let got = gs(Pixel::new(0, 0), Pixel::new(5, 0));

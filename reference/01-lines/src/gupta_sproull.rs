@@ -6,7 +6,9 @@
 //! pixel of each column is the midpoint line's (ties to the smaller minor
 //! coordinate), and the pixels on either side of it are added.
 
+// BEGIN SOLUTION
 use std::sync::OnceLock;
+// END SOLUTION
 
 use canvas::{MAX_COORD, Pixel};
 
@@ -32,12 +34,14 @@ pub const STEPS_PER_PIXEL: f64 = 16.0;
 /// integral is taken with Simpson's rule once, on first use.
 #[must_use]
 pub fn distance_table() -> &'static [f32; TABLE_LEN] {
+    // BEGIN SOLUTION gupta_sproull: compute the table once (std::sync::OnceLock): the cone volume over the strip for D = k/16, divided by the value at D = 0
     static TABLE: OnceLock<[f32; TABLE_LEN]> = OnceLock::new();
     TABLE.get_or_init(|| {
         let volume = |d: f64| simpson(cone_section, d - 0.5, d + 0.5);
         let full = volume(0.0);
         std::array::from_fn(|k| (volume(k as f64 / STEPS_PER_PIXEL) / full) as f32)
     })
+    // END SOLUTION
 }
 
 /// The filter value for a pixel at distance `distance` from the line: the
@@ -50,30 +54,6 @@ pub fn filter(distance: f64) -> f32 {
     } else {
         0.0
     }
-}
-
-/// The cone's cross-section at distance `u` from its axis (see
-/// [`distance_table`]).
-fn cone_section(u: f64) -> f64 {
-    let u = u.abs();
-    if u >= 1.0 {
-        return 0.0;
-    }
-    if u == 0.0 {
-        return 1.0;
-    }
-    let rho = (1.0 - u * u).sqrt();
-    rho - 0.5 * u * u * ((1.0 + rho) / (1.0 - rho)).ln()
-}
-
-/// Simpson's rule for `∫ f` over `[a, b]` with 512 intervals.
-fn simpson(f: fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    const INTERVALS: usize = 512;
-    let h = (b - a) / INTERVALS as f64;
-    let inner: f64 = (1..INTERVALS)
-        .map(|k| f(a + k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
-        .sum();
-    (f(a) + inner + f(b)) * h / 3.0
 }
 
 /// Draws the antialiased line from `from` to `to` and calls
@@ -145,3 +125,29 @@ pub fn gupta_sproull_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f3
     }
     // END SOLUTION
 }
+
+// BEGIN SOLUTION
+/// The cone's cross-section at distance `u` from its axis (see
+/// [`distance_table`]).
+fn cone_section(u: f64) -> f64 {
+    let u = u.abs();
+    if u >= 1.0 {
+        return 0.0;
+    }
+    if u == 0.0 {
+        return 1.0;
+    }
+    let rho = (1.0 - u * u).sqrt();
+    rho - 0.5 * u * u * ((1.0 + rho) / (1.0 - rho)).ln()
+}
+
+/// Simpson's rule for `∫ f` over `[a, b]` with 512 intervals.
+fn simpson(f: fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    const INTERVALS: usize = 512;
+    let h = (b - a) / INTERVALS as f64;
+    let inner: f64 = (1..INTERVALS)
+        .map(|k| f(a + k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(a) + inner + f(b)) * h / 3.0
+}
+// END SOLUTION

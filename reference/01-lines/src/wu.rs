@@ -29,7 +29,7 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
-    // BEGIN SOLUTION wu: accumulate the fractional minor coordinate in a u32, stepping a row on wrap-around, and split each column between two pixels
+    // BEGIN SOLUTION wu: accumulate the fractional minor coordinate in an unsigned fixed-point error, stepping a row on wrap-around, and split each column between two pixels
     if [from.x, from.y, to.x, to.y]
         .iter()
         .any(|c| c.unsigned_abs() > MAX_COORD as u32)
