@@ -55,10 +55,10 @@ pub fn assert_image_matches(
     tolerance: Tolerance,
 ) {
     let reference = reference.as_ref();
-    if std::env::var_os("TESTKIT_BLESS").is_some_and(|v| v == "1") {
-        if let Err(e) = yours.save_png(reference) {
-            panic!("{name}: could not bless the reference image: {e}");
-        }
+    if std::env::var_os("TESTKIT_BLESS").is_some_and(|v| v == "1")
+        && let Err(e) = yours.save_png(reference)
+    {
+        panic!("{name}: could not bless the reference image: {e}");
     }
     let expected = match Canvas::load_png(reference) {
         Ok(c) => c,
@@ -113,7 +113,8 @@ pub fn compare(expected: &Canvas, yours: &Canvas, channel: f32) -> ImageComparis
                 _ => f32::INFINITY,
             };
             result.max_difference = result.max_difference.max(d);
-            if !(d <= channel) {
+            // NaN never matches: `d <= channel` is false for it.
+            if d.is_nan() || d > channel {
                 result.mismatched += 1;
             }
         }

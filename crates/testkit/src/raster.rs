@@ -106,7 +106,8 @@ pub fn assert_canvas_eq(expected: &Canvas, yours: &Canvas, tolerance: f32, what:
     let differs = |p: Pixel| {
         let e = expected.get(p).map_or(0.0, Rgba::ink);
         let y = yours.get(p).map_or(0.0, Rgba::ink);
-        !((e - y).abs() <= tolerance)
+        let d = (e - y).abs();
+        d.is_nan() || d > tolerance
     };
     let count = expected.enumerate().filter(|&(p, _)| differs(p)).count();
     if count == 0 {
