@@ -1,1 +1,117 @@
-fn main() {}
+//! `cargo xtask`: the course's tooling, as plain Rust (the xtask pattern).
+//!
+//! This file only parses the command line and dispatches; each command is
+//! its own module.
+
+mod bench;
+mod cargo;
+mod grade;
+mod stubs;
+mod test;
+mod topics;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::{Context, Result};
+use clap::{Args, Parser, Subcommand};
+
+/// Course tooling: grade exercises, generate stubs, test the course.
+#[derive(Parser)]
+#[command(name = "cargo xtask", bin_name = "cargo xtask")]
+struct Cli {
+    /// The course checkout to work on [default: the workspace xtask belongs to].
+    #[arg(long, global = true, value_name = "DIR")]
+    root: Option<PathBuf>,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Grade the exercises: points per task, the first failing case, a diff.
+    Grade(GradeArgs),
+    /// Write exercises/*/src from the solutions in reference/*/src.
+    Stubs {
+        /// Write nothing; fail if any student file is not what would be generated.
+        #[arg(long)]
+        check: bool,
+    },
+    /// The project's test command: stubs in sync, reference scores 100 %, stubs score 0.
+    Test,
+    /// Run the benchmarks (`cargo bench -p course-bench`), passing ARGS through.
+    Bench {
+        /// Arguments for `cargo bench` (e.g. `-- dda`).
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+}
+
+#[derive(Args)]
+struct GradeArgs {
+    /// Topics to grade: folder (`01-lines`), its name (`lines`), package or number; default all.
+    topics: Vec<String>,
+    /// Grade the reference solutions instead of the student code.
+    #[arg(long)]
+    reference: bool,
+    /// Grade another checkout (a submission) instead of this one (same as --root).
+    #[arg(long, value_name = "DIR")]
+    submission: Option<PathBuf>,
+    /// Where report.json, results.json, junit.xml, logs and images go [default: <root>/target/grade].
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Tests run at the same time [default: the number of CPUs].
+    #[arg(long, short, value_name = "N")]
+    jobs: Option<usize>,
+    /// cargo's target directory for the build [default: cargo's].
+    #[arg(long, value_name = "DIR")]
+    target_dir: Option<PathBuf>,
+}
+
+fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
+    let root = match args.submission {
+        Some(dir) => dir
+            .canonicalize()
+            .with_context(|| format!("cannot find the submission {}", dir.display()))?,
+        None => root,
+    };
+    let mut options = grade::GradeOptions::new(root);
+    options.topics = args.topics;
+    options.reference = args.reference;
+    if let Some(out) = args.out {
+        options.out = out;
+    }
+    if let Some(jobs) = args.jobs {
+        options.jobs = jobs;
+    }
+    options.target_dir = args.target_dir;
+    grade::run(&options).map(drop)
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let root = match cli.root.map(|dir| {
+        dir.canonicalize()
+            .with_context(|| format!("cannot find {}", dir.display()))
+    }) {
+        Some(Ok(root)) => root,
+        Some(Err(error)) => {
+            eprintln!("error: {error:#}");
+            return ExitCode::FAILURE;
+        }
+        None => cargo::project_root(),
+    };
+    let result = match cli.command {
+        Command::Grade(args) => grade(root, args),
+        Command::Stubs { check } => stubs::run(&root, check),
+        Command::Test => test::run(&root),
+        Command::Bench { args } => bench::run(&root, &args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

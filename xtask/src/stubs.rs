@@ -54,9 +54,20 @@ fn marker(line: &str) -> Option<Marker<'_>> {
     }
 }
 
-/// The `todo!` line for a region: the string literal escapes `\` and `"`,
-/// and doubles `{`/`}` because `todo!("...")` is a format string.
-fn todo_line(indent: &str, task: &str, instruction: &str, newline: &str) -> String {
+/// rustfmt's default line width.
+pub const RUSTFMT_MAX_WIDTH: usize = 100;
+
+/// The `todo!` for a region, formatted as rustfmt would: the string literal
+/// escapes `\` and `"`, and doubles `{`/`}` because `todo!("...")` is a
+/// format string; a call wider than `max_width` is split over three lines
+/// (rustfmt never breaks the literal itself).
+fn todo_call(
+    indent: &str,
+    task: &str,
+    instruction: &str,
+    newline: &str,
+    max_width: usize,
+) -> String {
     let mut literal = String::new();
     for c in format!("{task}: {instruction}").chars() {
         match c {
@@ -67,28 +78,81 @@ fn todo_line(indent: &str, task: &str, instruction: &str, newline: &str) -> Stri
             c => literal.push(c),
         }
     }
-    format!("{indent}todo!(\"{literal}\"){newline}")
+    let one_line = format!("{indent}todo!(\"{literal}\")");
+    if display_width(&one_line) <= max_width {
+        return format!("{one_line}{newline}");
+    }
+    let newline = if newline.is_empty() { "\n" } else { newline };
+    format!("{indent}todo!({newline}{indent}    \"{literal}\"{newline}{indent}){newline}")
+}
+
+/// Columns a line takes in rustfmt's eyes: East Asian wide characters and
+/// emoji count two (a close approximation of the `unicode-width` crate).
+fn display_width(line: &str) -> usize {
+    line.chars()
+        .map(|c| match u32::from(c) {
+            0x1100..=0x115F
+            | 0x2E80..=0xA4CF
+            | 0xAC00..=0xD7A3
+            | 0xF900..=0xFAFF
+            | 0xFE30..=0xFE4F
+            | 0xFF00..=0xFF60
+            | 0xFFE0..=0xFFE6
+            | 0x1F300..=0x1F64F
+            | 0x1F900..=0x1F9FF
+            | 0x20000..=0x3FFFD => 2,
+            _ => 1,
+        })
+        .sum()
+}
+
+/// `max_width` from the checkout's `rustfmt.toml` or `.rustfmt.toml`, or
+/// rustfmt's default.
+pub fn rustfmt_max_width(root: &Path) -> Result<usize> {
+    #[derive(serde::Deserialize)]
+    struct Config {
+        max_width: Option<usize>,
+    }
+    for name in ["rustfmt.toml", ".rustfmt.toml"] {
+        let path = root.join(name);
+        if let Ok(text) = fs::read_to_string(&path) {
+            let config: Config =
+                toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+            return Ok(config.max_width.unwrap_or(RUSTFMT_MAX_WIDTH));
+        }
+    }
+    Ok(RUSTFMT_MAX_WIDTH)
 }
 
 /// Generates the student file from a reference file. `file` names the
 /// reference file in errors (`file:line: ...`); `task_ids` are the topic's
-/// tasks. Every problem in the file is reported, not just the first.
-pub fn generate(source: &str, file: &str, task_ids: &[&str]) -> Result<String, Vec<String>> {
+/// tasks; `max_width` is rustfmt's. Every problem in the file is reported,
+/// not just the first.
+pub fn generate(
+    source: &str,
+    file: &str,
+    task_ids: &[&str],
+    max_width: usize,
+) -> Result<String, Vec<String>> {
     let mut out = String::with_capacity(source.len());
     let mut errors = Vec::new();
-    // The line number of the open region's BEGIN, if inside one.
-    let mut open: Option<usize> = None;
+    // The line number of the open region's BEGIN and whether it is a bare
+    // (helper) region, if inside one.
+    let mut open: Option<(usize, bool)> = None;
+    // A helper region was just removed: blank lines that would now double
+    // an earlier one are dropped too, so that the stub stays rustfmt-clean.
+    let mut after_removal = false;
     for (index, line) in source.split_inclusive('\n').enumerate() {
         let number = index + 1;
         match marker(line) {
             Some(Marker::Begin { rest }) => {
-                if let Some(outer) = open {
+                if let Some((outer, _)) = open {
                     errors.push(format!(
                         "{file}:{number}: nested `{BEGIN_MARKER}` (the region opened at line {outer} is not closed)"
                     ));
                     continue;
                 }
-                open = Some(number);
+                open = Some((number, rest.is_empty()));
                 if rest.is_empty() {
                     continue; // a helper region: removed without a trace
                 }
@@ -106,7 +170,9 @@ pub fn generate(source: &str, file: &str, task_ids: &[&str]) -> Result<String, V
                         task_ids.join(", ")
                     ));
                 } else if instruction.is_empty() {
-                    errors.push(format!("{file}:{number}: the instruction for task `{task}` is empty"));
+                    errors.push(format!(
+                        "{file}:{number}: the instruction for task `{task}` is empty"
+                    ));
                 }
                 let indent = &line[..line.len() - line.trim_start().len()];
                 let newline = if line.ends_with("\r\n") {
@@ -116,33 +182,84 @@ pub fn generate(source: &str, file: &str, task_ids: &[&str]) -> Result<String, V
                 } else {
                     ""
                 };
-                out.push_str(&todo_line(indent, task, instruction, newline));
+                out.push_str(&todo_call(indent, task, instruction, newline, max_width));
             }
             Some(Marker::End) => {
-                if open.take().is_none() {
-                    errors.push(format!("{file}:{number}: `{END_MARKER}` without a `{BEGIN_MARKER}`"));
+                if let Some((_, bare)) = open.take() {
+                    after_removal |= bare;
+                } else {
+                    errors.push(format!(
+                        "{file}:{number}: `{END_MARKER}` without a `{BEGIN_MARKER}`"
+                    ));
                 }
             }
             None if open.is_some() => {} // solution code
-            None => out.push_str(line),
+            None if after_removal && line.trim().is_empty() && ends_with_blank_line(&out) => {}
+            None => {
+                after_removal &= line.trim().is_empty();
+                out.push_str(line);
+            }
         }
     }
-    if let Some(begin) = open {
-        errors.push(format!("{file}:{begin}: `{BEGIN_MARKER}` without an `{END_MARKER}`"));
+    if after_removal {
+        // The file ended with a helper region: no blank lines at the end.
+        while out.ends_with("\n\n") || out.ends_with("\n\r\n") {
+            out.truncate(out.trim_end().len());
+            out.push_str(if source.ends_with("\r\n") {
+                "\r\n"
+            } else {
+                "\n"
+            });
+        }
     }
-    if errors.is_empty() { Ok(out) } else { Err(errors) }
+    if let Some((begin, _)) = open {
+        errors.push(format!(
+            "{file}:{begin}: `{BEGIN_MARKER}` without an `{END_MARKER}`"
+        ));
+    }
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
+}
+
+/// The number of the first line where `a` and `b` differ.
+fn first_difference(a: &str, b: &str) -> usize {
+    let mut a_lines = a.lines();
+    let mut b_lines = b.lines();
+    let mut number = 1;
+    while let (Some(x), Some(y)) = (a_lines.next(), b_lines.next()) {
+        if x != y {
+            return number;
+        }
+        number += 1;
+    }
+    number
+}
+
+/// Whether `text` is empty or ends with an empty line.
+fn ends_with_blank_line(text: &str) -> bool {
+    text.is_empty() || text.ends_with("\n\n") || text.ends_with("\n\r\n")
 }
 
 /// Lists the `.rs` files under `dir`, relative to it, sorted.
 fn rust_files(dir: &Path) -> Result<Vec<PathBuf>> {
     fn walk(base: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
-        let entries = fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))?;
+        let entries =
+            fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))?;
         for entry in entries {
-            let path = entry.with_context(|| format!("cannot list {}", dir.display()))?.path();
+            let path = entry
+                .with_context(|| format!("cannot list {}", dir.display()))?
+                .path();
             if path.is_dir() {
                 walk(base, &path, files)?;
             } else if path.extension().is_some_and(|ext| ext == "rs") {
-                files.push(path.strip_prefix(base).expect("walked from base").to_path_buf());
+                files.push(
+                    path.strip_prefix(base)
+                        .expect("walked from base")
+                        .to_path_buf(),
+                );
             }
         }
         Ok(())
@@ -159,8 +276,8 @@ fn rust_files(dir: &Path) -> Result<Vec<PathBuf>> {
 #[derive(Debug, Default)]
 pub struct Outcome {
     /// Student files whose content is not what the reference generates
-    /// (`--check`) or that were rewritten.
-    pub changed: Vec<PathBuf>,
+    /// (`--check`, with the first line that differs) or that were rewritten.
+    pub changed: Vec<(PathBuf, Option<usize>)>,
     /// Student files that were already up to date.
     pub unchanged: usize,
     /// Marker errors and files without a counterpart.
@@ -177,15 +294,27 @@ pub fn sync(root: &Path, check: bool) -> Result<Outcome> {
             reference_root.display()
         );
     }
+    let max_width = rustfmt_max_width(root)?;
     let mut outcome = Outcome::default();
     for topic in topics::discover(root)? {
-        sync_topic(root, &topic, check, &mut outcome)?;
+        sync_topic(root, &topic, check, max_width, &mut outcome)?;
     }
     Ok(outcome)
 }
 
-fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) -> Result<()> {
-    let relative = |path: &Path| path.strip_prefix(root).unwrap_or(path).display().to_string();
+fn sync_topic(
+    root: &Path,
+    topic: &Topic,
+    check: bool,
+    max_width: usize,
+    outcome: &mut Outcome,
+) -> Result<()> {
+    let relative = |path: &Path| {
+        path.strip_prefix(root)
+            .unwrap_or(path)
+            .display()
+            .to_string()
+    };
     let reference_src = root.join("reference").join(&topic.name).join("src");
     let exercise_src = topic.dir.join("src");
     if !reference_src.is_dir() {
@@ -211,7 +340,7 @@ fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) ->
         }
         let source = fs::read_to_string(&source_path)
             .with_context(|| format!("cannot read {}", source_path.display()))?;
-        let generated = match generate(&source, &relative(&source_path), &ids) {
+        let generated = match generate(&source, &relative(&source_path), &ids, max_width) {
             Ok(generated) => generated,
             Err(errors) => {
                 outcome.errors.extend(errors);
@@ -231,7 +360,8 @@ fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) ->
                     relative(&target_path)
                 ));
             } else {
-                outcome.changed.push(target_path);
+                let line = first_difference(current.as_deref().unwrap_or_default(), &generated);
+                outcome.changed.push((target_path, Some(line)));
             }
             continue;
         }
@@ -241,7 +371,7 @@ fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) ->
         }
         fs::write(&target_path, generated)
             .with_context(|| format!("cannot write {}", target_path.display()))?;
-        outcome.changed.push(target_path);
+        outcome.changed.push((target_path, None));
     }
     for file in rust_files(&exercise_src)? {
         if file != Path::new(CRATE_ROOT) && !reference_files.contains(&file) {
@@ -259,11 +389,19 @@ fn sync_topic(root: &Path, topic: &Topic, check: bool, outcome: &mut Outcome) ->
 /// finds a difference or when any file has a marker error.
 pub fn run(root: &Path, check: bool) -> Result<()> {
     let outcome = sync(root, check)?;
-    let relative = |path: &Path| path.strip_prefix(root).unwrap_or(path).display().to_string();
+    let relative = |path: &Path| {
+        path.strip_prefix(root)
+            .unwrap_or(path)
+            .display()
+            .to_string()
+    };
     let mut message = String::new();
-    for path in &outcome.changed {
-        let verb = if check { "out of date" } else { "wrote" };
-        writeln!(message, "{verb}: {}", relative(path)).expect("writing to a String");
+    for (path, line) in &outcome.changed {
+        let line = match line {
+            Some(line) => format!("{}:{line}: out of date (first difference)", relative(path)),
+            None => format!("wrote {}", relative(path)),
+        };
+        writeln!(message, "{line}").expect("writing to a String");
     }
     for error in &outcome.errors {
         writeln!(message, "error: {error}").expect("writing to a String");
@@ -281,14 +419,23 @@ pub fn run(root: &Path, check: bool) -> Result<()> {
         if !outcome.errors.is_empty() {
             problems.push(format!("{} error(s)", outcome.errors.len()));
         }
-        bail!("stubs are not in sync with reference/: {}", problems.join(", "));
+        bail!(
+            "stubs are not in sync with reference/: {}",
+            problems.join(", ")
+        );
     }
-    println!(
-        "stubs: {} file(s) {}, {} up to date",
-        outcome.changed.len(),
-        if check { "differ" } else { "written" },
-        outcome.unchanged
-    );
+    if check {
+        println!(
+            "stubs: all {} student file(s) match reference/",
+            outcome.unchanged
+        );
+    } else {
+        println!(
+            "stubs: wrote {} file(s), {} already up to date",
+            outcome.changed.len(),
+            outcome.unchanged
+        );
+    }
     Ok(())
 }
 
@@ -299,11 +446,12 @@ mod tests {
     const IDS: &[&str] = &["dda", "wu"];
 
     fn stub(source: &str) -> String {
-        generate(source, "ref.rs", IDS).unwrap_or_else(|errors| panic!("{errors:#?}"))
+        generate(source, "ref.rs", IDS, RUSTFMT_MAX_WIDTH)
+            .unwrap_or_else(|errors| panic!("{errors:#?}"))
     }
 
     fn errors(source: &str) -> Vec<String> {
-        generate(source, "ref.rs", IDS).expect_err("should be rejected")
+        generate(source, "ref.rs", IDS, RUSTFMT_MAX_WIDTH).expect_err("should be rejected")
     }
 
     #[test]
@@ -343,25 +491,71 @@ pub fn f() {
 fn helper() {}
 // END SOLUTION
 ";
-        assert_eq!(stub(source), "pub fn f() {\n        todo!(\"wu: use Wu's algorithm\")\n}\n");
+        assert_eq!(
+            stub(source),
+            "pub fn f() {\n        todo!(\"wu: use Wu's algorithm\")\n}\n"
+        );
+    }
+
+    #[test]
+    fn removed_helpers_leave_no_double_or_trailing_blank_lines() {
+        let source = "//! Doc.\n\n// BEGIN SOLUTION\nuse std::f32::consts::PI;\n// END SOLUTION\n\n/// F.\npub fn f() {}\n\n// BEGIN SOLUTION\nfn helper() {}\n// END SOLUTION\n";
+        assert_eq!(stub(source), "//! Doc.\n\n/// F.\npub fn f() {}\n");
+        let leading = "// BEGIN SOLUTION\nuse a::b;\n// END SOLUTION\n\nfn g() {}\n";
+        assert_eq!(stub(leading), "fn g() {}\n");
+        let between =
+            "fn a() {}\n\n// BEGIN SOLUTION\nfn helper() {}\n// END SOLUTION\n\nfn b() {}\n";
+        assert_eq!(stub(between), "fn a() {}\n\nfn b() {}\n");
+    }
+
+    #[test]
+    fn long_todo_is_split_as_rustfmt_splits_it() {
+        let fits = format!(
+            "    // BEGIN SOLUTION dda: {}\n    x\n    // END SOLUTION\n",
+            "a".repeat(82)
+        );
+        assert_eq!(
+            stub(&fits),
+            format!("    todo!(\"dda: {}\")\n", "a".repeat(82))
+        );
+        let long = format!(
+            "    // BEGIN SOLUTION dda: {}\n    x\n    // END SOLUTION\n",
+            "a".repeat(83)
+        );
+        assert_eq!(
+            stub(&long),
+            format!("    todo!(\n        \"dda: {}\"\n    )\n", "a".repeat(83))
+        );
+        assert_eq!(display_width("a中b"), 4);
     }
 
     #[test]
     fn instruction_is_escaped_for_a_format_string_literal() {
         let source = "  // BEGIN SOLUTION dda: say \"hi\" \\ fill {x} \n  x\n  // END SOLUTION\n";
-        assert_eq!(stub(source), "  todo!(\"dda: say \\\"hi\\\" \\\\ fill {{x}}\")\n");
+        assert_eq!(
+            stub(source),
+            "  todo!(\"dda: say \\\"hi\\\" \\\\ fill {{x}}\")\n"
+        );
     }
 
     #[test]
     fn text_outside_markers_and_crlf_line_ends_are_kept() {
-        let source = "//! Doc.\r\nfn f() {\r\n\t// BEGIN SOLUTION dda: x\r\n\t1\r\n\t// END SOLUTION\r\n}";
-        assert_eq!(stub(source), "//! Doc.\r\nfn f() {\r\n\ttodo!(\"dda: x\")\r\n}");
-        assert_eq!(stub("no markers\n// BEGIN SOLUTIONS are not markers\n"), "no markers\n// BEGIN SOLUTIONS are not markers\n");
+        let source =
+            "//! Doc.\r\nfn f() {\r\n\t// BEGIN SOLUTION dda: x\r\n\t1\r\n\t// END SOLUTION\r\n}";
+        assert_eq!(
+            stub(source),
+            "//! Doc.\r\nfn f() {\r\n\ttodo!(\"dda: x\")\r\n}"
+        );
+        assert_eq!(
+            stub("no markers\n// BEGIN SOLUTIONS are not markers\n"),
+            "no markers\n// BEGIN SOLUTIONS are not markers\n"
+        );
     }
 
     #[test]
     fn nested_begin_is_an_error_with_its_line() {
-        let errors = errors("// BEGIN SOLUTION dda: a\n// BEGIN SOLUTION dda: b\n// END SOLUTION\n");
+        let errors =
+            errors("// BEGIN SOLUTION dda: a\n// BEGIN SOLUTION dda: b\n// END SOLUTION\n");
         assert_eq!(errors.len(), 1, "{errors:?}");
         assert!(errors[0].starts_with("ref.rs:2: nested"), "{errors:?}");
         assert!(errors[0].contains("line 1"), "{errors:?}");
@@ -370,13 +564,19 @@ fn helper() {}
     #[test]
     fn end_without_begin_is_an_error() {
         let errors = errors("fn f() {}\n    // END SOLUTION\n");
-        assert!(errors[0].starts_with("ref.rs:2: `// END SOLUTION` without"), "{errors:?}");
+        assert!(
+            errors[0].starts_with("ref.rs:2: `// END SOLUTION` without"),
+            "{errors:?}"
+        );
     }
 
     #[test]
     fn begin_without_end_is_an_error() {
         let errors = errors("\n\n// BEGIN SOLUTION dda: a\nx\n");
-        assert!(errors[0].starts_with("ref.rs:3: `// BEGIN SOLUTION` without"), "{errors:?}");
+        assert!(
+            errors[0].starts_with("ref.rs:3: `// BEGIN SOLUTION` without"),
+            "{errors:?}"
+        );
     }
 
     #[test]
@@ -385,9 +585,15 @@ fn helper() {}
             "// BEGIN SOLUTION bresenham: a\n// END SOLUTION\n// BEGIN SOLUTION dda\n// END SOLUTION\n// BEGIN SOLUTION wu:\n// END SOLUTION\n",
         );
         assert_eq!(errors.len(), 3, "{errors:?}");
-        assert!(errors[0].starts_with("ref.rs:1: task `bresenham` is not a task"), "{errors:?}");
+        assert!(
+            errors[0].starts_with("ref.rs:1: task `bresenham` is not a task"),
+            "{errors:?}"
+        );
         assert!(errors[0].contains("dda, wu"), "{errors:?}");
         assert!(errors[1].starts_with("ref.rs:3: expected"), "{errors:?}");
-        assert!(errors[2].starts_with("ref.rs:5: the instruction"), "{errors:?}");
+        assert!(
+            errors[2].starts_with("ref.rs:5: the instruction"),
+            "{errors:?}"
+        );
     }
 }

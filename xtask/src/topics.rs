@@ -100,14 +100,20 @@ impl TaskSheet {
             front.push_str(line);
             front.push('\n');
         }
-        ensure!(closed, "the front matter has no closing `{FRONT_MATTER_FENCE}` line");
+        ensure!(
+            closed,
+            "the front matter has no closing `{FRONT_MATTER_FENCE}` line"
+        );
         let sheet: TaskSheet = toml::from_str(&front).context("invalid front matter")?;
         sheet.validate()?;
         Ok(sheet)
     }
 
     fn validate(&self) -> Result<()> {
-        ensure!(!self.tasks.is_empty(), "the front matter lists no [[tasks]]");
+        ensure!(
+            !self.tasks.is_empty(),
+            "the front matter lists no [[tasks]]"
+        );
         ensure!(
             self.time_limit_s.is_finite() && self.time_limit_s > 0.0,
             "time_limit_s must be a positive number of seconds"
@@ -123,7 +129,11 @@ impl TaskSheet {
                 "task id `{}` must be a non-empty test file name (letters, digits, `_`, `-`)",
                 task.id
             );
-            ensure!(seen.insert(task.id.as_str()), "task id `{}` is listed twice", task.id);
+            ensure!(
+                seen.insert(task.id.as_str()),
+                "task id `{}` is listed twice",
+                task.id
+            );
             ensure!(
                 task.points.is_finite() && task.points >= 0.0,
                 "task `{}` has invalid points {}",
@@ -132,12 +142,6 @@ impl TaskSheet {
             );
         }
         Ok(())
-    }
-
-    /// The task with this id.
-    #[must_use]
-    pub fn task(&self, id: &str) -> Option<&Task> {
-        self.tasks.iter().find(|task| task.id == id)
     }
 
     /// Task ids, comma separated, for error messages.
@@ -159,15 +163,27 @@ impl Topic {
         let manifest_path = dir.join("Cargo.toml");
         let manifest = fs::read_to_string(&manifest_path)
             .with_context(|| format!("cannot read {}", manifest_path.display()))?;
-        let package = package_name(&manifest)
-            .with_context(|| format!("cannot read the package name in {}", manifest_path.display()))?;
+        let package = package_name(&manifest).with_context(|| {
+            format!(
+                "cannot read the package name in {}",
+                manifest_path.display()
+            )
+        })?;
         let readme_path = dir.join("README.md");
         let readme = fs::read_to_string(&readme_path).with_context(|| {
-            format!("cannot read the task sheet {} (it lists the tasks and points)", readme_path.display())
+            format!(
+                "cannot read the task sheet {} (it lists the tasks and points)",
+                readme_path.display()
+            )
         })?;
         let sheet = TaskSheet::parse(&readme)
             .with_context(|| format!("in the task sheet {}", readme_path.display()))?;
-        Ok(Self { name, package, dir: dir.to_path_buf(), sheet })
+        Ok(Self {
+            name,
+            package,
+            dir: dir.to_path_buf(),
+            sheet,
+        })
     }
 
     /// The folder name without its number: `lines` for `01-lines`.
@@ -214,7 +230,9 @@ pub fn discover(root: &Path) -> Result<Vec<Topic>> {
         .with_context(|| format!("cannot list the topics in {}", exercises.display()))?;
     let mut dirs = Vec::new();
     for entry in entries {
-        let path = entry.with_context(|| format!("cannot list {}", exercises.display()))?.path();
+        let path = entry
+            .with_context(|| format!("cannot list {}", exercises.display()))?
+            .path();
         if path.join("Cargo.toml").is_file() {
             dirs.push(path);
         }
@@ -232,16 +250,25 @@ pub fn select(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
     }
     for name in wanted {
         if !all.iter().any(|topic| topic.matches(name)) {
-            let known: Vec<String> =
-                all.iter().map(|t| format!("{} ({})", t.name, t.package)).collect();
+            let known: Vec<String> = all
+                .iter()
+                .map(|t| format!("{} ({})", t.name, t.package))
+                .collect();
             bail!(
                 "unknown topic `{name}`; the topics in {} are: {}",
                 root.join("exercises").display(),
-                if known.is_empty() { "none".to_owned() } else { known.join(", ") }
+                if known.is_empty() {
+                    "none".to_owned()
+                } else {
+                    known.join(", ")
+                }
             );
         }
     }
-    Ok(all.into_iter().filter(|topic| wanted.iter().any(|name| topic.matches(name))).collect())
+    Ok(all
+        .into_iter()
+        .filter(|topic| wanted.iter().any(|name| topic.matches(name)))
+        .collect())
 }
 
 #[cfg(test)]
@@ -256,21 +283,26 @@ mod tests {
         assert_eq!(sheet.time_limit_s, 3.0);
         assert_eq!(sheet.memory_limit_mib, DEFAULT_MEMORY_LIMIT_MIB);
         assert_eq!(sheet.task_ids(), "dda, wu");
-        assert_eq!(sheet.task("dda").unwrap().points, 3.0);
-        assert!(sheet.task("wu").unwrap().bonus);
+        assert_eq!(sheet.tasks[0].points, 3.0);
+        assert!(!sheet.tasks[0].bonus);
+        assert_eq!(sheet.tasks[1].points, 1.5);
+        assert!(sheet.tasks[1].bonus);
     }
 
     #[test]
     fn time_limit_defaults() {
         let sheet =
-            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n+++\n").unwrap();
+            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n+++\n")
+                .unwrap();
         assert_eq!(sheet.time_limit_s, DEFAULT_TIME_LIMIT_S);
     }
 
     #[test]
     fn bad_front_matter_is_an_error() {
         assert!(TaskSheet::parse("# no front matter\n").is_err());
-        assert!(TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n").is_err());
+        assert!(
+            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n").is_err()
+        );
         let twice = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n[[tasks]]\nid = \"a\"\ntitle = \"B\"\npoints = 1\n+++\n";
         assert!(format!("{:#}", TaskSheet::parse(twice).unwrap_err()).contains("twice"));
         let typo = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoint = 1\n+++\n";

@@ -6,7 +6,7 @@
 //!
 //! ```text
 //! running 1 test
-//! test dda::steep ... 
+//! test dda::steep ...
 //! thread 'dda::steep' (4568) panicked at tests/dda.rs:2:23:
 //! assertion `left == right` failed          <- the panic message: the lines
 //!   left: 1                                    after the header, up to `note:`
@@ -41,8 +41,6 @@ const PROPTEST_FAILED: &str = "Test failed: ";
 const PROPTEST_MINIMAL: &str = "minimal failing input: ";
 /// proptest's statistics after the minimal input.
 const PROPTEST_STATS: &str = "\tsuccesses: ";
-/// The std panic hook's hint after the first panic message.
-const BACKTRACE_NOTE: &str = "note: run with `RUST_BACKTRACE=1`";
 
 /// How the test process ended.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -72,6 +70,64 @@ pub struct Verdict {
     pub minimal_input: Option<String>,
     /// The ASCII raster diff (between the marker lines, markers excluded).
     pub raster_diff: Option<String>,
+    /// insta's diff of a mismatching snapshot (`-old snapshot`, `+new results`).
+    pub snapshot_diff: Option<String>,
+}
+
+/// insta's panic message for a snapshot that does not match.
+const INSTA_FAILED: &str = "snapshot assertion for '";
+
+/// What insta's "Snapshot Summary" box says about a mismatch.
+#[derive(Debug, PartialEq)]
+struct InstaSummary {
+    /// `Snapshot file: ...`: the stored `.snap`.
+    file: String,
+    /// `Source: file:line` of the assertion.
+    source: Option<String>,
+    /// The lines between `+new results` and the box's bottom rule.
+    diff: Option<String>,
+}
+
+/// The last snapshot summary insta printed:
+///
+/// ```text
+/// ━━━━━━━━━━━━━━ Snapshot Summary ━━━━━━━━━━━━━━
+/// Snapshot file: tests/snapshots/midpoint__octants.snap
+/// Source: tests/midpoint.rs:73
+/// ...
+/// -old snapshot
+/// +new results
+/// ────────────┬─────────────────────────────────
+///     2       │- 11 |..............##.
+///           2 │+ 11 |..............#..
+/// ────────────┴─────────────────────────────────
+/// ```
+fn insta_summary(output: &str) -> Option<InstaSummary> {
+    let start = output.rfind("Snapshot Summary")?;
+    let summary = &output[start..];
+    let field = |name: &str| {
+        summary
+            .lines()
+            .find_map(|line| line.strip_prefix(name))
+            .map(|value| value.trim().to_owned())
+    };
+    let file = field("Snapshot file: ")?;
+    let mut diff = Vec::new();
+    let mut in_diff = false;
+    for line in summary.lines() {
+        if line.starts_with("+new results") {
+            in_diff = true;
+        } else if in_diff && line.contains('┴') {
+            break;
+        } else if in_diff && !line.contains('┬') {
+            diff.push(line);
+        }
+    }
+    Some(InstaSummary {
+        file,
+        source: field("Source: "),
+        diff: (!diff.is_empty()).then(|| diff.join("\n")),
+    })
 }
 
 /// A panic as the default hook prints it.
@@ -86,10 +142,16 @@ struct Panic {
 #[must_use]
 pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
     if exit.code == Some(0) && output.contains(PASSED_SUMMARY) {
-        return Verdict { passed: true, ..Verdict::default() };
+        return Verdict {
+            passed: true,
+            ..Verdict::default()
+        };
     }
     if exit.code == Some(0) && output.contains(IGNORED_SUMMARY) {
-        return Verdict { ignored: true, ..Verdict::default() };
+        return Verdict {
+            ignored: true,
+            ..Verdict::default()
+        };
     }
     let panic = last_panic(output);
     let mut verdict = Verdict {
@@ -110,13 +172,31 @@ pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
                     format!("not implemented yet: {rest}")
                 }
             }
+            None if parts.text.is_empty() => "panicked (with an empty message)".to_owned(),
             None => format!("panicked: {}", parts.text),
         });
+        if let Some(name) = panic.message.strip_prefix(INSTA_FAILED)
+            && let Some(snapshot) = insta_summary(output)
+        {
+            let name = name.split('\'').next().unwrap_or_default();
+            panic_reason = Some(format!(
+                "snapshot '{name}' does not match {} (yours is in the .snap.new beside it)",
+                snapshot.file
+            ));
+            verdict.panic_location = snapshot.source.or(verdict.panic_location);
+            verdict.snapshot_diff = snapshot.diff;
+        }
     }
     let reason = if exit.timed_out {
-        format!("timed out after {} s (infinite loop?)", seconds(time_limit_s))
+        format!(
+            "timed out after {} s (infinite loop?)",
+            seconds(time_limit_s)
+        )
     } else if let Some(limit) = exit.output_limit {
-        format!("printed more than {} MiB of output (endless printing?)", limit >> 20)
+        format!(
+            "printed more than {} MiB of output (endless printing?)",
+            limit >> 20
+        )
     } else if output.contains("has overflowed its stack") {
         "stack overflow".to_owned()
     } else if output.contains("memory allocation of") {
@@ -151,7 +231,11 @@ pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
 
 /// `20` for 20.0, `2.5` for 2.5.
 fn seconds(s: f64) -> String {
-    if s.fract() == 0.0 { format!("{s:.0}") } else { format!("{s}") }
+    if s.fract() == 0.0 {
+        format!("{s:.0}")
+    } else {
+        format!("{s}")
+    }
 }
 
 /// The size in `memory allocation of N bytes failed`.
@@ -170,7 +254,10 @@ fn panic_header(line: &str) -> Option<(usize, String)> {
         let quote = rest[8..].find('\'')? + 8;
         let after = &rest[quote + 1..];
         let offset = after.find(" panicked at ")?;
-        after[..offset].trim().starts_with('(').then_some(quote + offset)
+        after[..offset]
+            .trim()
+            .starts_with('(')
+            .then_some(quote + offset)
     })?;
     let location = rest[at..].split_once("panicked at ")?.1.trim_end();
     let location = location.strip_suffix(':').unwrap_or(location);
@@ -189,7 +276,10 @@ fn last_panic(output: &str) -> Option<Panic> {
     if let Some(rest) = location.strip_prefix('\'')
         && let Some((message, location)) = rest.rsplit_once("', ")
     {
-        return Some(Panic { location: location.to_owned(), message: message.to_owned() });
+        return Some(Panic {
+            location: location.to_owned(),
+            message: message.to_owned(),
+        });
     }
     let mut message = Vec::new();
     for line in &lines[index + 1..] {
@@ -207,7 +297,10 @@ fn last_panic(output: &str) -> Option<Panic> {
     while message.last().is_some_and(|line| line.trim().is_empty()) {
         message.pop();
     }
-    Some(Panic { location, message: message.join("\n") })
+    Some(Panic {
+        location,
+        message: message.join("\n"),
+    })
 }
 
 /// A panic message taken apart.
@@ -231,7 +324,9 @@ fn split_message(message: &str) -> MessageParts {
         };
         why = before.strip_suffix('.').unwrap_or(before);
         parts.minimal_input = input.map(|input| {
-            let input = input.find(&format!("\n{PROPTEST_STATS}")).map_or(input, |at| &input[..at]);
+            let input = input
+                .find(&format!("\n{PROPTEST_STATS}"))
+                .map_or(input, |at| &input[..at]);
             input.trim().to_owned()
         });
     }
@@ -287,15 +382,23 @@ mod tests {
     use super::*;
 
     fn exit(code: i32) -> Exit {
-        Exit { code: Some(code), ..Exit::default() }
+        Exit {
+            code: Some(code),
+            ..Exit::default()
+        }
     }
 
     fn signal(signal: i32) -> Exit {
-        Exit { signal: Some(signal), ..Exit::default() }
+        Exit {
+            signal: Some(signal),
+            ..Exit::default()
+        }
     }
 
     fn reason(output: &str, exit: &Exit) -> String {
-        judge(output, exit, 20.0).reason.expect("a failure has a reason")
+        judge(output, exit, 20.0)
+            .reason
+            .expect("a failure has a reason")
     }
 
     const PASSED: &str = "\nrunning 1 test\ntest a ... ok\n\ntest result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 3 filtered out; finished in 0.00s\n\n";
@@ -324,7 +427,10 @@ mod tests {
     #[test]
     fn todo_is_not_implemented_yet() {
         let output = "test todo ... \nthread 'todo' panicked at src/dda.rs:3:22:\nnot yet implemented: dda: draw {x}\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\nFAILED\n";
-        assert_eq!(reason(output, &exit(101)), "not implemented yet: dda: draw {x}");
+        assert_eq!(
+            reason(output, &exit(101)),
+            "not implemented yet: dda: draw {x}"
+        );
         let bare = "thread 'todo' panicked at src/dda.rs:3:22:\nnot yet implemented\nFAILED\n";
         assert_eq!(reason(bare, &exit(101)), "not implemented yet");
     }
@@ -345,7 +451,10 @@ mod tests {
             "thread 't' panicked at tests/dda.rs:9:5:\nsteep line: the pixels differ\n{RASTER_DIFF_BEGIN}\nlegend\n2 |.+\n1 |#-\n{RASTER_DIFF_END}\nnote: run with\nFAILED\n"
         );
         let verdict = judge(&output, &exit(101), 20.0);
-        assert_eq!(verdict.reason.as_deref(), Some("panicked: steep line: the pixels differ"));
+        assert_eq!(
+            verdict.reason.as_deref(),
+            Some("panicked: steep line: the pixels differ")
+        );
         assert_eq!(verdict.raster_diff.as_deref(), Some("legend\n2 |.+\n1 |#-"));
         assert_eq!(verdict.minimal_input, None);
     }
@@ -357,39 +466,114 @@ mod tests {
             "test p ... \nthread 'p' panicked at tests/dda.rs:9:5:\nfirst {RASTER_DIFF_BEGIN}\n\nthread 'p' panicked at tests/dda.rs:9:5:\nstep\n\nthread 'p' panicked at tests/dda.rs:20:1:\nTest failed: covers both ends\n{RASTER_DIFF_BEGIN}\n1 |#-\n{RASTER_DIFF_END}.\nminimal failing input: line = Line {{\n    a: 1.0,\n}}\n\tsuccesses: 3\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n"
         );
         let verdict = judge(&output, &exit(101), 20.0);
-        assert_eq!(verdict.reason.as_deref(), Some("panicked: covers both ends"));
-        assert_eq!(verdict.minimal_input.as_deref(), Some("line = Line {\n    a: 1.0,\n}"));
+        assert_eq!(
+            verdict.reason.as_deref(),
+            Some("panicked: covers both ends")
+        );
+        assert_eq!(
+            verdict.minimal_input.as_deref(),
+            Some("line = Line {\n    a: 1.0,\n}")
+        );
         assert_eq!(verdict.raster_diff.as_deref(), Some("1 |#-"));
         assert_eq!(verdict.panic_location.as_deref(), Some("tests/dda.rs:20:1"));
 
         let todo = "thread 'p' panicked at tests/dda.rs:20:1:\nTest failed: not yet implemented: dda: draw it.\nminimal failing input: a = 0.0, b = 1.0\n\tsuccesses: 0\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n";
         let verdict = judge(todo, &exit(101), 20.0);
-        assert_eq!(verdict.reason.as_deref(), Some("not implemented yet: dda: draw it"));
+        assert_eq!(
+            verdict.reason.as_deref(),
+            Some("not implemented yet: dda: draw it")
+        );
         assert_eq!(verdict.minimal_input.as_deref(), Some("a = 0.0, b = 1.0"));
     }
 
     #[test]
+    fn snapshot_mismatch_gives_insta_diff_and_assertion_line() {
+        let output = "running 1 test
+test octants ... ━━━━━━━━━━━━━━━━ Snapshot Summary ━━━━━━━━━━━━━━━━
+Snapshot file: exercises/01-lines/tests/snapshots/midpoint__octants.snap
+Snapshot: octants
+Source: exercises/01-lines/tests/midpoint.rs:73
+────────────────────────────────────────
+Expression: sheet
+────────────────────────────────────────
+-old snapshot
++new results
+────────────┬───────────────────────────
+    2       │- 11 |..##.
+          2 │+ 11 |..#..
+    3     3 │ 10 |.##..
+────────────┴───────────────────────────
+stored new snapshot /w/exercises/01-lines/tests/snapshots/midpoint__octants.snap.new
+
+thread 'octants' (32248) panicked at /home/u/.cargo/registry/src/x/insta-1.49.0/src/runtime.rs:734:13:
+snapshot assertion for 'octants' failed in line 73
+note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace
+FAILED
+";
+        let verdict = judge(output, &exit(101), 20.0);
+        assert_eq!(
+            verdict.reason.as_deref(),
+            Some(
+                "snapshot 'octants' does not match exercises/01-lines/tests/snapshots/midpoint__octants.snap (yours is in the .snap.new beside it)"
+            )
+        );
+        assert_eq!(
+            verdict.panic_location.as_deref(),
+            Some("exercises/01-lines/tests/midpoint.rs:73")
+        );
+        assert_eq!(
+            verdict.snapshot_diff.as_deref(),
+            Some("    2       │- 11 |..##.\n          2 │+ 11 |..#..\n    3     3 │ 10 |.##..")
+        );
+    }
+
+    #[test]
     fn crashes_have_their_own_reasons() {
-        let timed_out = Exit { timed_out: true, signal: Some(9), ..Exit::default() };
-        assert_eq!(reason("test l ... ", &timed_out), "timed out after 20 s (infinite loop?)");
-        assert_eq!(judge("", &timed_out, 2.5).reason.as_deref(), Some("timed out after 2.5 s (infinite loop?)"));
-        let flood = Exit { output_limit: Some(64 << 20), signal: Some(9), ..Exit::default() };
+        let timed_out = Exit {
+            timed_out: true,
+            signal: Some(9),
+            ..Exit::default()
+        };
+        assert_eq!(
+            reason("test l ... ", &timed_out),
+            "timed out after 20 s (infinite loop?)"
+        );
+        assert_eq!(
+            judge("", &timed_out, 2.5).reason.as_deref(),
+            Some("timed out after 2.5 s (infinite loop?)")
+        );
+        let flood = Exit {
+            output_limit: Some(64 << 20),
+            signal: Some(9),
+            ..Exit::default()
+        };
         assert!(reason("aaaa", &flood).starts_with("printed more than 64 MiB"));
         assert_eq!(
-            reason("test o ... \nthread 'o' (1) has overflowed its stack\nfatal runtime error: stack overflow, aborting\n", &signal(6)),
+            reason(
+                "test o ... \nthread 'o' (1) has overflowed its stack\nfatal runtime error: stack overflow, aborting\n",
+                &signal(6)
+            ),
             "stack overflow"
         );
         assert_eq!(
-            reason("test a ... memory allocation of 1099511627776 bytes failed\nnote: run with\n", &signal(6)),
+            reason(
+                "test a ... memory allocation of 1099511627776 bytes failed\nnote: run with\n",
+                &signal(6)
+            ),
             "out of memory (an allocation of 1099511627776 bytes failed)"
         );
         assert_eq!(reason("test a ... ", &signal(6)), "aborted (signal 6)");
-        assert_eq!(reason("test a ... ", &signal(11)), "crashed (signal 11, segmentation fault)");
+        assert_eq!(
+            reason("test a ... ", &signal(11)),
+            "crashed (signal 11, segmentation fault)"
+        );
         assert_eq!(
             reason("\nrunning 1 test\ntest exits ... ", &exit(3)),
             "the test process exited with code 3 before the test finished (process::exit in student code?)"
         );
-        assert!(reason("\nrunning 1 test\ntest exits ... ", &exit(0)).contains("exited with code 0"));
+        assert!(
+            reason("\nrunning 1 test\ntest exits ... ", &exit(0)).contains("exited with code 0")
+        );
     }
 
     #[test]
@@ -397,6 +581,9 @@ mod tests {
         let returned = "test err ... Error: \"bad\"\nFAILED\n\nfailures:\n\ntest result: FAILED. 0 passed; 1 failed\n";
         assert_eq!(reason(returned, &exit(101)), "returned an error: \"bad\"");
         let should_panic = "test sp - should panic ... FAILED\n\nfailures:\n\n---- sp stdout ----\nnote: test did not panic as expected at tests/t.rs:5:28\n\nfailures:\n    sp\n\ntest result: FAILED. 0 passed; 1 failed\n";
-        assert_eq!(reason(should_panic, &exit(101)), "failed: test did not panic as expected at tests/t.rs:5:28");
+        assert_eq!(
+            reason(should_panic, &exit(101)),
+            "failed: test did not panic as expected at tests/t.rs:5:28"
+        );
     }
 }

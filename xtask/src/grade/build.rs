@@ -1,0 +1,258 @@
+//! Building a topic's test executables with cargo.
+//!
+//! `cargo test -p <package> --no-run --message-format=json-render-diagnostics`
+//! prints one JSON message per line on stdout (the executables are in the
+//! `compiler-artifact` ones) and renders the compiler's diagnostics on
+//! stderr, where a failed build's errors are read from.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+use serde::Deserialize;
+
+use crate::cargo::{self, cargo};
+use crate::topics::Topic;
+
+/// At most this many compiler error blocks are shown for a topic.
+const MAX_ERROR_BLOCKS: usize = 8;
+/// At most this many lines of compiler errors are shown for a topic.
+const MAX_ERROR_LINES: usize = 120;
+
+/// An integration-test executable: `tests/<name>.rs`.
+#[derive(Debug, Clone)]
+pub struct TestBinary {
+    /// The test target's name, i.e. the file name without `.rs`.
+    pub name: String,
+    /// Where cargo put it.
+    pub executable: PathBuf,
+}
+
+/// What building a topic gave.
+#[derive(Debug)]
+pub enum Build {
+    /// The test executables, sorted by name.
+    Built(Vec<TestBinary>),
+    /// The readable compiler errors.
+    Failed(String),
+}
+
+#[derive(Deserialize)]
+struct Message {
+    reason: String,
+    #[serde(default)]
+    target: Option<Target>,
+    #[serde(default)]
+    profile: Option<Profile>,
+    #[serde(default)]
+    executable: Option<PathBuf>,
+}
+
+#[derive(Deserialize)]
+struct Target {
+    name: String,
+    kind: Vec<String>,
+}
+
+#[derive(Deserialize)]
+struct Profile {
+    test: bool,
+}
+
+/// Builds `topic`'s tests in the workspace at `root`, with `--features
+/// reference` when `reference` is set.
+pub fn build(
+    root: &Path,
+    topic: &Topic,
+    reference: bool,
+    target_dir: Option<&Path>,
+) -> Result<Build> {
+    let mut command = cargo();
+    command
+        .current_dir(root)
+        .args([
+            "test",
+            "--package",
+            &topic.package,
+            "--no-run",
+            "--color",
+            "never",
+        ])
+        .arg("--message-format=json-render-diagnostics");
+    if reference {
+        command.args(["--features", "reference"]);
+    }
+    if let Some(dir) = target_dir {
+        command.arg("--target-dir").arg(dir);
+    }
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    if !output.status.success() {
+        return Ok(Build::Failed(compiler_errors(&stderr)));
+    }
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    Ok(Build::Built(test_binaries(&stdout)))
+}
+
+/// The integration-test executables among cargo's JSON messages.
+fn test_binaries(messages: &str) -> Vec<TestBinary> {
+    let mut binaries: Vec<TestBinary> = messages
+        .lines()
+        .filter_map(|line| serde_json::from_str::<Message>(line).ok())
+        .filter(|message| message.reason == "compiler-artifact")
+        .filter_map(|message| {
+            let target = message.target?;
+            let is_test = target.kind.iter().any(|kind| kind == "test")
+                && message.profile.is_some_and(|profile| profile.test);
+            is_test.then_some(TestBinary {
+                name: target.name,
+                executable: message.executable?,
+            })
+        })
+        .collect();
+    binaries.sort_by(|a, b| a.name.cmp(&b.name));
+    binaries.dedup_by(|a, b| a.name == b.name);
+    binaries
+}
+
+/// The `error` blocks of cargo's rendered diagnostics, without warnings and
+/// progress lines; the tail of stderr when there are none (cargo's own
+/// errors, e.g. a broken `Cargo.toml`).
+fn compiler_errors(stderr: &str) -> String {
+    let mut blocks: Vec<Vec<&str>> = Vec::new();
+    let mut summaries = Vec::new();
+    // Inside an error block: its lines are kept until a blank line ends it.
+    let mut in_error = false;
+    let mut after_blank = false;
+    for line in stderr.lines() {
+        if line.trim().is_empty() {
+            after_blank = true;
+            continue;
+        }
+        let blank = std::mem::take(&mut after_blank);
+        if in_error && blank && line == "Caused by:" {
+            // cargo's own errors explain themselves after a blank line.
+            blocks.last_mut().expect("in a block").extend(["", line]);
+        } else if line.starts_with("error: could not compile") {
+            summaries.push(line);
+            in_error = false;
+        } else if line.starts_with("error") {
+            blocks.push(vec![line]);
+            in_error = true;
+        } else if blank || line.starts_with("warning") || is_cargo_status(line) {
+            in_error = false;
+        } else if in_error {
+            blocks.last_mut().expect("in a block").push(line);
+        }
+    }
+    if blocks.is_empty() {
+        if !summaries.is_empty() {
+            return summaries.join("\n");
+        }
+        let lines: Vec<&str> = stderr.lines().collect();
+        return lines[lines.len().saturating_sub(30)..]
+            .join("\n")
+            .trim()
+            .to_owned();
+    }
+    let total = blocks.len();
+    let mut text = String::new();
+    let mut lines = 0;
+    let mut shown = 0;
+    for block in &blocks {
+        if shown == MAX_ERROR_BLOCKS || (shown > 0 && lines + block.len() > MAX_ERROR_LINES) {
+            break;
+        }
+        text.push_str(&block.join("\n"));
+        text.push_str("\n\n");
+        lines += block.len() + 1;
+        shown += 1;
+    }
+    if shown < total {
+        text.push_str(&format!("... and {} more error(s)\n", total - shown));
+    }
+    for summary in summaries {
+        text.push_str(summary);
+        text.push('\n');
+    }
+    text.trim_end().to_owned()
+}
+
+/// cargo's progress lines: a verb right-aligned in 12 columns
+/// (`   Compiling lines v0.1.0`).
+fn is_cargo_status(line: &str) -> bool {
+    let (Some(verb), Some(b' ')) = (line.get(..12), line.as_bytes().get(12)) else {
+        return false;
+    };
+    let verb = verb.trim_start();
+    verb.starts_with(|c: char| c.is_ascii_uppercase())
+        && verb.chars().all(|c| c.is_ascii_alphabetic())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn test_executables_are_the_test_targets_built_for_testing() {
+        let messages = r#"{"reason":"compiler-artifact","target":{"kind":["lib"],"name":"lines"},"profile":{"test":false},"executable":null}
+{"reason":"compiler-artifact","target":{"kind":["lib"],"name":"lines"},"profile":{"test":true},"executable":"/t/lines-1"}
+{"reason":"compiler-artifact","target":{"kind":["test"],"name":"wu"},"profile":{"test":true},"executable":"/t/wu-2"}
+{"reason":"compiler-artifact","target":{"kind":["test"],"name":"dda"},"profile":{"test":true},"executable":"/t/dda-3"}
+{"reason":"build-script-executed"}
+not json
+{"reason":"build-finished","success":true}"#;
+        let binaries = test_binaries(messages);
+        let names: Vec<&str> = binaries.iter().map(|b| b.name.as_str()).collect();
+        assert_eq!(names, ["dda", "wu"]);
+        assert_eq!(binaries[0].executable, Path::new("/t/dda-3"));
+    }
+
+    #[test]
+    fn compiler_errors_keep_error_blocks_only() {
+        let stderr = "   Compiling lines v0.1.0 (/w/exercises/01-lines)
+warning: unused variable: `a`
+ --> src/dda.rs:1:8
+  |
+1 | fn f(a: u32) {}
+  |      ^ help: prefix it
+
+error[E0308]: mismatched types
+ --> src/dda.rs:3:5
+  |
+3 |     1.0
+  |     ^^^ expected `u32`, found floating-point number
+  |
+help: change the type
+  |
+3 +     1
+  |
+
+For more information about this error, try `rustc --explain E0308`.
+warning: `lines` (lib) generated 1 warning
+error: could not compile `lines` (lib) due to 1 previous error; 1 warning emitted
+";
+        assert_eq!(
+            compiler_errors(stderr),
+            "error[E0308]: mismatched types
+ --> src/dda.rs:3:5
+  |
+3 |     1.0
+  |     ^^^ expected `u32`, found floating-point number
+  |
+help: change the type
+  |
+3 +     1
+  |
+
+error: could not compile `lines` (lib) due to 1 previous error; 1 warning emitted"
+        );
+        assert_eq!(
+            compiler_errors(
+                "error: failed to parse manifest at `/w/Cargo.toml`\n\nCaused by:\n  bad\n"
+            ),
+            "error: failed to parse manifest at `/w/Cargo.toml`\n\nCaused by:\n  bad"
+        );
+    }
+}

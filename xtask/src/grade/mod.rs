@@ -1,0 +1,556 @@
+//! `cargo xtask grade`: build each topic, run every test in its own process
+//! within limits, and turn the results into points.
+//!
+//! Tests map to tasks by name: `exercises/NN-topic/tests/<task id>.rs` is
+//! the test binary of that task, and a task scores
+//! `points × passed / tests`. The pipeline:
+//!
+//! ```text
+//! topics ──build──> test binaries ──--list──> tests ──run (--jobs at once)──> verdicts
+//!   │ compile error: all its tasks fail, other topics go on            │
+//!   └──────────────────────────────> Report ──> table, report.json, results.json, junit.xml
+//! ```
+
+mod build;
+mod export;
+mod outcome;
+mod report;
+mod run;
+mod table;
+
+use std::collections::HashMap;
+use std::ffi::OsString;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result, bail};
+use indicatif::{ProgressBar, ProgressStyle};
+
+pub use report::{Edition, Report, TaskStatus, TestStatus};
+
+use crate::topics::{self, Topic};
+use build::{Build, TestBinary};
+use outcome::Exit;
+use report::{TaskReport, TestReport, TopicReport};
+use run::{Finished, TestCommand};
+
+/// The excerpt of a failed test's output kept in the report.
+const OUTPUT_EXCERPT_CHARS: usize = 4000;
+
+/// What to grade and where to put the results.
+#[derive(Debug, Clone)]
+pub struct GradeOptions {
+    /// The checkout whose `exercises/` are graded (a workspace root).
+    pub root: PathBuf,
+    /// Topics by folder name, short name, package or number; empty: all.
+    pub topics: Vec<String>,
+    /// Grade the reference solutions (`--features reference`).
+    pub reference: bool,
+    /// Where the report files, logs and images go.
+    pub out: PathBuf,
+    /// Tests run at the same time.
+    pub jobs: usize,
+    /// cargo's `--target-dir`; `None`: cargo's default for the workspace.
+    pub target_dir: Option<PathBuf>,
+}
+
+impl GradeOptions {
+    /// Grades `root`'s exercises, writing into `root/target/grade`.
+    #[must_use]
+    pub fn new(root: PathBuf) -> Self {
+        let out = root.join("target").join("grade");
+        Self {
+            root,
+            topics: Vec::new(),
+            reference: false,
+            out,
+            jobs: default_jobs(),
+            target_dir: None,
+        }
+    }
+}
+
+/// One test per available CPU.
+#[must_use]
+pub fn default_jobs() -> usize {
+    std::thread::available_parallelism().map_or(1, usize::from)
+}
+
+/// Grades, writes `report.json`, `results.json` and `junit.xml` into
+/// `options.out`, and returns the report. Student code failing in any way
+/// is part of the report; `Err` means grading itself could not run.
+pub fn grade(options: &GradeOptions) -> Result<Report> {
+    let started = Instant::now();
+    let root = std::path::absolute(&options.root)
+        .with_context(|| format!("cannot find {}", options.root.display()))?;
+    let out = std::path::absolute(&options.out)
+        .with_context(|| format!("cannot find {}", options.out.display()))?;
+    let topics = topics::select(&root, &options.topics)?;
+    if topics.is_empty() {
+        bail!(
+            "there are no topics in {}",
+            root.join("exercises").display()
+        );
+    }
+    fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
+    let edition = if options.reference {
+        Edition::Reference
+    } else {
+        Edition::Student
+    };
+
+    // Build every topic first: cargo serialises builds anyway.
+    let mut plans = Vec::new();
+    for topic in &topics {
+        for stale in [
+            out.join("images").join(&topic.name),
+            out.join("logs").join(&topic.name),
+        ] {
+            if stale.exists() {
+                fs::remove_dir_all(&stale)
+                    .with_context(|| format!("cannot clear {}", stale.display()))?;
+            }
+        }
+        let spinner = spinner(format!("building {}", topic.name));
+        let build = build::build(
+            &root,
+            topic,
+            options.reference,
+            options.target_dir.as_deref(),
+        );
+        spinner.finish_and_clear();
+        plans.push(plan(&root, &out, topic, build?));
+    }
+
+    // Then run all tests of all topics in one pool.
+    let jobs: Vec<(usize, usize)> = plans
+        .iter()
+        .enumerate()
+        .flat_map(|(p, plan)| {
+            let runnable = plan
+                .tests
+                .iter()
+                .enumerate()
+                .filter(|(_, test)| test.command.is_some());
+            runnable.map(move |(t, _)| (p, t))
+        })
+        .collect();
+    let results = run_all(&plans, &jobs, options.jobs.max(1))?;
+
+    let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
+    for (&(p, t), result) in jobs.iter().zip(results) {
+        finished.insert((p, t), result);
+    }
+    let topics: Vec<TopicReport> = plans
+        .into_iter()
+        .enumerate()
+        .map(|(p, plan)| topic_report(&out, plan, |t| finished.remove(&(p, t))))
+        .collect();
+    let report = Report {
+        schema: report::SCHEMA,
+        root,
+        edition,
+        score: report::round2(topics.iter().map(|t| t.score).sum()),
+        max_score: report::round2(topics.iter().map(|t| t.max_score).sum()),
+        duration_s: report::round2(started.elapsed().as_secs_f64()),
+        complete: topics.iter().all(|topic| {
+            topic.compile_error.is_none()
+                && topic.errors.is_empty()
+                && topic
+                    .tasks
+                    .iter()
+                    .all(|task| task.status != TaskStatus::Error)
+        }),
+        topics,
+    };
+    export::write_all(&report, &out)?;
+    Ok(report)
+}
+
+/// `cargo xtask grade`: grade, print the table and the failures.
+pub fn run(options: &GradeOptions) -> Result<Report> {
+    let report = grade(options)?;
+    print!(
+        "{}",
+        table::render(&report, &options.out, table::Style::detect(), true)
+    );
+    Ok(report)
+}
+
+/// Prints the table of a report (for `cargo xtask test`), with each
+/// failing task's first failure when `details` is set.
+pub fn print_summary(report: &Report, out: &Path, details: bool) {
+    print!(
+        "{}",
+        table::render(report, out, table::Style::detect(), details)
+    );
+}
+
+/// A topic ready to run: its tests, or why there are none.
+struct Plan {
+    topic: Topic,
+    compile_error: Option<String>,
+    errors: Vec<String>,
+    /// Per task (sheet order): an error that keeps it from being graded.
+    task_errors: Vec<Option<String>>,
+    tests: Vec<PlannedTest>,
+}
+
+struct PlannedTest {
+    task: usize,
+    name: String,
+    /// `None` for ignored tests, which are not run.
+    command: Option<TestCommand>,
+    images_dir: PathBuf,
+}
+
+fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan {
+    let mut plan = Plan {
+        topic: topic.clone(),
+        compile_error: None,
+        errors: Vec::new(),
+        task_errors: vec![None; topic.sheet.tasks.len()],
+        tests: Vec::new(),
+    };
+    let binaries = match build {
+        Build::Built(binaries) => binaries,
+        Build::Failed(errors) => {
+            plan.compile_error = Some(errors);
+            return plan;
+        }
+    };
+    let mut has_binary = vec![false; topic.sheet.tasks.len()];
+    for TestBinary { name, executable } in binaries {
+        let Some(task) = topic.sheet.tasks.iter().position(|task| task.id == name) else {
+            plan.errors.push(format!(
+                "test binary `tests/{name}.rs` is not a task of {} (the task sheet lists: {}); its tests were not run",
+                topic.name,
+                topic.sheet.task_ids()
+            ));
+            continue;
+        };
+        has_binary[task] = true;
+        let listed = run::list_tests(&executable, &topic.dir, false)
+            .and_then(|all| Ok((all, run::list_tests(&executable, &topic.dir, true)?)));
+        let (all, ignored) = match listed {
+            Ok(lists) => lists,
+            Err(error) => {
+                plan.task_errors[task] = Some(format!(
+                    "cannot list the tests of tests/{name}.rs: {error:#}"
+                ));
+                continue;
+            }
+        };
+        if all.is_empty() {
+            plan.task_errors[task] = Some(format!("tests/{name}.rs has no tests"));
+        }
+        for test in all {
+            let relative = test_path(&name, &test);
+            let images_dir = out.join("images").join(&topic.name).join(&relative);
+            let command = (!ignored.contains(&test)).then(|| TestCommand {
+                executable: executable.clone(),
+                name: test.clone(),
+                cwd: topic.dir.clone(),
+                env: test_env(root, topic, &images_dir),
+                env_remove: ENV_REMOVE.to_vec(),
+                time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
+                memory_limit_mib: topic.sheet.memory_limit_mib,
+                log: out
+                    .join("logs")
+                    .join(&topic.name)
+                    .join(relative.with_extension("log")),
+            });
+            plan.tests.push(PlannedTest {
+                task,
+                name: test,
+                command,
+                images_dir,
+            });
+        }
+    }
+    for (task, has) in has_binary.iter().enumerate() {
+        if !has {
+            plan.task_errors[task] = Some(format!(
+                "no tests: tests/{}.rs does not exist",
+                topic.sheet.tasks[task].id
+            ));
+        }
+    }
+    plan
+}
+
+/// `dda/octants/steep_line` for test `octants::steep_line` of task `dda`:
+/// unique across the topic, one folder per module.
+fn test_path(task: &str, test: &str) -> PathBuf {
+    let mut path = PathBuf::from(task);
+    for part in test.split("::") {
+        path.push(part);
+    }
+    path
+}
+
+/// Variables that would change how tests behave if the grader's caller had
+/// them set.
+const ENV_REMOVE: &[&str] = &[
+    "INSTA_FORCE_PASS",
+    "INSTA_FORCE_UPDATE",
+    "INSTA_FORCE_UPDATE_SNAPSHOTS",
+    "INSTA_GLOB_FILTER",
+    "CLICOLOR_FORCE",
+    "RUST_MIN_STACK",
+    "RUST_TEST_THREADS",
+];
+
+fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsString)> {
+    vec![
+        ("RUST_BACKTRACE".into(), "0".into()),
+        ("RUST_LIB_BACKTRACE".into(), "0".into()),
+        // A failing snapshot leaves `.snap.new` for `cargo insta review`,
+        // never touching the official `.snap`.
+        ("INSTA_UPDATE".into(), "new".into()),
+        // Saves insta a `cargo metadata` in every test process.
+        ("INSTA_WORKSPACE_ROOT".into(), root.into()),
+        ("TESTKIT_OUTPUT_DIR".into(), images_dir.into()),
+        ("PROPTEST_DISABLE_FAILURE_PERSISTENCE".into(), "1".into()),
+        // What `cargo test` sets for a test process.
+        ("CARGO_MANIFEST_DIR".into(), topic.dir.clone().into()),
+        ("CARGO_PKG_NAME".into(), topic.package.clone().into()),
+    ]
+}
+
+fn spinner(message: String) -> ProgressBar {
+    let spinner = ProgressBar::new_spinner().with_message(message);
+    spinner.enable_steady_tick(Duration::from_millis(100));
+    spinner
+}
+
+/// Runs the given tests `jobs` at a time, with a progress bar on stderr
+/// (hidden when stderr is not a terminal).
+fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Vec<Finished>> {
+    let bar = ProgressBar::new(jobs.len() as u64).with_style(
+        ProgressStyle::with_template(
+            "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
+        )
+        .expect("a valid progress template"),
+    );
+    bar.enable_steady_tick(Duration::from_millis(100));
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Result<Finished>>>> =
+        Mutex::new((0..jobs.len()).map(|_| None).collect());
+    std::thread::scope(|scope| {
+        for _ in 0..threads.min(jobs.len()) {
+            scope.spawn(|| {
+                loop {
+                    let index = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(&(p, t)) = jobs.get(index) else {
+                        break;
+                    };
+                    let plan = &plans[p];
+                    let test = &plan.tests[t];
+                    bar.set_message(format!("{} {}", plan.topic.name, test.name));
+                    let command = test.command.as_ref().expect("only runnable tests are jobs");
+                    let result = command.run();
+                    results.lock().expect("no worker panics")[index] = Some(result);
+                    bar.inc(1);
+                }
+            });
+        }
+    });
+    bar.finish_and_clear();
+    results
+        .into_inner()
+        .expect("no worker panics")
+        .into_iter()
+        .map(|result| result.expect("every job ran"))
+        .collect()
+}
+
+fn topic_report(
+    out: &Path,
+    plan: Plan,
+    mut finished: impl FnMut(usize) -> Option<Finished>,
+) -> TopicReport {
+    let topic = &plan.topic;
+    let time_limit_s = topic.sheet.time_limit_s;
+    let mut tasks: Vec<TaskReport> = topic
+        .sheet
+        .tasks
+        .iter()
+        .zip(&plan.task_errors)
+        .map(|(task, error)| TaskReport {
+            id: task.id.clone(),
+            title: task.title.clone(),
+            points: task.points,
+            bonus: task.bonus,
+            score: 0.0,
+            status: if plan.compile_error.is_some() {
+                TaskStatus::CompileError
+            } else if error.is_some() {
+                TaskStatus::Error
+            } else {
+                TaskStatus::Ok
+            },
+            error: if plan.compile_error.is_some() {
+                None
+            } else {
+                error.clone()
+            },
+            passed: 0,
+            failed: 0,
+            ignored: 0,
+            tests: Vec::new(),
+        })
+        .collect();
+    for (t, test) in plan.tests.into_iter().enumerate() {
+        let task = &mut tasks[test.task];
+        let report = match finished(t) {
+            None => ignored_test(test.name),
+            Some(run) => test_report(out, test, run, time_limit_s),
+        };
+        match report.status {
+            TestStatus::Passed => task.passed += 1,
+            TestStatus::Failed => task.failed += 1,
+            TestStatus::Ignored => task.ignored += 1,
+        }
+        task.tests.push(report);
+    }
+    for task in &mut tasks {
+        let counted = task.passed + task.failed;
+        if task.status == TaskStatus::Ok && counted == 0 {
+            task.status = TaskStatus::Error;
+            task.error = Some(format!("all {} tests are #[ignore]d", task.ignored));
+        }
+        if task.status == TaskStatus::Ok {
+            task.score = task.points * task.passed as f64 / counted as f64;
+            if task.failed > 0 {
+                task.status = TaskStatus::Fail;
+            }
+        }
+        task.score = report::round2(task.score);
+    }
+    TopicReport {
+        name: topic.name.clone(),
+        package: topic.package.clone(),
+        dir: topic.dir.clone(),
+        time_limit_s,
+        memory_limit_mib: topic.sheet.memory_limit_mib,
+        compile_error: plan.compile_error,
+        errors: plan.errors,
+        score: report::round2(tasks.iter().map(|t| t.score).sum()),
+        max_score: report::round2(tasks.iter().map(TaskReport::max_score).sum()),
+        tasks,
+    }
+}
+
+fn ignored_test(name: String) -> TestReport {
+    TestReport {
+        name,
+        status: TestStatus::Ignored,
+        reason: None,
+        panic_location: None,
+        minimal_input: None,
+        raster_diff: None,
+        snapshot_diff: None,
+        duration_s: 0.0,
+        exit: Exit::default(),
+        output: None,
+        log: None,
+        images_dir: None,
+        images: Vec::new(),
+    }
+}
+
+fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
+    let verdict = outcome::judge(&run.output, &run.exit, time_limit_s);
+    let status = if verdict.passed {
+        TestStatus::Passed
+    } else if verdict.ignored {
+        TestStatus::Ignored
+    } else {
+        TestStatus::Failed
+    };
+    let images = list_files(&test.images_dir);
+    let relative = |path: PathBuf| {
+        path.strip_prefix(out)
+            .map(Path::to_path_buf)
+            .unwrap_or(path)
+    };
+    TestReport {
+        name: test.name,
+        status,
+        reason: verdict.reason,
+        panic_location: verdict.panic_location,
+        minimal_input: verdict.minimal_input,
+        raster_diff: verdict.raster_diff,
+        snapshot_diff: verdict.snapshot_diff,
+        duration_s: report::round2(run.duration.as_secs_f64()),
+        exit: run.exit,
+        output: (status == TestStatus::Failed).then(|| excerpt(&run.output)),
+        log: test.command.map(|command| relative(command.log)),
+        images_dir: (!images.is_empty()).then(|| relative(test.images_dir)),
+        images,
+    }
+}
+
+/// The end of a long output, cut at a line start.
+fn excerpt(output: &str) -> String {
+    let output = output.trim();
+    if output.len() <= OUTPUT_EXCERPT_CHARS {
+        return output.to_owned();
+    }
+    let mut start = output.len() - OUTPUT_EXCERPT_CHARS;
+    while !output.is_char_boundary(start) {
+        start += 1;
+    }
+    let start = output[start..]
+        .find('\n')
+        .map_or(start, |nl| start + nl + 1);
+    format!("[... {} bytes cut ...]\n{}", start, &output[start..])
+}
+
+/// Files under `dir`, relative to it, sorted.
+fn list_files(dir: &Path) -> Vec<PathBuf> {
+    fn walk(base: &Path, dir: &Path, files: &mut Vec<PathBuf>) {
+        let Ok(entries) = fs::read_dir(dir) else {
+            return;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                walk(base, &path, files);
+            } else if let Ok(relative) = path.strip_prefix(base) {
+                files.push(relative.to_path_buf());
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(dir, dir, &mut files);
+    files.sort();
+    files
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn test_paths_are_unique_per_task_and_nest_modules() {
+        assert_eq!(
+            test_path("dda", "octants::steep"),
+            Path::new("dda/octants/steep")
+        );
+        assert_eq!(test_path("wu", "steep"), Path::new("wu/steep"));
+    }
+
+    #[test]
+    fn excerpt_keeps_the_end_from_a_line_start() {
+        let long = format!("{}\nlast line", "x".repeat(OUTPUT_EXCERPT_CHARS));
+        let cut = excerpt(&long);
+        assert!(cut.starts_with("[... "), "{cut}");
+        assert!(cut.ends_with("\nlast line"), "{cut}");
+        assert_eq!(excerpt(" short \n"), "short");
+    }
+}

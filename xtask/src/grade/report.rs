@@ -1,0 +1,198 @@
+//! The grade report: topics → tasks → tests, as written to `report.json`.
+//!
+//! ```text
+//! Report { schema, root, edition, score, max_score, duration_s, complete, topics: [
+//!   TopicReport { name, package, dir, time_limit_s, memory_limit_mib,
+//!                 compile_error, errors, score, max_score, tasks: [
+//!     TaskReport { id, title, points, bonus, score, status, error,
+//!                  passed, failed, ignored, tests: [
+//!       TestReport { name, status, reason, panic_location, minimal_input,
+//!                    raster_diff, snapshot_diff, duration_s, exit, output, log, images_dir, images }
+//! ]}]}]}
+//! ```
+//!
+//! A task scores `points × passed / (passed + failed)`; ignored tests count
+//! neither way. Scores are rounded to two decimals in the file.
+
+use std::path::PathBuf;
+
+use serde::Serialize;
+
+use super::outcome::Exit;
+
+/// Version of the `report.json` layout; bumped when a field changes meaning.
+pub const SCHEMA: u32 = 1;
+
+/// Which edition of the code was graded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Edition {
+    /// `exercises/*/src`: the student's code.
+    Student,
+    /// `--features reference`: the tutor's solutions.
+    Reference,
+}
+
+/// Everything one `cargo xtask grade` found.
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// [`SCHEMA`].
+    pub schema: u32,
+    /// The checkout that was graded.
+    pub root: PathBuf,
+    /// Student code or reference solutions.
+    pub edition: Edition,
+    /// Points earned, over all topics graded.
+    pub score: f64,
+    /// Points possible (bonus points excluded).
+    pub max_score: f64,
+    /// Wall-clock seconds the grading took.
+    pub duration_s: f64,
+    /// Every task of every topic was graded: no compile error, no test
+    /// binary outside the task list, no task without tests.
+    pub complete: bool,
+    /// Per topic, in course order.
+    pub topics: Vec<TopicReport>,
+}
+
+/// One topic (exercise crate).
+#[derive(Debug, Clone, Serialize)]
+pub struct TopicReport {
+    /// Folder name, e.g. `01-lines`.
+    pub name: String,
+    /// Cargo package name.
+    pub package: String,
+    /// The topic folder.
+    pub dir: PathBuf,
+    /// Per-test wall-clock limit used.
+    pub time_limit_s: f64,
+    /// Per-test address-space limit used (0: none).
+    pub memory_limit_mib: u64,
+    /// The compiler's errors when the topic did not build.
+    pub compile_error: Option<String>,
+    /// Problems with the topic's tests themselves (a test binary that is
+    /// not a task, a listing that failed).
+    pub errors: Vec<String>,
+    /// Points earned in this topic.
+    pub score: f64,
+    /// Points possible in this topic (bonus excluded).
+    pub max_score: f64,
+    /// Per task, in the task sheet's order.
+    pub tasks: Vec<TaskReport>,
+}
+
+/// How a task did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TaskStatus {
+    /// Every test passed.
+    Ok,
+    /// At least one test failed.
+    Fail,
+    /// The topic did not compile.
+    CompileError,
+    /// The task could not be graded (no tests).
+    Error,
+}
+
+/// One task of a topic.
+#[derive(Debug, Clone, Serialize)]
+pub struct TaskReport {
+    /// Task id (= test binary name).
+    pub id: String,
+    /// Title from the task sheet.
+    pub title: String,
+    /// Full points.
+    pub points: f64,
+    /// Bonus task: its points are not part of `max_score`.
+    pub bonus: bool,
+    /// Points earned.
+    pub score: f64,
+    /// How it did.
+    pub status: TaskStatus,
+    /// Why it could not be graded, for [`TaskStatus::Error`].
+    pub error: Option<String>,
+    /// Tests that passed.
+    pub passed: usize,
+    /// Tests that failed.
+    pub failed: usize,
+    /// `#[ignore]`d tests (not run, not counted).
+    pub ignored: usize,
+    /// Per test, in the order libtest lists them.
+    pub tests: Vec<TestReport>,
+}
+
+/// How a test did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TestStatus {
+    /// Exit status 0 and libtest's `1 passed`.
+    Passed,
+    /// Anything else.
+    Failed,
+    /// `#[ignore]`d: not run.
+    Ignored,
+}
+
+/// One test, run in its own process.
+#[derive(Debug, Clone, Serialize)]
+pub struct TestReport {
+    /// Full test name (`octants::steep_line`).
+    pub name: String,
+    /// How it did.
+    pub status: TestStatus,
+    /// Why it failed.
+    pub reason: Option<String>,
+    /// Where the final panic happened (`file:line:col`).
+    pub panic_location: Option<String>,
+    /// proptest's shrunk failing input.
+    pub minimal_input: Option<String>,
+    /// testkit's ASCII raster diff (expected vs yours).
+    pub raster_diff: Option<String>,
+    /// insta's diff of a mismatching snapshot (`-` stored, `+` yours).
+    pub snapshot_diff: Option<String>,
+    /// Wall-clock seconds.
+    pub duration_s: f64,
+    /// How the process ended.
+    pub exit: Exit,
+    /// The end of its output, for failed tests.
+    pub output: Option<String>,
+    /// The full output.
+    pub log: Option<PathBuf>,
+    /// `TESTKIT_OUTPUT_DIR` of the test.
+    pub images_dir: Option<PathBuf>,
+    /// Files the test wrote there (PNGs), relative to `images_dir`.
+    pub images: Vec<PathBuf>,
+}
+
+impl TaskReport {
+    /// The first failing test, if any.
+    #[must_use]
+    pub fn first_failure(&self) -> Option<&TestReport> {
+        self.tests
+            .iter()
+            .find(|test| test.status == TestStatus::Failed)
+    }
+
+    /// The full points, or 0 for a bonus task (for maxima).
+    #[must_use]
+    pub fn max_score(&self) -> f64 {
+        if self.bonus { 0.0 } else { self.points }
+    }
+}
+
+/// Rounds to two decimals, for the files.
+#[must_use]
+pub fn round2(x: f64) -> f64 {
+    (x * 100.0).round() / 100.0
+}
+
+/// `3` for 3.0, `1.5` for 1.5: points as the task sheet writes them.
+#[must_use]
+pub fn points(x: f64) -> String {
+    if x.fract() == 0.0 {
+        format!("{x:.0}")
+    } else {
+        format!("{x}")
+    }
+}

@@ -1,0 +1,215 @@
+//! Running one test in its own process, so that nothing the student's code
+//! does (loop, overflow its stack, abort, exit, allocate without end) can
+//! take the grader down with it.
+//!
+//! The child writes stdout and stderr into one log file (a pipe nobody reads
+//! fast enough would block it); the grader polls it with `try_wait` and kills
+//! it at the wall-clock limit or when the log grows past [`OUTPUT_LIMIT`].
+//! On Unix the address space is capped with `ulimit -v` in a tiny `sh`
+//! wrapper that then `exec`s the test, so the limit needs no unsafe code.
+
+use std::ffi::OsString;
+use std::fs::{self, File};
+use std::io::{Read as _, Seek as _, SeekFrom};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result};
+
+use super::outcome::Exit;
+
+/// A test that prints more than this is stopped: endless printing would
+/// otherwise fill the disk before the time limit.
+pub const OUTPUT_LIMIT: u64 = 64 << 20;
+/// Of a test stopped at [`OUTPUT_LIMIT`], this much output is kept.
+const FLOOD_KEPT: usize = 64 << 10;
+/// Only the end of a long log is read back: the verdict is at the end.
+const READ_BACK_LIMIT: u64 = 4 << 20;
+/// How often a running test is checked on.
+const POLL_INTERVAL: Duration = Duration::from_millis(10);
+
+/// One test to run.
+#[derive(Debug, Clone)]
+pub struct TestCommand {
+    /// The test executable built by cargo.
+    pub executable: PathBuf,
+    /// The test's full name as `--list` prints it (`octants::steep`).
+    pub name: String,
+    /// The package folder: cargo runs tests there.
+    pub cwd: PathBuf,
+    /// Extra environment variables.
+    pub env: Vec<(OsString, OsString)>,
+    /// Environment variables to remove.
+    pub env_remove: Vec<&'static str>,
+    /// Wall-clock limit.
+    pub time_limit: Duration,
+    /// Address-space limit in MiB; 0 for none.
+    pub memory_limit_mib: u64,
+    /// Where stdout and stderr go.
+    pub log: PathBuf,
+}
+
+/// A finished test process.
+#[derive(Debug, Clone)]
+pub struct Finished {
+    /// How it ended.
+    pub exit: Exit,
+    /// Wall-clock time it ran.
+    pub duration: Duration,
+    /// Its output (the end of it, when long), lossily decoded.
+    pub output: String,
+}
+
+impl TestCommand {
+    fn command(&self) -> Command {
+        let args = [
+            OsString::from("--exact"),
+            OsString::from(&self.name),
+            OsString::from("--nocapture"),
+            OsString::from("--test-threads=1"),
+        ];
+        let mut command = if cfg!(unix) {
+            // `ulimit -v` takes KiB; `-c 0` keeps aborts from writing core files.
+            // Shells without `ulimit -v` (macOS) run the test without the cap.
+            let mut script = String::from("ulimit -c 0 2>/dev/null; ");
+            if self.memory_limit_mib > 0 {
+                script += &format!("ulimit -v {} 2>/dev/null; ", self.memory_limit_mib * 1024);
+            }
+            script += "exec \"$0\" \"$@\"";
+            let mut command = Command::new("sh");
+            command
+                .arg("-c")
+                .arg(script)
+                .arg(&self.executable)
+                .args(args);
+            command
+        } else {
+            let mut command = Command::new(&self.executable);
+            command.args(args);
+            command
+        };
+        command.current_dir(&self.cwd).stdin(Stdio::null());
+        for name in &self.env_remove {
+            command.env_remove(name);
+        }
+        command.envs(self.env.iter().map(|(k, v)| (k, v)));
+        command
+    }
+
+    /// Runs the test to its end or its limit.
+    pub fn run(&self) -> Result<Finished> {
+        if let Some(parent) = self.log.parent() {
+            fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        let log = File::create(&self.log)
+            .with_context(|| format!("cannot create the log {}", self.log.display()))?;
+        // Both streams share one file description, so they interleave in order.
+        let log_err = log.try_clone().context("cannot share the log file")?;
+        let start = Instant::now();
+        let mut child = self
+            .command()
+            .stdout(log)
+            .stderr(log_err)
+            .spawn()
+            .with_context(|| format!("cannot start {}", self.executable.display()))?;
+        let mut exit = Exit::default();
+        let status = loop {
+            if let Some(status) = child.try_wait().context("cannot wait for a test")? {
+                break status;
+            }
+            if start.elapsed() >= self.time_limit {
+                exit.timed_out = true;
+                break kill(&mut child)?;
+            }
+            if fs::metadata(&self.log).is_ok_and(|m| m.len() > OUTPUT_LIMIT) {
+                exit.output_limit = Some(OUTPUT_LIMIT);
+                break kill(&mut child)?;
+            }
+            std::thread::sleep(POLL_INTERVAL);
+        };
+        let duration = start.elapsed();
+        exit.code = status.code();
+        exit.signal = signal(&status);
+        let mut output = read_tail(&self.log)?;
+        if exit.output_limit.is_some() {
+            // Keep the disk free: only the end of a flood is worth reading.
+            let mut start = output.len().saturating_sub(FLOOD_KEPT);
+            while !output.is_char_boundary(start) {
+                start += 1;
+            }
+            output = format!(
+                "[the test printed more than {} MiB; the last {} KiB are kept]\n{}",
+                OUTPUT_LIMIT >> 20,
+                FLOOD_KEPT >> 10,
+                &output[start..]
+            );
+            fs::write(&self.log, &output)
+                .with_context(|| format!("cannot write {}", self.log.display()))?;
+        }
+        Ok(Finished {
+            exit,
+            duration,
+            output,
+        })
+    }
+}
+
+fn kill(child: &mut Child) -> Result<ExitStatus> {
+    // It may have ended between `try_wait` and now; `wait` tells either way.
+    let _ = child.kill();
+    child.wait().context("cannot wait for a killed test")
+}
+
+#[cfg(unix)]
+fn signal(status: &ExitStatus) -> Option<i32> {
+    use std::os::unix::process::ExitStatusExt as _;
+    status.signal()
+}
+
+#[cfg(not(unix))]
+fn signal(_: &ExitStatus) -> Option<i32> {
+    None
+}
+
+/// The log, or its last [`READ_BACK_LIMIT`] bytes.
+fn read_tail(path: &Path) -> Result<String> {
+    let mut file = File::open(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let len = file.metadata().map(|m| m.len()).unwrap_or(0);
+    if len > READ_BACK_LIMIT {
+        file.seek(SeekFrom::Start(len - READ_BACK_LIMIT))
+            .with_context(|| format!("cannot read {}", path.display()))?;
+    }
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes)
+        .with_context(|| format!("cannot read {}", path.display()))?;
+    Ok(String::from_utf8_lossy(&bytes).into_owned())
+}
+
+/// Lists a test executable's tests: all, and the `#[ignore]`d ones.
+pub fn list_tests(executable: &Path, cwd: &Path, ignored: bool) -> Result<Vec<String>> {
+    let mut command = Command::new(executable);
+    command
+        .args(["--list", "--format", "terse"])
+        .current_dir(cwd)
+        .stdin(Stdio::null());
+    if ignored {
+        command.arg("--ignored");
+    }
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run {} --list", executable.display()))?;
+    anyhow::ensure!(
+        output.status.success(),
+        "`{} --list` failed ({}): {}",
+        executable.display(),
+        output.status,
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    Ok(String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| line.strip_suffix(": test"))
+        .map(str::to_owned)
+        .collect())
+}

@@ -1,0 +1,488 @@
+//! `cargo xtask` run end to end on two fixture courses (each its own cargo
+//! workspace without dependencies, copied to a scratch folder first):
+//!
+//! - `fixtures/hostile`: student code that panics, loops, overflows its
+//!   stack, exits, aborts, allocates 3 GiB, prints without end and fails a
+//!   property; a topic that does not compile; a topic whose tests do not
+//!   match its task sheet. The grader must report each as that task's
+//!   failure with the right reason, within the time limit.
+//! - `fixtures/tiny`: a correct course, on which `cargo xtask test` passes
+//!   until a stub starts scoring points.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+use serde_json::Value;
+
+/// The hostile fixture's per-test time limit (its task sheet says so).
+const HOSTILE_TIME_LIMIT: Duration = Duration::from_secs(3);
+
+/// Copies `tests/fixtures/<name>` to a scratch folder of its own for
+/// `case`, keeping an earlier copy's `target/` so that builds stay warm.
+fn fixture(name: &str, case: &str) -> PathBuf {
+    let source = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures")
+        .join(name);
+    let copy = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}-{case}"));
+    if copy.exists() {
+        for entry in fs::read_dir(&copy).unwrap() {
+            let path = entry.unwrap().path();
+            if path.file_name().unwrap() != "target" {
+                if path.is_dir() {
+                    fs::remove_dir_all(&path).unwrap();
+                } else {
+                    fs::remove_file(&path).unwrap();
+                }
+            }
+        }
+    }
+    copy_dir(&source, &copy);
+    copy
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), &target).unwrap();
+        }
+    }
+}
+
+/// Runs the xtask binary on the course at `root`.
+fn xtask(root: &Path, args: &[&str]) -> Output {
+    let output = Command::new(env!("CARGO_BIN_EXE_xtask"))
+        .arg("--root")
+        .arg(root)
+        .args(args)
+        // The fixtures build with their own target dir and flags.
+        .env_remove("CARGO_TARGET_DIR")
+        .env_remove("CARGO_BUILD_TARGET_DIR")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("xtask runs");
+    eprintln!(
+        "$ xtask --root {} {}\n{}\n{}",
+        root.display(),
+        args.join(" "),
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    output
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn read_json(path: &Path) -> Value {
+    let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{} is not JSON: {e}", path.display()))
+}
+
+fn topic<'a>(report: &'a Value, name: &str) -> &'a Value {
+    report["topics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["name"] == name)
+        .unwrap()
+}
+
+fn task<'a>(report: &'a Value, topic_name: &str, id: &str) -> &'a Value {
+    let topic = topic(report, topic_name);
+    topic["tasks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["id"] == id)
+        .unwrap()
+}
+
+/// The reason of the task's first failing test.
+fn reason(task: &Value) -> String {
+    let test = task["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["status"] == "failed");
+    let test = test.unwrap_or_else(|| panic!("no failed test in {task:#}"));
+    test["reason"].as_str().unwrap().to_owned()
+}
+
+fn grade(root: &Path, out: &str, extra: &[&str]) -> (Output, Value, Duration) {
+    let out = root.join("target").join(out);
+    let mut args = vec!["grade", "--out", out.to_str().unwrap(), "--jobs", "4"];
+    args.extend(extra);
+    let started = Instant::now();
+    let output = xtask(root, &args);
+    let elapsed = started.elapsed();
+    assert!(
+        output.status.success(),
+        "grading itself must finish: {output:?}"
+    );
+    (output, read_json(&out.join("report.json")), elapsed)
+}
+
+#[test]
+fn each_misbehaviour_fails_its_task_with_its_reason() {
+    let root = fixture("hostile", "student");
+    let (output, report, _) = grade(&root, "grade", &[]);
+
+    assert_eq!(report["edition"], "student");
+    assert_eq!(
+        report["complete"], false,
+        "03-misfiled does not match its sheet"
+    );
+
+    // Full points for the task that works; ignored tests count neither way.
+    let ok = task(&report, "01-hostile", "ok");
+    assert_eq!(ok["status"], "ok");
+    assert_eq!(ok["score"], 2.0);
+    assert_eq!(
+        (
+            ok["passed"].as_u64(),
+            ok["failed"].as_u64(),
+            ok["ignored"].as_u64()
+        ),
+        (Some(4), Some(0), Some(1))
+    );
+
+    // Partial points: points × passed / tests.
+    let panics = task(&report, "01-hostile", "panics");
+    assert_eq!(panics["status"], "fail");
+    assert_eq!(panics["score"], 1.0);
+    let why = reason(panics);
+    assert!(
+        why.starts_with("panicked: assertion `left == right` failed: 7 / 2 rounds down"),
+        "{why}"
+    );
+    assert!(why.contains("right: 3"), "{why}");
+
+    let expected = [
+        (
+            "unfinished",
+            "not implemented yet: unfinished: count the pixels",
+        ),
+        ("loops", "timed out after 3 s (infinite loop?)"),
+        ("overflow", "stack overflow"),
+        (
+            "exits",
+            "the test process exited with code 0 before the test finished (process::exit in student code?)",
+        ),
+        ("aborts", "aborted (signal 6)"),
+        (
+            "allocates",
+            "out of memory (an allocation of 3221225472 bytes failed)",
+        ),
+        (
+            "floods",
+            "printed more than 64 MiB of output (endless printing?)",
+        ),
+        ("shrinks", "panicked: row of 3: 2 pixels instead of 3"),
+    ];
+    for (id, expected) in expected {
+        let task = task(&report, "01-hostile", id);
+        assert_eq!(reason(task), expected, "task {id}");
+        if id != "shrinks" {
+            assert_eq!(task["score"], 0.0, "task {id}");
+        }
+        for test in task["tests"].as_array().unwrap() {
+            let seconds = test["duration_s"].as_f64().unwrap();
+            assert!(
+                seconds < HOSTILE_TIME_LIMIT.as_secs_f64() + 1.0,
+                "{id}: {seconds} s"
+            );
+        }
+    }
+
+    // A flood's log is cut back so that it does not fill the disk.
+    let flood_log = root.join("target/grade/logs/01-hostile/floods/greets_once.log");
+    let flood_size = fs::metadata(&flood_log).unwrap().len();
+    assert!(flood_size < 1 << 20, "{flood_size} bytes");
+
+    // The last of many panics is the report; input and diff come apart.
+    let shrinks = task(&report, "01-hostile", "shrinks");
+    assert_eq!(shrinks["score"], 0.75);
+    let failed = &shrinks["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["status"] == "failed")
+        .unwrap();
+    assert_eq!(failed["minimal_input"], "n = 3");
+    assert_eq!(failed["raster_diff"], "0 |##-");
+    assert!(
+        failed["output"].as_str().unwrap().contains("row of 9"),
+        "the excerpt keeps the output"
+    );
+    let log = root
+        .join("target/grade")
+        .join(failed["log"].as_str().unwrap());
+    assert!(
+        fs::read_to_string(log)
+            .unwrap()
+            .contains("minimal failing input")
+    );
+
+    // A topic that does not compile fails its tasks; the others are graded.
+    let broken = topic(&report, "02-broken");
+    assert!(
+        broken["compile_error"]
+            .as_str()
+            .unwrap()
+            .contains("error[E0308]: mismatched types")
+    );
+    assert_eq!(
+        task(&report, "02-broken", "works")["status"],
+        "compile_error"
+    );
+
+    // Tests that do not match the task sheet are errors, not crashes.
+    let misfiled = topic(&report, "03-misfiled");
+    assert!(
+        misfiled["errors"][0]
+            .as_str()
+            .unwrap()
+            .contains("tests/stray.rs"),
+        "{misfiled:#}"
+    );
+    assert_eq!(task(&report, "03-misfiled", "lonely")["status"], "error");
+    assert_eq!(
+        reason(task(&report, "03-misfiled", "alpha")),
+        "not implemented yet: alpha: return one"
+    );
+
+    assert_eq!(report["score"], 3.75);
+    assert_eq!(report["max_score"], 16.5);
+
+    // The terminal: a table, a total, the first failure of each task.
+    let text = stdout(&output);
+    let ok_row = text
+        .lines()
+        .find(|line| line.starts_with("01-hostile"))
+        .unwrap();
+    assert!(
+        ok_row.contains(" ok ") && ok_row.contains("Works") && ok_row.ends_with("2.0 / 2  ok"),
+        "{ok_row}"
+    );
+    assert!(text.contains("total"), "{text}");
+    assert!(text.contains("3.8 / 16.5"), "{text}");
+    assert!(text.contains("compile error"), "{text}");
+    assert!(text.contains("minimal failing input:\n    n = 3"), "{text}");
+    assert!(
+        text.contains("raster diff (expected vs yours):\n    0 |##-"),
+        "{text}"
+    );
+    assert!(!text.contains('\x1b'), "NO_COLOR and a pipe mean no colour");
+
+    // Gradescope's shape: one entry per task.
+    let results = read_json(&root.join("target/grade/results.json"));
+    assert_eq!(results["score"], 3.75);
+    let tests = results["tests"].as_array().unwrap();
+    assert_eq!(tests.len(), 13);
+    assert_eq!(tests[0]["name"], "01-hostile / ok: Works");
+    assert_eq!(tests[0]["status"], "passed");
+    assert_eq!(tests[1]["status"], "failed");
+    assert!(
+        tests[1]["output"]
+            .as_str()
+            .unwrap()
+            .contains("7 / 2 rounds down")
+    );
+
+    // JUnit: one suite per topic, escaped.
+    let junit = fs::read_to_string(root.join("target/grade/junit.xml")).unwrap();
+    assert!(junit.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites"));
+    assert_eq!(junit.matches("<testsuite ").count(), 3);
+    assert!(
+        junit.contains("<failure message=\"timed out after 3 s (infinite loop?)\""),
+        "{junit}"
+    );
+    assert!(junit.contains("failed: 7 / 2 rounds down&#10;"), "{junit}");
+    assert!(
+        !junit.contains("thread 'halves"),
+        "quotes are escaped in text too"
+    );
+    // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test, a task without tests.
+    assert_eq!(junit.matches("<testcase ").count(), 20, "{junit}");
+    assert_eq!(
+        junit.matches("<testcase ").count(),
+        junit.matches("</testcase>").count()
+            + junit.matches("\"/>\n    <testcase").count()
+            + junit.matches("\"/>\n  </testsuite>").count()
+    );
+}
+
+#[test]
+fn reference_scores_full_points_where_tests_match_the_sheet() {
+    let root = fixture("hostile", "reference");
+    let (_, report, elapsed) = grade(&root, "grade", &["--reference", "hostile", "02"]);
+    assert_eq!(report["edition"], "reference");
+    assert_eq!(
+        report["topics"].as_array().unwrap().len(),
+        2,
+        "only the topics asked for"
+    );
+    assert_eq!(report["score"], report["max_score"]);
+    assert_eq!(report["score"], 14.5);
+    assert_eq!(report["complete"], true);
+    for task in topic(&report, "01-hostile")["tasks"].as_array().unwrap() {
+        assert_eq!(task["status"], "ok", "{task:#}");
+    }
+    // Nothing waits for a time limit when every test passes.
+    assert!(elapsed < Duration::from_secs(120), "{elapsed:?}");
+}
+
+#[test]
+fn unknown_topic_is_an_error_that_lists_the_topics() {
+    let root = fixture("hostile", "unknown");
+    let output = xtask(&root, &["grade", "circles"]);
+    assert!(!output.status.success());
+    let error = String::from_utf8_lossy(&output.stderr);
+    assert!(error.contains("unknown topic `circles`"), "{error}");
+    assert!(
+        error.contains("01-hostile (hostile), 02-broken (broken), 03-misfiled (misfiled)"),
+        "{error}"
+    );
+}
+
+#[test]
+fn stubs_are_checked_generated_and_score_zero() {
+    let root = fixture("hostile", "stubs");
+
+    // The hostile student files are not what the reference generates.
+    let check = xtask(&root, &["stubs", "--check"]);
+    assert!(!check.status.success());
+    let text = stdout(&check);
+    assert!(
+        text.contains("exercises/01-hostile/src/misbehave.rs:1: out of date (first difference)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("exercises/02-broken/src/value.rs:1: out of date"),
+        "{text}"
+    );
+    assert!(!text.contains("03-misfiled"), "{text}");
+    let student = fs::read_to_string(root.join("exercises/01-hostile/src/misbehave.rs")).unwrap();
+    assert!(student.contains("div_ceil"), "--check writes nothing");
+
+    let write = xtask(&root, &["stubs"]);
+    assert!(write.status.success());
+    let stub = fs::read_to_string(root.join("exercises/01-hostile/src/misbehave.rs")).unwrap();
+    assert!(
+        stub.starts_with(
+            "//! The solutions: every function does what its test expects.\n\n/// `a + b`.\n"
+        ),
+        "{stub}"
+    );
+    assert!(stub.contains("pub fn add(a: u32, b: u32) -> u32 {\n    todo!(\"ok: add \\\"a\\\" and \\\"b\\\"\")\n}\n"), "{stub}");
+    assert!(
+        stub.contains("    todo!(\"panics: halve {{x}}\")\n"),
+        "{stub}"
+    );
+    assert!(
+        !stub.contains("black_box") && !stub.contains("SOLUTION"),
+        "{stub}"
+    );
+    assert!(xtask(&root, &["stubs", "--check"]).status.success());
+
+    // A student file without a solution is reported.
+    fs::write(root.join("exercises/02-broken/src/extra.rs"), "").unwrap();
+    let orphan = xtask(&root, &["stubs", "--check"]);
+    assert!(!orphan.status.success());
+    assert!(stdout(&orphan).contains("exercises/02-broken/src/extra.rs has no solution file"));
+    fs::remove_file(root.join("exercises/02-broken/src/extra.rs")).unwrap();
+
+    // Untouched stubs compile, score 0, and every failure names its todo.
+    let (_, report, _) = grade(&root, "grade", &["01", "broken"]);
+    assert_eq!(report["score"], 0.0);
+    assert_eq!(report["complete"], true);
+    for topic in report["topics"].as_array().unwrap() {
+        for task in topic["tasks"].as_array().unwrap() {
+            let id = task["id"].as_str().unwrap();
+            assert_eq!(task["status"], "fail", "{task:#}");
+            for test in task["tests"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .filter(|t| t["status"] == "failed")
+            {
+                let reason = test["reason"].as_str().unwrap();
+                assert!(
+                    reason.starts_with(&format!("not implemented yet: {id}: ")),
+                    "{id}: {reason}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn marker_errors_are_reported_with_file_and_line() {
+    let root = fixture("hostile", "markers");
+    let solution = root.join("reference/03-misfiled/src/alpha.rs");
+    let text = fs::read_to_string(&solution).unwrap();
+    fs::write(
+        &solution,
+        text.replace("alpha: return one", "beta: return one"),
+    )
+    .unwrap();
+    let output = xtask(&root, &["stubs"]);
+    assert!(!output.status.success());
+    let text = stdout(&output);
+    assert!(
+        text.contains("reference/03-misfiled/src/alpha.rs:5: task `beta` is not a task of this topic (the task sheet lists: alpha, lonely)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
+    let root = fixture("tiny", "test");
+    let output = xtask(&root, &["test"]);
+    let text = stdout(&output);
+    assert!(output.status.success(), "{text}");
+    for heading in [
+        "==> [1/4]",
+        "==> [2/4]",
+        "==> [3/4]",
+        "==> [4/4]",
+        "==> summary",
+        "all 4 steps passed",
+    ] {
+        assert!(text.contains(heading), "{heading} in {text}");
+    }
+    assert!(root.join("target/grade/reference/report.json").is_file());
+    assert!(root.join("target/grade/stubs/junit.xml").is_file());
+
+    // A "stub" that already solves its task breaks steps 1 and 4.
+    let stub = root.join("exercises/01-tiny/src/ops.rs");
+    let text = fs::read_to_string(&stub).unwrap();
+    fs::write(
+        &stub,
+        text.replace("todo!(\"negate: return minus x\")", "-x"),
+    )
+    .unwrap();
+    let output = xtask(&root, &["test"]);
+    let text = stdout(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(
+        text.contains("FAIL") && text.contains("stubs are in sync with reference/"),
+        "{text}"
+    );
+    assert!(text.contains("`negates` passes against the stub"), "{text}");
+    assert!(
+        text.contains("2 of 4 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("2 of 4 steps failed"),
+        "{text}"
+    );
+}
