@@ -53,7 +53,10 @@ fn the_table_is_the_cone_volume_over_the_strip() {
     for (k, &value) in table.iter().enumerate() {
         let d = k as f64 / 16.0;
         let expected = cone_volume_over_strip(d) / full;
-        assert!((f64::from(value) - expected).abs() < 2e-3, "D = {d}: table {value}, brute force {expected:.4}");
+        assert!(
+            (f64::from(value) - expected).abs() < 2e-3,
+            "D = {d}: table {value}, brute force {expected:.4}"
+        );
     }
 }
 
