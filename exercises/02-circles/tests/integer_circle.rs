@@ -1,0 +1,164 @@
+//! Task 2: the midpoint circle in integers, with second-order differences.
+
+mod common;
+
+use canvas::{MAX_COORD, Pixel};
+use circles::integer_circle::integer_circle;
+use common::{
+    HAND_CIRCLES, INK, circle_pixels, circle_row, closed_loop, collect, count, first_duplicate,
+    grid_pixels, missing_mirror_image, radius_sheet, within_limits,
+};
+use proptest::prelude::*;
+use testkit::assert_pixels_eq;
+use testkit::strategies::{hostile_pixel, pixel};
+
+fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
+    collect(|plot| integer_circle(centre, radius, plot))
+}
+
+#[test]
+fn small_radii_match_the_slides_by_hand() {
+    // The same grids as the float version (see tests/midpoint_circle.rs),
+    // now from h = d − ¼ = 1 − R, ΔE = 3, ΔSE = 5 − 2R. For R = 5:
+    //   (0,5) h = −4 E → (1,5) h = −1 E → (2,5) h = 4 SE → (3,4) h = 3 SE
+    //   → (4,3): past the diagonal, stop. (ΔE: 3, 5, 7, 9; ΔSE: −5, −3, −1, 3.)
+    for (radius, rows) in HAND_CIRCLES {
+        let centre = Pixel::new(4, -2);
+        let yours = circle(centre, radius);
+        assert_pixels_eq(
+            &grid_pixels(centre, rows),
+            &yours,
+            &format!("integer_circle({centre}, {radius})"),
+        );
+        assert_eq!(
+            first_duplicate(&yours),
+            None,
+            "radius {radius}: a pixel plotted twice"
+        );
+    }
+}
+
+#[test]
+fn radius_8_follows_the_differences_step_by_step() {
+    //   h   −7  E  −4  E   1  SE  −6  E   3  SE   2  SE
+    //   ΔE   3      5      7       9     11      13
+    //   ΔSE −11    −9     −7      −3     −1       3
+    //   pixel (0,8) (1,8) (2,8)  (3,7)  (4,7)   (5,6)   then (6,5): stop
+    let octant: Vec<Pixel> = circle(Pixel::new(0, 0), 8)
+        .into_iter()
+        .filter(|p| 0 <= p.x && p.x <= p.y)
+        .collect();
+    let expected = [(0, 8), (1, 8), (2, 8), (3, 7), (4, 7), (5, 6)].map(|(x, y)| Pixel::new(x, y));
+    assert_pixels_eq(
+        &expected,
+        &octant,
+        "the second octant of integer_circle((0, 0), 8)",
+    );
+}
+
+#[test]
+fn every_radius_up_to_300_matches_the_midpoint_definition() {
+    let centre = Pixel::new(-17, 23);
+    for radius in 0..=300 {
+        let yours = circle(centre, radius);
+        assert_pixels_eq(
+            &circle_pixels(centre, radius),
+            &yours,
+            &format!("integer_circle({centre}, {radius})"),
+        );
+        assert_eq!(
+            first_duplicate(&yours),
+            None,
+            "integer_circle({centre}, {radius}) plots a pixel twice"
+        );
+    }
+}
+
+#[test]
+fn circles_of_small_radii() {
+    let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
+        integer_circle(c, r, |p| canvas.set(p, INK))
+    });
+    testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
+}
+
+#[test]
+fn hostile_input_draws_nothing_and_returns_at_once() {
+    let origin = Pixel::new(0, 0);
+    for (centre, radius) in [
+        (origin, -1),
+        (origin, i32::MIN),
+        (origin, i32::MAX),
+        (origin, MAX_COORD + 1),
+        (Pixel::new(i32::MAX, i32::MAX), 0),
+        (Pixel::new(i32::MIN, 0), 3),
+        (Pixel::new(MAX_COORD, 0), 1),
+        (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
+    ] {
+        assert_eq!(
+            count(|plot| integer_circle(centre, radius, plot)),
+            0,
+            "integer_circle({centre}, {radius})"
+        );
+    }
+    let edge = Pixel::new(-MAX_COORD, MAX_COORD);
+    assert_eq!(circle(edge, 0), [edge]);
+}
+
+#[test]
+fn huge_radius_is_exact() {
+    // R² overflows an i32 from R = 46 341 on; the differences never come
+    // near that. (Only the first 100 000 columns of the second octant are
+    // compared.)
+    const COLUMNS: i32 = 100_000;
+    let radius = 3_000_000;
+    let centre = Pixel::new(1, 0);
+    let mut yours = Vec::new();
+    integer_circle(centre, radius, |p| {
+        let dx = p.x - centre.x;
+        if (0..COLUMNS).contains(&dx) && dx <= p.y {
+            yours.push(p);
+        }
+    });
+    let r = i64::from(radius);
+    let expected: Vec<Pixel> = (0..i64::from(COLUMNS))
+        .map(|x| Pixel::new(x as i32 + 1, circle_row(r, x) as i32))
+        .collect();
+    assert_pixels_eq(
+        &expected,
+        &yours,
+        &format!("the first {COLUMNS} columns of integer_circle({centre}, {radius})"),
+    );
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn pixels_equal_the_float_midpoint_circle(centre in pixel(1000), radius in 0..500) {
+        let yours = circle(centre, radius);
+        assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("integer_circle({centre}, {radius})"));
+        prop_assert_eq!(first_duplicate(&yours), None, "integer_circle({}, {}) plots a pixel twice", centre, radius);
+    }
+
+    #[test]
+    fn circle_has_eightfold_symmetry_and_no_gaps(centre in pixel(50), radius in 0..120) {
+        let yours = circle(centre, radius);
+        if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
+            prop_assert!(false, "integer_circle({}, {}) draws {} but not its mirror image {}", centre, radius, p, image);
+        }
+        closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
+    }
+
+    #[test]
+    fn hostile_input_draws_nothing_or_the_exact_circle(
+        centre in hostile_pixel(),
+        radius in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_COORD + 1), Just(i32::MAX), any::<i32>(), 0..40],
+    ) {
+        if within_limits(centre, radius, radius) && radius < 1000 {
+            assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("integer_circle({centre}, {radius})"));
+        } else if !within_limits(centre, radius, radius) {
+            prop_assert_eq!(count(|plot| integer_circle(centre, radius, plot)), 0, "integer_circle({}, {}) must draw nothing", centre, radius);
+        }
+    }
+}

@@ -1,0 +1,259 @@
+//! Task 1: the midpoint circle with a float decision variable.
+
+mod common;
+
+use canvas::{MAX_COORD, Pixel};
+use circles::midpoint_circle::{circle_points, midpoint_circle};
+use common::{
+    HAND_CIRCLES, INK, circle_pixels, circle_row, closed_loop, collect, count, first_duplicate,
+    grid_pixels, missing_mirror_image, radius_sheet, second_octant, within_limits,
+};
+use proptest::prelude::*;
+use testkit::assert_pixels_eq;
+use testkit::strategies::{hostile_pixel, pixel};
+
+fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
+    collect(|plot| midpoint_circle(centre, radius, plot))
+}
+
+fn points(centre: Pixel, x: i32, y: i32) -> Vec<Pixel> {
+    collect(|plot| circle_points(centre, x, y, &mut |p| plot(p)))
+}
+
+#[test]
+fn circle_points_plots_each_mirror_image_once() {
+    let c = Pixel::new(10, -4);
+    let at = |dx: i32, dy: i32| Pixel::new(c.x + dx, c.y + dy);
+    // 0 < x < y: eight different pixels.
+    let eight = points(c, 2, 5);
+    assert_eq!(eight.len(), 8, "(2, 5) has eight mirror images: {eight:?}");
+    assert_pixels_eq(
+        &[
+            at(2, 5),
+            at(5, 2),
+            at(5, -2),
+            at(2, -5),
+            at(-2, -5),
+            at(-5, -2),
+            at(-5, 2),
+            at(-2, 5),
+        ],
+        &eight,
+        "circle_points(c, 2, 5)",
+    );
+    // x = 0: (0, y) and (-0, y) are one pixel. Four pixels on the axes.
+    let axes = points(c, 0, 5);
+    assert_eq!(axes.len(), 4, "(0, 5) has four mirror images: {axes:?}");
+    assert_pixels_eq(
+        &[at(0, 5), at(5, 0), at(0, -5), at(-5, 0)],
+        &axes,
+        "circle_points(c, 0, 5)",
+    );
+    // x = y: (x, y) and (y, x) are one pixel. Four pixels on the diagonals.
+    let diagonals = points(c, 3, 3);
+    assert_eq!(
+        diagonals.len(),
+        4,
+        "(3, 3) has four mirror images: {diagonals:?}"
+    );
+    assert_pixels_eq(
+        &[at(3, 3), at(-3, 3), at(3, -3), at(-3, -3)],
+        &diagonals,
+        "circle_points(c, 3, 3)",
+    );
+    // Radius 0: the centre, once.
+    assert_eq!(points(c, 0, 0), [c]);
+}
+
+#[test]
+fn small_radii_match_the_slides_by_hand() {
+    // The slides' loop, run by hand (d after each step; E: d += 2x + 3,
+    // SE: d += 2(x − y) + 5 with x, y before the step):
+    //   R = 0: (0,0); no step: the centre alone.
+    //   R = 1: d = 0.25; (0,1); SE → (1,0), past the diagonal: stop.
+    //   R = 2: d = −0.75; (0,2); E, d = 2.25 → (1,2); SE → (2,1): stop.
+    //   R = 3: d = −1.75; (0,3); E, d = 1.25 → (1,3); SE, d = 2.25 → (2,2).
+    //   R = 5: d = −3.75; (0,5); E, d = −0.75 → (1,5); E, d = 4.25 → (2,5);
+    //          SE, d = 3.25 → (3,4); SE → (4,3): stop.
+    // Each second-octant pixel mirrored eight ways gives these grids.
+    for (radius, rows) in HAND_CIRCLES {
+        let centre = Pixel::new(-3, 7);
+        let yours = circle(centre, radius);
+        assert_pixels_eq(
+            &grid_pixels(centre, rows),
+            &yours,
+            &format!("midpoint_circle({centre}, {radius})"),
+        );
+        assert_eq!(
+            first_duplicate(&yours),
+            None,
+            "radius {radius}: a pixel plotted twice"
+        );
+    }
+}
+
+#[test]
+fn radius_8_follows_the_slides_step_by_step() {
+    //   8 |■■■        d: −6.75 E −3.75 E 1.25 SE −5.75 E 3.25 SE 2.25 SE
+    //   7 |   ■■         (0,8)  (1,8)  (2,8)  (3,7)  (4,7)  (5,6)  (6,5):
+    //   6 |     ■        the last step crossed the diagonal: not plotted
+    //     +------ x
+    let centre = Pixel::new(0, 0);
+    let octant: Vec<Pixel> = circle(centre, 8)
+        .into_iter()
+        .filter(|p| 0 <= p.x && p.x <= p.y)
+        .collect();
+    let expected = [(0, 8), (1, 8), (2, 8), (3, 7), (4, 7), (5, 6)].map(|(x, y)| Pixel::new(x, y));
+    assert_pixels_eq(
+        &expected,
+        &octant,
+        "the second octant of midpoint_circle((0, 0), 8)",
+    );
+}
+
+#[test]
+fn circles_of_small_radii() {
+    let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
+        midpoint_circle(c, r, |p| canvas.set(p, INK))
+    });
+    testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
+}
+
+#[test]
+fn hostile_input_draws_nothing_and_returns_at_once() {
+    let origin = Pixel::new(0, 0);
+    for (centre, radius) in [
+        (origin, -1),
+        (origin, i32::MIN),
+        (origin, i32::MAX),
+        (origin, MAX_COORD + 1),
+        (Pixel::new(i32::MAX, i32::MAX), 0),
+        (Pixel::new(i32::MIN, 0), 3),
+        (Pixel::new(MAX_COORD, 0), 1),
+        (Pixel::new(0, -MAX_COORD), 1),
+        (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
+    ] {
+        assert_eq!(
+            count(|plot| midpoint_circle(centre, radius, plot)),
+            0,
+            "midpoint_circle({centre}, {radius})"
+        );
+    }
+    // Right at the limit: radius 0 is the centre, and a circle touching
+    // ±MAX_COORD is drawn.
+    let edge = Pixel::new(MAX_COORD, -MAX_COORD);
+    assert_eq!(circle(edge, 0), [edge]);
+    let touching = Pixel::new(MAX_COORD - 3, 3 - MAX_COORD);
+    assert_pixels_eq(
+        &circle_pixels(touching, 3),
+        &circle(touching, 3),
+        "a circle touching ±MAX_COORD",
+    );
+}
+
+#[test]
+fn huge_radius_is_still_exact() {
+    // |d| reaches 2R; an f32 holds d = k + ¼ exactly only below 2²², and
+    // from radii of about eight million on its rounding picks wrong
+    // pixels. The f64 of the sheet does not. (Only the first 100 000
+    // columns of the second octant are compared, to keep the test quick.)
+    const COLUMNS: i32 = 100_000;
+    let radius = 10_313_530;
+    let centre = Pixel::new(0, 0);
+    let mut yours = Vec::new();
+    midpoint_circle(centre, radius, |p| {
+        if (0..COLUMNS).contains(&p.x) && p.x <= p.y {
+            yours.push(p);
+        }
+    });
+    let r = i64::from(radius);
+    let expected: Vec<Pixel> = (0..i64::from(COLUMNS))
+        .map(|x| Pixel::new(x as i32, circle_row(r, x) as i32))
+        .collect();
+    assert_pixels_eq(
+        &expected,
+        &yours,
+        &format!("the first {COLUMNS} columns of midpoint_circle({centre}, {radius})"),
+    );
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn pixels_are_the_nearest_in_each_column_of_the_second_octant(centre in pixel(50), radius in 0..120) {
+        let yours = circle(centre, radius);
+        assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("midpoint_circle({centre}, {radius})"));
+    }
+
+    #[test]
+    fn no_pixel_is_plotted_twice(centre in pixel(50), radius in 0..120) {
+        let yours = circle(centre, radius);
+        prop_assert_eq!(first_duplicate(&yours), None, "midpoint_circle({}, {}) plots a pixel twice", centre, radius);
+    }
+
+    #[test]
+    fn circle_has_eightfold_symmetry(centre in pixel(50), radius in 0..120) {
+        let yours = circle(centre, radius);
+        if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
+            prop_assert!(false, "midpoint_circle({}, {}) draws {} but not its mirror image {}", centre, radius, p, image);
+        }
+    }
+
+    #[test]
+    fn every_pixel_is_within_half_a_pixel_of_the_circle(centre in pixel(50), radius in 1..120) {
+        // With m = max(|dx|, |dy|) and n = min(|dx|, |dy|): the circle
+        // crosses the pixel's row or column (the one along n) between
+        // m − ½ and m + ½, i.e. |√(R² − n²) − m| < ½, in integers
+        // (2m − 1)² < 4(R² − n²) < (2m + 1)².
+        let r = i64::from(radius);
+        for p in circle(centre, radius) {
+            let (dx, dy) = (i64::from(p.x - centre.x).abs(), i64::from(p.y - centre.y).abs());
+            let (m, n) = (dx.max(dy), dx.min(dy));
+            let s = 4 * (r * r - n * n);
+            prop_assert!((2 * m - 1).pow(2) < s && s < (2 * m + 1).pow(2),
+                "midpoint_circle({}, {}) draws {}, more than half a pixel off the circle", centre, radius, p);
+        }
+    }
+
+    #[test]
+    fn one_pixel_per_column_of_the_second_octant_and_no_gaps(centre in pixel(50), radius in 0..120) {
+        let yours = circle(centre, radius);
+        // The second octant (0 ≤ dx ≤ dy): columns 0, 1, 2, … each once,
+        // each one row below the last or level with it.
+        let mut octant: Vec<(i32, i32)> = yours.iter()
+            .map(|p| (p.x - centre.x, p.y - centre.y))
+            .filter(|&(dx, dy)| 0 <= dx && dx <= dy)
+            .collect();
+        octant.sort();
+        let columns: Vec<i32> = octant.iter().map(|&(dx, _)| dx).collect();
+        let expected: Vec<i32> = (0..second_octant(radius).len() as i32).collect();
+        prop_assert_eq!(columns, expected, "the columns of the second octant (0 ≤ dx ≤ dy), each once");
+        for w in octant.windows(2) {
+            prop_assert!(w[1].1 == w[0].1 || w[1].1 == w[0].1 - 1, "offsets {:?} then {:?}: not E or SE", w[0], w[1]);
+        }
+        // All around: a closed loop of touching pixels.
+        closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
+    }
+
+    #[test]
+    fn circles_near_the_coordinate_limit_are_exact(radius in 0..40, slack in 0..3, sx in prop::bool::ANY, sy in prop::bool::ANY) {
+        let far = MAX_COORD - radius - slack;
+        let centre = Pixel::new(if sx { far } else { -far }, if sy { far } else { -far });
+        assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
+        let over = Pixel::new(centre.x, if sy { far + slack + 1 } else { -far - slack - 1 });
+        prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot)), 0, "midpoint_circle({}, {}) reaches beyond MAX_COORD", over, radius);
+    }
+
+    #[test]
+    fn hostile_input_draws_nothing_or_the_exact_circle(
+        centre in hostile_pixel(),
+        radius in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_COORD + 1), Just(i32::MAX), any::<i32>(), 0..40],
+    ) {
+        if within_limits(centre, radius, radius) && radius < 1000 {
+            assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
+        } else if !within_limits(centre, radius, radius) {
+            prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot)), 0, "midpoint_circle({}, {}) must draw nothing", centre, radius);
+        }
+    }
+}
