@@ -1,0 +1,58 @@
+//! Scanline polygon fill with an active edge table, after the lecture
+//! slides (seed 002, §5.4 "Füllen von (beliebigen) Polygonen").
+//!
+//! Convention (see `canvas`): pixel centres at integers, y up. A pixel is
+//! filled when its centre is inside the polygon by the even-odd rule; a
+//! centre exactly on a crossing belongs to the span starting there (left
+//! ends included, right ends excluded, as for `rectangle`).
+
+use canvas::{Pixel, Vec2, Viewport};
+
+/// Where the edge from `a` to `b` crosses the row `y`, for an edge with
+/// `a.y ≠ b.y`: with `lo` the endpoint of smaller `y` and `hi` the other,
+///
+/// ```text
+///   s = lo.x + ((y − lo.y) · (hi.x − lo.x)) / (hi.y − lo.y)      in f64
+/// ```
+///
+/// evaluated in exactly this order, so that an edge gives the same `s`
+/// whichever way round it is given (and the tests can reproduce it bit
+/// for bit).
+#[must_use]
+pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
+    let (lo, hi) = if a.y < b.y { (a, b) } else { (b, a) };
+    let (lo_x, lo_y) = (f64::from(lo.x), f64::from(lo.y));
+    let (hi_x, hi_y) = (f64::from(hi.x), f64::from(hi.y));
+    lo_x + ((f64::from(y) - lo_y) * (hi_x - lo_x)) / (hi_y - lo_y)
+}
+
+/// Fills the closed polygon through `vertices` (an edge also joins the last
+/// vertex to the first) with the even-odd rule and calls `plot` once per
+/// pixel inside `viewport`, row by row.
+///
+/// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
+/// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
+/// does not. So a vertex on the row counts once where the outline passes
+/// through it and twice or not at all at a peak or a valley, and horizontal
+/// edges never count (the slides: "horizontale Kanten werden ignoriert").
+/// Every row then meets an even number of edges, at `s` = [`crossing`].
+///
+/// **Spans.** Sort the crossings of a row, `s1 ≤ s2 ≤ … ≤ s2k`, and fill each
+/// pair `[s1, s2)`, `[s3, s4)`, … : the pixels `x` with `s1 ≤ x < s2`, that
+/// is `⌈s1⌉ ..= ⌈s2⌉ − 1`. The slides' interval `[x1 − 0.5, x2 − 0.5]` is
+/// this one on their grid, whose pixel centres are at `k + ½`. A pixel is
+/// filled exactly when an odd number of crossings lie at or left of its
+/// centre: the even-odd rule, also for self-intersecting polygons.
+///
+/// **Active edge table.** Edges are sorted by their first row; going up
+/// row by row, edges join the active list when the row reaches them and
+/// leave it after their last row, so each row looks only at the edges
+/// that cross it. (Departure from the slides, which sort all intersection
+/// points of all rows at once: "hoher Sortieraufwand!")
+///
+/// Fewer than three vertices, or any NaN or infinite coordinate, fill
+/// nothing. Huge coordinates are fine: rows and spans are clipped to
+/// `viewport` before any pixel is visited.
+pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
+    todo!("scanline: active edge table; crossings at pixel rows; fill ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair")
+}

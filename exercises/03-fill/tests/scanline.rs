@@ -1,0 +1,166 @@
+//! Task 2: scanline fill with an active edge table, the even-odd rule.
+
+mod common;
+
+use canvas::{Pixel, Vec2, Viewport};
+use common::{
+    POLYGON_VIEWPORT, any_polygon, canvas_with, collect, even_odd_pixels, first_duplicate,
+    grid_pixels, hostile_polygon, star_polygon,
+};
+use fill::scanline::fill_polygon;
+use proptest::prelude::*;
+use testkit::assert_pixels_eq;
+
+fn polygon(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
+    collect(|plot| fill_polygon(vertices, viewport, plot))
+}
+
+fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
+    points.iter().map(|&(x, y)| Vec2::new(x, y)).collect()
+}
+
+#[test]
+fn slides_rectangle_as_a_polygon() {
+    // (0.5, 0.5)–(4.5, 3.5) as four vertices: the same 4 × 3 pixels as
+    // task 1's rectangle.
+    let square = v(&[(0.5, 0.5), (4.5, 0.5), (4.5, 3.5), (0.5, 3.5)]);
+    let expected = grid_pixels(Pixel::new(0, 0), &[".####", ".####", ".####", "....."]);
+    assert_pixels_eq(
+        &expected,
+        &polygon(&square, POLYGON_VIEWPORT),
+        "the slides' rectangle",
+    );
+}
+
+#[test]
+fn integer_square_keeps_left_and_bottom_edges() {
+    //   3 .....    centres on x = 0 and y = 0 are in,
+    //   2 ###..    those on x = 3 and y = 3 are out
+    //   1 ###..
+    //   0 ###..
+    let square = v(&[(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (0.0, 3.0)]);
+    let expected = grid_pixels(Pixel::new(0, 0), &["....", "###.", "###.", "###."]);
+    for vertices in [square.clone(), square.iter().rev().copied().collect()] {
+        assert_pixels_eq(
+            &expected,
+            &polygon(&vertices, POLYGON_VIEWPORT),
+            "square, either winding",
+        );
+    }
+}
+
+#[test]
+fn pentagram_has_a_hole_by_the_even_odd_rule() {
+    // The five-pointed star drawn in one stroke: the centre pentagon is
+    // crossed twice and stays empty.
+    let star: Vec<Vec2> = (0..5)
+        .map(|k| {
+            let angle = std::f32::consts::FRAC_PI_2 + k as f32 * 4.0 * std::f32::consts::PI / 5.0;
+            Vec2::new(8.0, 8.0) + 7.6 * Vec2::new(angle.cos(), angle.sin())
+        })
+        .collect();
+    let yours = polygon(&star, Viewport::new(0, 0, 16, 16));
+    assert!(
+        !yours.contains(&Pixel::new(8, 8)),
+        "the centre of a pentagram is outside"
+    );
+    assert!(
+        yours.contains(&Pixel::new(8, 13)),
+        "the top point is inside"
+    );
+    testkit::assert_raster_snapshot!("pentagram", canvas_with(17, 17, &yours));
+}
+
+#[test]
+fn polygons_of_several_shapes() {
+    let mut all = Vec::new();
+    for shape in [
+        // A triangle with a vertex exactly on a row and a horizontal top.
+        v(&[(0.5, 0.5), (6.0, 3.0), (0.5, 6.0)]),
+        // A concave arrow.
+        v(&[(8.0, 1.0), (15.5, 4.0), (8.0, 7.0), (10.5, 4.0)]),
+        // A notch whose tip (4, 10) lies on a row: counted twice (or not at
+        // all), so row 10 is not split; the corners on row 8 fill nothing.
+        v(&[
+            (1.0, 8.0),
+            (4.0, 10.0),
+            (7.0, 8.0),
+            (7.0, 11.0),
+            (1.0, 11.0),
+        ]),
+    ] {
+        all.extend(polygon(&shape, Viewport::new(0, 0, 15, 11)));
+    }
+    testkit::assert_raster_snapshot!("polygons_of_several_shapes", canvas_with(16, 12, &all));
+}
+
+#[test]
+fn empty_degenerate_and_hostile_polygons_fill_nothing() {
+    let cases = [
+        v(&[]),
+        v(&[(1.0, 1.0)]),
+        v(&[(1.0, 1.0), (5.0, 5.0)]),
+        v(&[(1.0, 1.0), (5.0, 1.0), (9.0, 1.0)]),
+        v(&[(1.0, 1.0), (5.0, 5.0), (9.0, 9.0)]),
+        v(&[(f32::NAN, 1.0), (5.0, 5.0), (9.0, 1.0)]),
+        v(&[(0.0, 0.0), (f32::INFINITY, 0.0), (0.0, 5.0)]),
+    ];
+    for shape in cases {
+        assert_eq!(polygon(&shape, POLYGON_VIEWPORT), [], "{shape:?}");
+    }
+    // Huge but finite: clipped, every pixel of the viewport once.
+    let huge = v(&[(-1e30, -1e30), (1e30, -1e30), (1e30, 1e30), (-1e30, 1e30)]);
+    let small = Viewport::new(-2, -2, 2, 2);
+    assert_eq!(
+        polygon(&huge, small).len(),
+        25,
+        "a huge square clipped to {small:?}"
+    );
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn simple_polygons_match_the_even_odd_rule(shape in star_polygon()) {
+        let yours = polygon(&shape, POLYGON_VIEWPORT);
+        assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
+        prop_assert_eq!(first_duplicate(&yours), None);
+    }
+
+    #[test]
+    fn any_polygon_matches_the_even_odd_rule(shape in any_polygon()) {
+        let yours = polygon(&shape, POLYGON_VIEWPORT);
+        assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
+        prop_assert_eq!(first_duplicate(&yours), None);
+    }
+
+    #[test]
+    fn reversed_and_rotated_polygons_fill_the_same(shape in any_polygon(), turn in 0usize..12) {
+        let mut rotated = shape.clone();
+        if !rotated.is_empty() {
+            let k = turn % rotated.len();
+            rotated.rotate_left(k);
+        }
+        let reversed: Vec<Vec2> = shape.iter().rev().copied().collect();
+        let yours = polygon(&shape, POLYGON_VIEWPORT);
+        assert_pixels_eq(&yours, &polygon(&reversed, POLYGON_VIEWPORT), "reversed");
+        assert_pixels_eq(&yours, &polygon(&rotated, POLYGON_VIEWPORT), "rotated");
+    }
+
+    #[test]
+    fn clipping_keeps_exactly_the_pixels_in_the_viewport(
+        shape in any_polygon(), x in -20..10, y in -20..10, w in 0..15, h in 0..15,
+    ) {
+        let viewport = Viewport::new(x, y, x + w, y + h);
+        assert_pixels_eq(&even_odd_pixels(&shape, viewport), &polygon(&shape, viewport), &format!("{shape:?} in {viewport:?}"));
+    }
+
+    #[test]
+    fn hostile_polygons_never_panic(shape in hostile_polygon()) {
+        let small = Viewport::new(-5, -5, 5, 5);
+        let yours = polygon(&shape, small);
+        prop_assert!(yours.iter().all(|&p| small.contains(p)));
+        prop_assert_eq!(first_duplicate(&yours), None);
+    }
+}
