@@ -153,7 +153,7 @@ fn star() -> Canvas {
     let tip = |k: usize| {
         let angle = k as f32 * tau / 24.0;
         // Long spikes alternate with short notches.
-        let radius = if k % 2 == 0 { 60.0 } else { 24.5 };
+        let radius = if k.is_multiple_of(2) { 60.0 } else { 24.5 };
         let hue = k as f32 / 24.0;
         let colour = Rgba::rgb(
             0.5 + 0.5 * (tau * hue).cos(),
