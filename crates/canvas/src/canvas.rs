@@ -4,7 +4,7 @@ use std::path::Path;
 
 use glam::Vec2;
 
-use crate::{Pixel, Rgba, Viewport, ascii};
+use crate::{Pixel, Rgba, Span, Viewport, ascii};
 
 /// The value a cleared depth plane holds: the far end of the depth range
 /// `[0, 1]` (OpenGL's default `glClearDepth(1.0)`).
@@ -193,6 +193,23 @@ impl Canvas {
         }
     }
 
+    /// Sets the colour of every pixel of `span`, rounded to 8 bits per
+    /// channel; the part outside the canvas is ignored. The same pixels as
+    /// [`Canvas::set`] for each of `span.pixels()`, written as one slice.
+    #[inline]
+    pub fn fill_span(&mut self, span: Span, colour: Rgba) {
+        if (span.y as u32) >= self.height {
+            return;
+        }
+        let x_start = span.x_start.max(0);
+        let x_end = span.x_end.min(self.width as i32 - 1);
+        if x_start > x_end {
+            return;
+        }
+        let row = span.y as usize * self.width as usize;
+        self.colour[row + x_start as usize..=row + x_end as usize].fill(colour.to_rgba8());
+    }
+
     /// The depth at `p`, or `None` outside the canvas.
     #[must_use]
     pub fn depth(&self, p: Pixel) -> Option<f32> {
@@ -328,6 +345,34 @@ impl Canvas {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fill_span_writes_the_pixels_set_would_write() {
+        // Spans inside, across either border, outside, empty and huge.
+        let spans = [
+            Span::new(1, 1, 3),
+            Span::new(0, -5, 1),
+            Span::new(2, 3, 9),
+            Span::new(-1, 0, 4),
+            Span::new(3, 0, 4),
+            Span::new(1, 4, 2),
+            Span::new(0, i32::MIN, i32::MAX),
+        ];
+        for span in spans {
+            let (mut by_span, mut by_pixel) = (Canvas::new(5, 3), Canvas::new(5, 3));
+            by_span.fill_span(span, Rgba::RED);
+            // Pixel by pixel over the span's part of columns −1 ..= 6 (the
+            // canvas and one column either side).
+            for x in span.x_start.max(-1)..=span.x_end.min(6) {
+                by_pixel.set(Pixel::new(x, span.y), Rgba::RED);
+            }
+            assert_eq!(
+                by_span.pixels_not(Rgba::BLACK),
+                by_pixel.pixels_not(Rgba::BLACK),
+                "{span:?}"
+            );
+        }
+    }
 
     #[test]
     fn writes_outside_are_ignored_and_reads_are_none() {

@@ -43,7 +43,7 @@ mod pixel;
 pub use ascii::{ASCII_LEGEND, ascii_grid, ink_char};
 pub use canvas::{Canvas, CanvasError, DEPTH_CLEAR, Fragment, Vertex};
 pub use colour::Rgba;
-pub use pixel::{MAX_COORD, Pixel, Viewport, round_half_away, within_limits};
+pub use pixel::{MAX_COORD, Pixel, Span, Viewport, round_half_away, within_limits};
 
 /// Re-exported so that exercise crates use the same vector types as the library.
 pub use glam::{Vec2, Vec3, Vec4};

@@ -132,9 +132,68 @@ impl Viewport {
     }
 }
 
+/// A horizontal run of pixels: row `y`, columns `x_start ..= x_end` (both
+/// ends included). Scanline rasterizers produce spans, because a span is
+/// what a framebuffer writes fastest (one slice fill instead of a bounds
+/// check per pixel); `x_start > x_end` is an empty span.
+///
+/// ```text
+///   y  ·  ·  ■  ■  ■  ■  ·      Span { y, x_start: 2, x_end: 5 }
+///      0  1  2  3  4  5  6
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Span {
+    /// The row.
+    pub y: i32,
+    /// The first column of the run.
+    pub x_start: i32,
+    /// The last column of the run (inclusive).
+    pub x_end: i32,
+}
+
+impl Span {
+    /// The span of row `y` from `x_start` to `x_end`, both included.
+    #[must_use]
+    pub const fn new(y: i32, x_start: i32, x_end: i32) -> Self {
+        Self { y, x_start, x_end }
+    }
+
+    /// The number of pixels (0 for an empty span).
+    #[must_use]
+    pub fn len(self) -> u64 {
+        u64::try_from(i64::from(self.x_end) - i64::from(self.x_start) + 1).unwrap_or(0)
+    }
+
+    /// Whether the span holds no pixel (`x_start > x_end`).
+    #[must_use]
+    pub fn is_empty(self) -> bool {
+        self.x_start > self.x_end
+    }
+
+    /// The pixels of the span, left to right.
+    pub fn pixels(self) -> impl Iterator<Item = Pixel> {
+        (self.x_start..=self.x_end).map(move |x| Pixel::new(x, self.y))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn span_counts_and_lists_its_pixels_left_to_right() {
+        let span = Span::new(3, -1, 2);
+        assert_eq!(span.len(), 4);
+        assert!(!span.is_empty());
+        let xs: Vec<i32> = span.pixels().map(|p| p.x).collect();
+        assert_eq!(xs, [-1, 0, 1, 2]);
+        assert!(span.pixels().all(|p| p.y == 3));
+        let empty = Span::new(0, 5, 4);
+        assert!(empty.is_empty());
+        assert_eq!(empty.len(), 0);
+        assert_eq!(empty.pixels().count(), 0);
+        assert_eq!(Span::new(0, i32::MIN, i32::MAX).len(), 1 << 32);
+    }
 
     #[test]
     fn rounding_is_half_away_from_zero() {

@@ -6,7 +6,7 @@
 //! centre exactly on a crossing belongs to the span starting there (left
 //! ends included, right ends excluded, as for `rectangle`).
 
-use canvas::{Pixel, Vec2, Viewport};
+use canvas::{Pixel, Span, Vec2, Viewport};
 
 /// Where the edge from `a` to `b` crosses the row `y`, for an edge with
 /// `a.y ≠ b.y`: with `lo` the endpoint of smaller `y` and `hi` the other,
@@ -27,8 +27,9 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 }
 
 /// Fills the closed polygon through `vertices` (an edge also joins the last
-/// vertex to the first) with the even-odd rule and calls `plot` once per
-/// pixel inside `viewport`, row by row.
+/// vertex to the first) with the even-odd rule and calls `span` once per
+/// run of filled pixels inside `viewport`: rows bottom to top, the runs of
+/// a row left to right, never empty, never overlapping.
 ///
 /// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
 /// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
@@ -39,7 +40,7 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 ///
 /// **Spans.** Sort the crossings of a row, `s1 ≤ s2 ≤ … ≤ s2k`, and fill each
 /// pair `[s1, s2)`, `[s3, s4)`, … : the pixels `x` with `s1 ≤ x < s2`, that
-/// is `⌈s1⌉ ..= ⌈s2⌉ − 1`. The slides' interval `[x1 − 0.5, x2 − 0.5]` is
+/// is the [`Span`] `⌈s1⌉ ..= ⌈s2⌉ − 1` (an empty pair gives no span). The slides' interval `[x1 − 0.5, x2 − 0.5]` is
 /// this one on their grid, whose pixel centres are at `k + ½`. A pixel is
 /// filled exactly when an odd number of crossings lie at or left of its
 /// centre: the even-odd rule, also for self-intersecting polygons.
@@ -53,6 +54,14 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// Fewer than three vertices, or any NaN or infinite coordinate, fill
 /// nothing. Huge coordinates are fine: rows and spans are clipped to
 /// `viewport` before any pixel is visited.
+pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Span)) {
+    todo!(
+        "scanline: active edge table; crossings at pixel rows; one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
+    )
+}
+
+/// The pixels of [`fill_spans`], one `plot` call per pixel (given: the
+/// tests and the pictures use it).
 pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
-    todo!("scanline: active edge table; crossings at pixel rows; fill ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair")
+    fill_spans(vertices, viewport, |span| span.pixels().for_each(&mut plot));
 }

@@ -2,12 +2,12 @@
 
 mod common;
 
-use canvas::{Pixel, Vec2, Viewport};
+use canvas::{Pixel, Span, Vec2, Viewport};
 use common::{
     POLYGON_VIEWPORT, any_polygon, canvas_with, collect, even_odd_pixels, first_duplicate,
     grid_pixels, hostile_polygon, star_polygon,
 };
-use fill::scanline::fill_polygon;
+use fill::scanline::{fill_polygon, fill_spans};
 use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 
@@ -154,6 +154,27 @@ proptest! {
     ) {
         let viewport = Viewport::new(x, y, x + w, y + h);
         assert_pixels_eq(&even_odd_pixels(&shape, viewport), &polygon(&shape, viewport), &format!("{shape:?} in {viewport:?}"));
+    }
+
+    #[test]
+    fn spans_come_bottom_up_and_left_to_right_without_overlap(shape in any_polygon()) {
+        let mut spans: Vec<Span> = Vec::new();
+        fill_spans(&shape, POLYGON_VIEWPORT, |span| spans.push(span));
+        for span in &spans {
+            prop_assert!(!span.is_empty(), "empty span {:?}", span);
+            prop_assert!(
+                POLYGON_VIEWPORT.contains(Pixel::new(span.x_start, span.y))
+                    && POLYGON_VIEWPORT.contains(Pixel::new(span.x_end, span.y)),
+                "{:?} leaves the viewport", span
+            );
+        }
+        for pair in spans.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            prop_assert!(
+                a.y < b.y || (a.y == b.y && a.x_end < b.x_start),
+                "{:?} then {:?}: rows go up, runs of a row go right and never overlap", a, b
+            );
+        }
     }
 
     #[test]

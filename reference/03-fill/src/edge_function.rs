@@ -124,12 +124,17 @@ pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl F
     let edge_at =
         |i: usize, x: i64, y: i64| a[i] * i128::from(x * ONE) + b[i] * i128::from(y * ONE) + c[i];
     let mut row = [edge_at(0, x0, y0), edge_at(1, x0, y0), edge_at(2, x0, y0)];
+    // The weights O_i / D step by A_i · ONE / D per pixel: kept in f64
+    // beside the exact O_i (which alone decide inside or out), they save
+    // an i128 → f64 conversion, a library call, per weight and pixel.
+    let step = [0, 1, 2].map(|i| (a[i] * i128::from(ONE)) as f64 * inv_area);
     for y in y0..=y1 {
         let mut o = row;
+        let mut weight = row.map(|o| o as f64 * inv_area);
         for x in x0..=x1 {
             if (0..3).all(|i| o[i] + bias[i] <= 0) {
                 // Weight of V(i+2) is O_i / D.
-                let w = |i: usize| (o[i] as f64 * inv_area) as f32;
+                let w = |i: usize| weight[i] as f32;
                 let (l2, l0, l1) = (w(0), w(1), w(2));
                 #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
                 let pixel = Pixel::new(x as i32, y as i32);
@@ -141,6 +146,7 @@ pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl F
             }
             for i in 0..3 {
                 o[i] += a[i] * i128::from(ONE);
+                weight[i] += step[i];
             }
         }
         for i in 0..3 {

@@ -6,7 +6,7 @@
 //! centre exactly on a crossing belongs to the span starting there (left
 //! ends included, right ends excluded, as for `rectangle`).
 
-use canvas::{Pixel, Vec2, Viewport};
+use canvas::{Pixel, Span, Vec2, Viewport};
 
 /// Where the edge from `a` to `b` crosses the row `y`, for an edge with
 /// `a.y ≠ b.y`: with `lo` the endpoint of smaller `y` and `hi` the other,
@@ -27,8 +27,9 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 }
 
 /// Fills the closed polygon through `vertices` (an edge also joins the last
-/// vertex to the first) with the even-odd rule and calls `plot` once per
-/// pixel inside `viewport`, row by row.
+/// vertex to the first) with the even-odd rule and calls `span` once per
+/// run of filled pixels inside `viewport`: rows bottom to top, the runs of
+/// a row left to right, never empty, never overlapping.
 ///
 /// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
 /// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
@@ -39,7 +40,7 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 ///
 /// **Spans.** Sort the crossings of a row, `s1 ≤ s2 ≤ … ≤ s2k`, and fill each
 /// pair `[s1, s2)`, `[s3, s4)`, … : the pixels `x` with `s1 ≤ x < s2`, that
-/// is `⌈s1⌉ ..= ⌈s2⌉ − 1`. The slides' interval `[x1 − 0.5, x2 − 0.5]` is
+/// is the [`Span`] `⌈s1⌉ ..= ⌈s2⌉ − 1` (an empty pair gives no span). The slides' interval `[x1 − 0.5, x2 − 0.5]` is
 /// this one on their grid, whose pixel centres are at `k + ½`. A pixel is
 /// filled exactly when an odd number of crossings lie at or left of its
 /// centre: the even-odd rule, also for self-intersecting polygons.
@@ -53,15 +54,15 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// Fewer than three vertices, or any NaN or infinite coordinate, fill
 /// nothing. Huge coordinates are fine: rows and spans are clipped to
 /// `viewport` before any pixel is visited.
-pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
-    // BEGIN SOLUTION scanline: active edge table; crossings at pixel rows; fill ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair
+pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Span)) {
+    // BEGIN SOLUTION scanline: active edge table; crossings at pixel rows; one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair
     if vertices.len() < 3 || viewport.is_empty() || !vertices.iter().all(|v| v.is_finite()) {
         return;
     }
     let n = vertices.len();
-    // Each non-horizontal edge with its first and last row (clipped to the
-    // viewport), sorted by first row.
-    let mut edges: Vec<(i32, i32, Vec2, Vec2)> = (0..n)
+    // The edge table: each non-horizontal edge with its first and last row
+    // (clipped to the viewport), sorted by first row.
+    let mut edges: Vec<Edge> = (0..n)
         .filter_map(|i| {
             let (a, b) = (vertices[i], vertices[(i + 1) % n]);
             let (lo, hi) = (f64::from(a.y.min(b.y)), f64::from(a.y.max(b.y)));
@@ -69,47 +70,69 @@ pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(
             let first = lo.ceil().max(f64::from(viewport.y_min));
             let last = (hi.ceil() - 1.0).min(f64::from(viewport.y_max));
             #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
-            (first <= last).then_some((first as i32, last as i32, a, b))
+            (first <= last).then_some(Edge {
+                first: first as i32,
+                last: last as i32,
+                a,
+                b,
+            })
         })
         .collect();
-    edges.sort_by_key(|e| e.0);
-    let Some(&(start, ..)) = edges.first() else {
+    edges.sort_unstable_by_key(|e| e.first);
+    // The active edge table is the window `edges[done..next]`: edges before
+    // `next` have joined; an edge past its last row is swapped to the
+    // front and `done` moves past it. One allocation for both tables.
+    let (mut done, mut next) = (0, 0);
+    let mut xs: Vec<f64> = Vec::with_capacity(edges.len());
+    let Some(mut y) = edges.first().map(|e| e.first) else {
         return;
     };
-    let mut next = 0; // edges[..next] have joined the active list
-    let mut active: Vec<(i32, Vec2, Vec2)> = Vec::new();
-    let mut xs: Vec<f64> = Vec::new();
-    let mut y = start;
-    loop {
-        while next < edges.len() && edges[next].0 == y {
-            let (_, last, a, b) = edges[next];
-            active.push((last, a, b));
+    while done < edges.len() {
+        if done == next {
+            y = y.max(edges[next].first); // skip rows with no edge
+        }
+        while next < edges.len() && edges[next].first == y {
             next += 1;
         }
-        if active.is_empty() && next == edges.len() {
-            break;
-        }
         xs.clear();
-        xs.extend(active.iter().map(|&(_, a, b)| crossing(a, b, y)));
-        xs.sort_by(f64::total_cmp);
+        xs.extend(edges[done..next].iter().map(|e| crossing(e.a, e.b, y)));
+        xs.sort_unstable_by(f64::total_cmp);
         for pair in xs.chunks_exact(2) {
             let x0 = pair[0].ceil().max(f64::from(viewport.x_min));
             let x1 = (pair[1].ceil() - 1.0).min(f64::from(viewport.x_max));
             if x0 <= x1 {
                 #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
-                for x in x0 as i32..=x1 as i32 {
-                    plot(Pixel::new(x, y));
-                }
+                span(Span::new(y, x0 as i32, x1 as i32));
             }
         }
-        active.retain(|&(last, ..)| last > y);
-        if y == viewport.y_max {
-            break;
+        for i in done..next {
+            if edges[i].last == y {
+                edges.swap(i, done);
+                done += 1;
+            }
         }
-        y += 1;
-        if active.is_empty() && next < edges.len() {
-            y = edges[next].0; // skip rows with no edge
+        // Every edge's last row is clipped to the viewport, so while an
+        // edge is left, `y` is below the viewport's top and `y + 1` fits.
+        if done < edges.len() {
+            y += 1;
         }
     }
     // END SOLUTION
+}
+
+// BEGIN SOLUTION
+
+/// An entry of the edge table: an edge and the rows it crosses.
+struct Edge {
+    first: i32,
+    last: i32,
+    a: Vec2,
+    b: Vec2,
+}
+// END SOLUTION
+
+/// The pixels of [`fill_spans`], one `plot` call per pixel (given: the
+/// tests and the pictures use it).
+pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
+    fill_spans(vertices, viewport, |span| span.pixels().for_each(&mut plot));
 }
