@@ -105,11 +105,14 @@ pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Sp
                 span(Span::new(y, x0 as i32, x1 as i32));
             }
         }
-        for i in done..next {
+        // Edges that end on this row leave the window at its front.
+        let mut i = done;
+        while i < next {
             if edges[i].last == y {
                 edges.swap(i, done);
                 done += 1;
             }
+            i += 1;
         }
         // Every edge's last row is clipped to the viewport, so while an
         // edge is left, `y` is below the viewport's top and `y + 1` fits.
