@@ -320,6 +320,15 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
             + junit.matches("\"/>\n    <testcase").count()
             + junit.matches("\"/>\n  </testsuite>").count()
     );
+
+    // HTML: every topic and task, the first failure escaped, compile errors shown.
+    let html = fs::read_to_string(root.join("target/grade/report.html")).unwrap();
+    assert!(html.starts_with("<!DOCTYPE html>"), "{html}");
+    assert_eq!(html.matches("<h2>").count(), 3, "{html}");
+    assert!(html.contains("href=\"#01-hostile--ok\""), "{html}");
+    assert!(html.contains("7 / 2 rounds down"), "{html}");
+    assert!(html.contains("does not compile"), "{html}");
+    assert!(!html.contains("thread 'halves"), "quotes are escaped");
 }
 
 #[test]

@@ -1,5 +1,6 @@
 //! The report files: `report.json` (ours), `results.json` (Gradescope's
-//! autograder format) and `junit.xml` (for CI test viewers).
+//! autograder format), `junit.xml` (for CI test viewers) and `report.html`
+//! (for people: see [`super::html`]).
 
 use std::fmt::Write as _;
 use std::fs;
@@ -10,7 +11,7 @@ use serde::Serialize;
 
 use super::report::{self, Report, TaskReport, TaskStatus, TestStatus, TopicReport};
 
-/// Writes all three files into `out`.
+/// Writes all four files into `out`.
 pub fn write_all(report: &Report, out: &Path) -> Result<()> {
     let write = |name: &str, contents: String| {
         let path = out.join(name);
@@ -26,6 +27,7 @@ pub fn write_all(report: &Report, out: &Path) -> Result<()> {
             .context("cannot serialise results.json")?,
     )?;
     write("junit.xml", junit(report))?;
+    write("report.html", super::html::page(report))?;
     Ok(())
 }
 

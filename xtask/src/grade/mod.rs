@@ -8,11 +8,12 @@
 //! ```text
 //! topics ──build──> test binaries ──--list──> tests ──run (--jobs at once)──> verdicts
 //!   │ compile error: all its tasks fail, other topics go on            │
-//!   └──────────────────────────────> Report ──> table, report.json, results.json, junit.xml
+//!   └─────────────────────> Report ──> table, report.json, results.json, junit.xml, report.html
 //! ```
 
 mod build;
 mod export;
+mod html;
 mod outcome;
 mod report;
 mod run;
@@ -79,7 +80,7 @@ pub fn default_jobs() -> usize {
     std::thread::available_parallelism().map_or(1, usize::from)
 }
 
-/// Grades, writes `report.json`, `results.json` and `junit.xml` into
+/// Grades, writes `report.json`, `results.json`, `junit.xml` and `report.html` into
 /// `options.out`, and returns the report. Student code failing in any way
 /// is part of the report; `Err` means grading itself could not run.
 pub fn grade(options: &GradeOptions) -> Result<Report> {

@@ -226,8 +226,8 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
         text,
         "{}",
         style.dim(&format!(
-            "report: {} (also results.json, junit.xml; logs and images beside them)",
-            out.join("report.json").display()
+            "report: {} (pictures side by side; also report.json, results.json, junit.xml)",
+            out.join("report.html").display()
         ))
     );
     text

@@ -1,0 +1,281 @@
+//! `report.html`: the grade report as one page a tutor or student opens in
+//! a browser. Per topic a table of tasks; per failing task its first
+//! failure (reason, minimal input, raster and snapshot diffs); per test
+//! that wrote pictures the pictures side by side (`yours.png`,
+//! `reference.png`, `difference.png` ...), linked relative to the page, so
+//! the whole `target/grade/` folder can be zipped and mailed.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::report::{self, Edition, Report, TaskReport, TaskStatus, TestReport, TestStatus};
+
+/// Styles for the page: readable in light and dark mode, monospace diffs.
+const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:72em}\
+table{border-collapse:collapse;margin:.5em 0}td,th{padding:.25em .75em;text-align:left;\
+border-bottom:1px solid #8884}.ok{color:#197a32}.fail{color:#b3261e}.error{color:#a15c00}\
+pre{background:#8881;padding:.75em;overflow-x:auto}figure{display:inline-block;margin:.5em}\
+figure img{image-rendering:pixelated;min-width:8em;max-width:24em;border:1px solid #8886}\
+figcaption{font-size:.85em;text-align:center}";
+
+/// The whole page.
+#[must_use]
+pub fn page(report: &Report) -> String {
+    let mut html = String::new();
+    let edition = match report.edition {
+        Edition::Student => "student code",
+        Edition::Reference => "reference solutions",
+    };
+    let _ = writeln!(
+        html,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
+         <title>Grade report: {} of {} points</title><style>{STYLE}</style></head><body>\n\
+         <h1>{} of {} points</h1>\n<p>{edition}, graded in {:.0} s{}</p>",
+        report::points(report.score),
+        report::points(report.max_score),
+        report::points(report.score),
+        report::points(report.max_score),
+        report.duration_s,
+        if report.complete {
+            ""
+        } else {
+            "; <span class=\"error\">incomplete: some tasks could not be graded</span>"
+        },
+    );
+    for topic in &report.topics {
+        let _ = writeln!(
+            html,
+            "<h2>{} <small>({} of {} points)</small></h2>",
+            escape(&topic.name),
+            report::points(topic.score),
+            report::points(topic.max_score),
+        );
+        if let Some(error) = &topic.compile_error {
+            let _ = writeln!(
+                html,
+                "<p class=\"error\">The topic does not compile:</p><pre>{}</pre>",
+                escape(error)
+            );
+        }
+        for error in &topic.errors {
+            let _ = writeln!(html, "<p class=\"error\">{}</p>", escape(error));
+        }
+        html.push_str(
+            "<table><tr><th>task</th><th>points</th><th>tests</th><th>status</th></tr>\n",
+        );
+        for task in &topic.tasks {
+            let _ = writeln!(
+                html,
+                "<tr><td><a href=\"#{anchor}\">{id}</a>: {title}</td><td>{score} / {points}{bonus}</td>\
+                 <td>{passed} of {run}</td><td class=\"{class}\">{status}</td></tr>",
+                anchor = anchor(&topic.name, &task.id),
+                id = escape(&task.id),
+                title = escape(&task.title),
+                score = report::points(task.score),
+                points = report::points(task.points),
+                bonus = if task.bonus { " (bonus)" } else { "" },
+                passed = task.passed,
+                run = task.passed + task.failed,
+                class = status_class(task.status),
+                status = status_word(task.status),
+            );
+        }
+        html.push_str("</table>\n");
+        for task in &topic.tasks {
+            task_section(&mut html, &topic.name, task);
+        }
+    }
+    html.push_str("</body></html>\n");
+    html
+}
+
+/// A task's heading, its first failure and its pictures.
+fn task_section(html: &mut String, topic: &str, task: &TaskReport) {
+    let pictures: Vec<&TestReport> = task.tests.iter().filter(|t| !t.images.is_empty()).collect();
+    let failure = task.first_failure();
+    if failure.is_none() && pictures.is_empty() && task.error.is_none() {
+        return;
+    }
+    let _ = writeln!(
+        html,
+        "<h3 id=\"{}\">{} / {}</h3>",
+        anchor(topic, &task.id),
+        escape(topic),
+        escape(&task.id)
+    );
+    if let Some(error) = &task.error {
+        let _ = writeln!(html, "<p class=\"error\">Not graded: {}</p>", escape(error));
+    }
+    if let Some(test) = failure {
+        let _ = writeln!(
+            html,
+            "<p class=\"fail\">First failing test: <code>{}</code>{}</p>",
+            escape(&test.name),
+            test.panic_location
+                .as_deref()
+                .map(|at| format!(" at <code>{}</code>", escape(at)))
+                .unwrap_or_default()
+        );
+        let blocks = [
+            ("Reason", &test.reason),
+            ("Minimal failing input", &test.minimal_input),
+            (
+                "Raster diff: # in both, + only yours, - only expected",
+                &test.raster_diff,
+            ),
+            ("Snapshot diff: - expected, + yours", &test.snapshot_diff),
+        ];
+        for (title, text) in blocks {
+            if let Some(text) = text {
+                let _ = writeln!(html, "<p>{title}:</p><pre>{}</pre>", escape(text));
+            }
+        }
+        if task.failed > 1 {
+            let _ = writeln!(
+                html,
+                "<p>{} other test(s) of this task failed too.</p>",
+                task.failed - 1
+            );
+        }
+    }
+    for test in pictures {
+        let Some(dir) = &test.images_dir else {
+            continue;
+        };
+        let _ = writeln!(
+            html,
+            "<div><p><code>{}</code> <span class=\"{}\">{}</span></p>",
+            escape(&test.name),
+            if test.status == TestStatus::Failed {
+                "fail"
+            } else {
+                "ok"
+            },
+            match test.status {
+                TestStatus::Passed => "passed",
+                TestStatus::Failed => "failed",
+                TestStatus::Ignored => "ignored",
+            }
+        );
+        let mut images: Vec<&std::path::PathBuf> = test.images.iter().collect();
+        images.sort_by_key(|image| (picture_rank(image), image.as_path()));
+        for image in images {
+            let path = dir.join(image);
+            let _ = writeln!(
+                html,
+                "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{name}\"></a>\
+                 <figcaption>{name}</figcaption></figure>",
+                src = escape(&url(&path)),
+                name = escape(&image.display().to_string()),
+            );
+        }
+        html.push_str("</div>\n");
+    }
+}
+
+/// Pictures of one comparison in reading order: yours, then the
+/// reference, then the difference; other files after them.
+fn picture_rank(image: &Path) -> u8 {
+    match image.file_stem().and_then(|stem| stem.to_str()) {
+        Some("yours") => 0,
+        Some("reference") => 1,
+        Some("difference") => 2,
+        _ => 3,
+    }
+}
+
+fn status_word(status: TaskStatus) -> &'static str {
+    match status {
+        TaskStatus::Ok => "ok",
+        TaskStatus::Fail => "failed",
+        TaskStatus::CompileError => "does not compile",
+        TaskStatus::Error => "not graded",
+    }
+}
+
+fn status_class(status: TaskStatus) -> &'static str {
+    match status {
+        TaskStatus::Ok => "ok",
+        TaskStatus::Fail => "fail",
+        TaskStatus::CompileError | TaskStatus::Error => "error",
+    }
+}
+
+/// An id for a task's section: `01-lines--dda`.
+fn anchor(topic: &str, task: &str) -> String {
+    format!("{topic}--{task}")
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// A relative path as a URL path: `/` separators, spaces and the few
+/// characters that would end or split a URL percent-encoded.
+fn url(path: &Path) -> String {
+    let joined = path
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect::<Vec<_>>()
+        .join("/");
+    let mut encoded = String::with_capacity(joined.len());
+    for c in joined.chars() {
+        match c {
+            ' ' | '"' | '#' | '%' | '?' | '<' | '>' => {
+                let mut buffer = [0; 4];
+                for byte in c.encode_utf8(&mut buffer).bytes() {
+                    let _ = write!(encoded, "%{byte:02X}");
+                }
+            }
+            _ => encoded.push(c),
+        }
+    }
+    encoded
+}
+
+/// Text for HTML element content and attribute values.
+fn escape(text: &str) -> String {
+    let mut escaped = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => escaped.push_str("&amp;"),
+            '<' => escaped.push_str("&lt;"),
+            '>' => escaped.push_str("&gt;"),
+            '"' => escaped.push_str("&quot;"),
+            '\'' => escaped.push_str("&#39;"),
+            _ => escaped.push(c),
+        }
+    }
+    escaped
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn escape_makes_markup_inert() {
+        assert_eq!(
+            escape("<b>\"x\" & 'y'</b>"),
+            "&lt;b&gt;&quot;x&quot; &amp; &#39;y&#39;&lt;/b&gt;"
+        );
+    }
+
+    #[test]
+    fn urls_use_slashes_and_encode_what_would_break_them() {
+        assert_eq!(
+            url(Path::new("images/01-lines/dda/a b#1.png")),
+            "images/01-lines/dda/a%20b%231.png"
+        );
+    }
+
+    #[test]
+    fn anchors_keep_only_safe_characters() {
+        assert_eq!(anchor("01-lines", "wu::steep"), "01-lines--wu__steep");
+    }
+}
