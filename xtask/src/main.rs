@@ -54,7 +54,8 @@ struct GradeArgs {
     /// Grade the reference solutions instead of the student code.
     #[arg(long)]
     reference: bool,
-    /// Grade another checkout (a submission) instead of this one (same as --root).
+    /// Grade a student's checkout with this course's official tests, or every
+    /// checkout in a folder of them (a gradebook); changed tests are flagged.
     #[arg(long, value_name = "DIR")]
     submission: Option<PathBuf>,
     /// Where report.json, results.json, junit.xml, logs and images go [default: <root>/target/grade].
@@ -69,13 +70,7 @@ struct GradeArgs {
 }
 
 fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
-    let root = match args.submission {
-        Some(dir) => dir
-            .canonicalize()
-            .with_context(|| format!("cannot find the submission {}", dir.display()))?,
-        None => root,
-    };
-    let mut options = grade::GradeOptions::new(root);
+    let mut options = grade::GradeOptions::new(root.clone());
     options.topics = args.topics;
     options.reference = args.reference;
     if let Some(out) = args.out {
@@ -85,7 +80,13 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
         options.jobs = jobs;
     }
     options.target_dir = args.target_dir;
-    grade::run(&options).map(drop)
+    match args.submission {
+        Some(_) if args.reference => {
+            anyhow::bail!("--reference grades this course's solutions; a submission has none")
+        }
+        Some(dir) => grade::submission::run(&root, &dir, &options),
+        None => grade::run(&options).map(drop),
+    }
 }
 
 fn main() -> ExitCode {

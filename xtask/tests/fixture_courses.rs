@@ -495,3 +495,76 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "{text}"
     );
 }
+
+#[test]
+fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
+    let official = fixture("tiny", "official");
+    // A class of two: anna solved `double` and made `negate`'s test pass
+    // without solving it; ben handed in the stubs untouched.
+    let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("tiny-class");
+    if class.exists() {
+        fs::remove_dir_all(&class).unwrap();
+    }
+    for name in ["anna", "ben"] {
+        copy_dir(
+            &official.join("exercises"),
+            &class.join(name).join("exercises"),
+        );
+        fs::copy(
+            official.join("Cargo.toml"),
+            class.join(name).join("Cargo.toml"),
+        )
+        .unwrap();
+    }
+    let anna = class.join("anna/exercises/01-tiny");
+    let ops = fs::read_to_string(anna.join("src/ops.rs")).unwrap();
+    fs::write(
+        anna.join("src/ops.rs"),
+        ops.replace("todo!(\"double: return twice x\")", "x * 2"),
+    )
+    .unwrap();
+    fs::write(anna.join("tests/negate.rs"), "#[test]\nfn negates() {}\n").unwrap();
+    fs::write(anna.join("tests/extra.rs"), "#[test]\nfn free() {}\n").unwrap();
+
+    let out = official.join("target/class");
+    let output = xtask(
+        &official,
+        &[
+            "grade",
+            "--submission",
+            class.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert!(output.status.success(), "{output:?}");
+    assert!(stdout(&output).contains("flagged (grading files changed): anna"));
+
+    let anna_report = read_json(&out.join("anna/report.json"));
+    assert_eq!(anna_report["score"], 2.0, "the official negate test fails");
+    assert_eq!(task(&anna_report, "01-tiny", "negate")["score"], 0.0);
+    let integrity = &anna_report["integrity"];
+    assert_eq!(integrity["changed"][0], "exercises/01-tiny/tests/negate.rs");
+    assert_eq!(integrity["added"][0], "exercises/01-tiny/tests/extra.rs");
+    assert!(
+        anna_report["root"].as_str().unwrap().ends_with("anna"),
+        "the report names the submission, not the stage"
+    );
+    let ben_report = read_json(&out.join("ben/report.json"));
+    assert_eq!(ben_report["score"], 0.0);
+    assert_eq!(ben_report["integrity"]["changed"], serde_json::json!([]));
+    assert_eq!(ben_report["integrity"]["added"], serde_json::json!([]));
+
+    let csv = fs::read_to_string(out.join("gradebook.csv")).unwrap();
+    assert_eq!(
+        csv,
+        "submission,score,max_score,complete,flagged,01-tiny\n\
+         anna,2,3,true,true,2\n\
+         ben,0,3,true,false,0\n"
+    );
+    let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
+    assert!(html.contains("Flagged"), "{html}");
+    // Nothing was written into the submissions.
+    assert!(!class.join("anna/target").exists());
+    assert!(!class.join("ben/target").exists());
+}

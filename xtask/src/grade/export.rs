@@ -61,6 +61,9 @@ pub fn gradescope(report: &Report) -> Gradescope {
             report::Edition::Reference => "reference",
         }
     );
+    if let Some(integrity) = report.integrity.as_ref().filter(|i| i.flagged()) {
+        let _ = write!(output, "\nFLAGGED: {}", integrity.summary());
+    }
     let mut tests = Vec::new();
     for topic in &report.topics {
         for error in &topic.errors {

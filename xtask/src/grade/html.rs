@@ -42,6 +42,13 @@ pub fn page(report: &Report) -> String {
             "; <span class=\"error\">incomplete: some tasks could not be graded</span>"
         },
     );
+    if let Some(integrity) = report.integrity.as_ref().filter(|i| i.flagged()) {
+        let _ = writeln!(
+            html,
+            "<p class=\"error\"><strong>Flagged:</strong> {}</p>",
+            escape(&integrity.summary())
+        );
+    }
     for topic in &report.topics {
         let _ = writeln!(
             html,

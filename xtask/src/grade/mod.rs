@@ -17,6 +17,7 @@ mod html;
 mod outcome;
 mod report;
 mod run;
+pub mod submission;
 mod table;
 
 use std::collections::HashMap;
@@ -165,6 +166,7 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
                     .iter()
                     .all(|task| task.status != TaskStatus::Error)
         }),
+        integrity: None,
         topics,
     };
     export::write_all(&report, &out)?;

@@ -1,7 +1,7 @@
 //! The grade report: topics → tasks → tests, as written to `report.json`.
 //!
 //! ```text
-//! Report { schema, root, edition, score, max_score, duration_s, complete, topics: [
+//! Report { schema, root, edition, score, max_score, duration_s, complete, integrity, topics: [
 //!   TopicReport { name, package, dir, time_limit_s, memory_limit_mib,
 //!                 compile_error, errors, score, max_score, tasks: [
 //!     TaskReport { id, title, points, bonus, score, status, error,
@@ -19,6 +19,7 @@ use std::path::PathBuf;
 use serde::Serialize;
 
 use super::outcome::Exit;
+pub use super::submission::Integrity;
 
 /// Version of the `report.json` layout; bumped when a field changes meaning.
 pub const SCHEMA: u32 = 1;
@@ -51,6 +52,9 @@ pub struct Report {
     /// Every task of every topic was graded: no compile error, no test
     /// binary outside the task list, no task without tests.
     pub complete: bool,
+    /// For a submission graded with `--submission`: how its grading files
+    /// compare with the official course's (`None` for the checkout itself).
+    pub integrity: Option<Integrity>,
     /// Per topic, in course order.
     pub topics: Vec<TopicReport>,
 }

@@ -221,6 +221,14 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
             }
         }
     }
+    if let Some(integrity) = report.integrity.as_ref().filter(|i| i.flagged()) {
+        let _ = writeln!(text);
+        let _ = writeln!(
+            text,
+            "{}",
+            style.warn(&format!("FLAGGED: {}", integrity.summary()))
+        );
+    }
     let _ = writeln!(text);
     let _ = writeln!(
         text,
