@@ -20,9 +20,9 @@
 //! Gradescope's output). Nothing in the submission is ever written to.
 //!
 //! Each submission is graded into `<out>/<name>/` (its stage is
-//! `<out>/<name>/stage/`, its build `<out>/.build/`). A folder whose subfolders are checkouts is a
-//! class: each is graded in turn, and `<out>/gradebook.csv` and
-//! `gradebook.json` list the scores.
+//! `<out>/<name>/stage/`, its build `<out>/.build/`). A folder whose
+//! subfolders are checkouts is a class: each is graded in turn, and
+//! `<out>/gradebook.csv` and `gradebook.json` list the scores.
 
 use std::fmt::Write as _;
 use std::fs;
