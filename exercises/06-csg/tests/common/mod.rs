@@ -268,7 +268,7 @@ pub fn example_scene() -> Scene {
 
 /// The camera of the example pictures: from above, front and right.
 pub fn example_camera() -> Camera {
-    Camera::new(112, 112, Vec3::ZERO, 0.6, -0.5, 36.0).expect("a valid camera")
+    Camera::new(160, 160, Vec3::ZERO, 0.6, -0.5, 52.0).expect("a valid camera")
 }
 
 /// Random primitives inside about `[-2.5, 2.5]³`.
