@@ -22,10 +22,7 @@ pub use glam::Vec3;
 pub mod primitive;
 
 /// Given: CSG trees, products and literals, the validated `Scene` and `Model`, errors.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/06-csg/src/csg.rs"
-)]
+#[cfg_attr(feature = "reference", path = "../../../reference/06-csg/src/csg.rs")]
 pub mod csg;
 
 /// Given: the camera and the framebuffer (depth, 8-bit stencil, surfaces) with OpenGL's tests and operations.
@@ -43,10 +40,7 @@ pub mod raster;
 pub mod raycast;
 
 /// Given: pictures from framebuffers.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/06-csg/src/shade.rs"
-)]
+#[cfg_attr(feature = "reference", path = "../../../reference/06-csg/src/shade.rs")]
 pub mod shade;
 
 /// Task 1: point classification against primitives and trees.
@@ -72,10 +66,7 @@ pub mod classify;
 pub mod normalize;
 
 /// Task 3: bounding-box pruning of a sum of products.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/06-csg/src/prune.rs"
-)]
+#[cfg_attr(feature = "reference", path = "../../../reference/06-csg/src/prune.rs")]
 #[cfg_attr(
     not(feature = "reference"),
     allow(unused_variables, unused_mut, unused_imports, dead_code)

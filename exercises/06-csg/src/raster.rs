@@ -386,7 +386,10 @@ impl Framebuffer {
         self.fragments += 1;
         let s = &state.stencil;
         let stored = self.stencil[i];
-        let op = if !s.func.passes(s.reference & s.read_mask, stored & s.read_mask) {
+        let op = if !s
+            .func
+            .passes(s.reference & s.read_mask, stored & s.read_mask)
+        {
             s.fail
         } else if !state.depth_func.passes(depth, self.depth[i]) {
             s.depth_fail

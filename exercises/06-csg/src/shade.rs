@@ -39,10 +39,12 @@ pub fn shade(frame: &Framebuffer, primitives: &[Primitive]) -> Canvas {
     canvas.clear(BACKGROUND);
     // Towards the light, in camera terms: from the viewer, up and left.
     let towards_light = (camera.ray(Pixel::new(0, 0)).direction * -1.0
-        + 0.5 * (camera.ray(Pixel::new(0, 1)).origin - camera.ray(Pixel::new(0, 0)).origin)
-            .normalize_or(Vec3::Y)
-        - 0.5 * (camera.ray(Pixel::new(1, 0)).origin - camera.ray(Pixel::new(0, 0)).origin)
-            .normalize_or(Vec3::X))
+        + 0.5
+            * (camera.ray(Pixel::new(0, 1)).origin - camera.ray(Pixel::new(0, 0)).origin)
+                .normalize_or(Vec3::Y)
+        - 0.5
+            * (camera.ray(Pixel::new(1, 0)).origin - camera.ray(Pixel::new(0, 0)).origin)
+                .normalize_or(Vec3::X))
     .normalize();
     for p in camera.pixels() {
         let (Some(surface), Some(depth)) = (frame.surface(p), frame.depth(p)) else {

@@ -21,12 +21,33 @@ fn unit_box() -> Primitive {
 fn box_interior_faces_edges_and_outside() {
     let b = unit_box();
     assert_eq!(classify_point(&b, Vec3::ZERO), Class::Inside);
-    assert_eq!(classify_point(&b, Vec3::new(0.99, 1.99, 2.99)), Class::Inside);
-    assert_eq!(classify_point(&b, Vec3::new(1.0, 0.0, 0.0)), Class::On, "a face");
-    assert_eq!(classify_point(&b, Vec3::new(0.0, -2.0, 3.0)), Class::On, "an edge");
-    assert_eq!(classify_point(&b, Vec3::new(-1.0, -2.0, -3.0)), Class::On, "a corner");
-    assert_eq!(classify_point(&b, Vec3::new(1.01, 0.0, 0.0)), Class::Outside);
-    assert_eq!(classify_point(&b, Vec3::new(0.0, 0.0, -3.5)), Class::Outside);
+    assert_eq!(
+        classify_point(&b, Vec3::new(0.99, 1.99, 2.99)),
+        Class::Inside
+    );
+    assert_eq!(
+        classify_point(&b, Vec3::new(1.0, 0.0, 0.0)),
+        Class::On,
+        "a face"
+    );
+    assert_eq!(
+        classify_point(&b, Vec3::new(0.0, -2.0, 3.0)),
+        Class::On,
+        "an edge"
+    );
+    assert_eq!(
+        classify_point(&b, Vec3::new(-1.0, -2.0, -3.0)),
+        Class::On,
+        "a corner"
+    );
+    assert_eq!(
+        classify_point(&b, Vec3::new(1.01, 0.0, 0.0)),
+        Class::Outside
+    );
+    assert_eq!(
+        classify_point(&b, Vec3::new(0.0, 0.0, -3.5)),
+        Class::Outside
+    );
 }
 
 #[test]
@@ -62,14 +83,34 @@ fn cylinder_axis_caps_rim_and_outside_for_every_axis() {
         assert_eq!(classify_point(&cyl, c), Class::Inside, "{what}");
         assert_eq!(classify_point(&cyl, c + 1.5 * e), Class::Inside, "{what}");
         assert_eq!(classify_point(&cyl, c + 2.0 * e), Class::On, "{what}: cap");
-        assert_eq!(classify_point(&cyl, c - 2.0 * e + 0.5 * across), Class::On, "{what}: cap");
+        assert_eq!(
+            classify_point(&cyl, c - 2.0 * e + 0.5 * across),
+            Class::On,
+            "{what}: cap"
+        );
         assert_eq!(classify_point(&cyl, c + across), Class::On, "{what}: side");
-        assert_eq!(classify_point(&cyl, c + 2.0 * e + across), Class::On, "{what}: rim");
-        assert_eq!(classify_point(&cyl, c + 2.5 * e), Class::Outside, "{what}: beyond the cap");
-        assert_eq!(classify_point(&cyl, c + 1.25 * across), Class::Outside, "{what}: beside");
+        assert_eq!(
+            classify_point(&cyl, c + 2.0 * e + across),
+            Class::On,
+            "{what}: rim"
+        );
+        assert_eq!(
+            classify_point(&cyl, c + 2.5 * e),
+            Class::Outside,
+            "{what}: beyond the cap"
+        );
+        assert_eq!(
+            classify_point(&cyl, c + 1.25 * across),
+            Class::Outside,
+            "{what}: beside"
+        );
         // Inside the bounding box, outside the round side.
         let corner = c + 0.9 * across + 0.9 * e.cross(across);
-        assert_eq!(classify_point(&cyl, corner), Class::Outside, "{what}: box corner");
+        assert_eq!(
+            classify_point(&cyl, corner),
+            Class::Outside,
+            "{what}: box corner"
+        );
     }
 }
 

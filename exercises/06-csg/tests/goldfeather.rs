@@ -3,7 +3,9 @@
 mod common;
 
 use canvas::Pixel;
-use common::{assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth};
+use common::{
+    assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth,
+};
 use csg::Vec3;
 use csg::csg::{Csg, Literal, Model, Product, Scene};
 use csg::goldfeather::render;
@@ -31,12 +33,23 @@ fn rendered(model: &Model, camera: Camera) -> (Framebuffer, u64) {
 fn a_single_primitive_shows_its_front_face() {
     let camera = straight_camera();
     let ball = sphere(Vec3::ZERO, 1.6);
-    let model = Model::new(vec![ball], vec![Product::new(vec![Literal::positive(0)])]).expect("valid");
+    let model =
+        Model::new(vec![ball], vec![Product::new(vec![Literal::positive(0)])]).expect("valid");
     let (frame, tests) = rendered(&model, camera);
     assert_eq!(tests, 0, "nothing to test a single primitive against");
     for p in camera.pixels() {
-        let expected = ball.span(&camera.ray(p)).map(|s| (s.near, Surface { primitive: 0, face: Face::Front }));
-        let yours = frame.surface(p).map(|s| (frame.depth(p).unwrap_or(f32::NAN), s));
+        let expected = ball.span(&camera.ray(p)).map(|s| {
+            (
+                s.near,
+                Surface {
+                    primitive: 0,
+                    face: Face::Front,
+                },
+            )
+        });
+        let yours = frame
+            .surface(p)
+            .map(|s| (frame.depth(p).unwrap_or(f32::NAN), s));
         assert_eq!(yours, expected, "{p:?}");
     }
 }
@@ -52,17 +65,32 @@ fn a_dent_shows_the_back_face_of_the_subtracted_sphere() {
     let b = sphere(Vec3::new(0.0, 0.0, 2.0), 1.0);
     let model = Model::new(
         vec![a, b],
-        vec![Product::new(vec![Literal::positive(0), Literal::complement(1)])],
+        vec![Product::new(vec![
+            Literal::positive(0),
+            Literal::complement(1),
+        ])],
     )
     .expect("valid");
     let (frame, tests) = rendered(&model, camera);
     assert_eq!(tests, 2);
     let centre = Pixel::new(4, 4);
-    assert_eq!(frame.surface(centre), Some(Surface { primitive: 1, face: Face::Back }));
+    assert_eq!(
+        frame.surface(centre),
+        Some(Surface {
+            primitive: 1,
+            face: Face::Back
+        })
+    );
     assert_eq!(frame.depth(centre), Some(-1.0));
     // 1.5 units right of the axis: outside B, on A's front at z = √(4 − 2.25).
     let side = Pixel::new(7, 4);
-    assert_eq!(frame.surface(side), Some(Surface { primitive: 0, face: Face::Front }));
+    assert_eq!(
+        frame.surface(side),
+        Some(Surface {
+            primitive: 0,
+            face: Face::Front
+        })
+    );
     assert_eq!(frame.depth(side), Some(-(4.0f32 - 2.25).sqrt()));
 }
 
@@ -72,14 +100,23 @@ fn the_lens_of_two_spheres_shows_both_front_faces() {
     // complement; but the lens is bounded by both spheres' front faces.
     let camera = small_camera();
     let scene = Scene::new(
-        vec![sphere(Vec3::new(-0.6, 0.0, 0.0), 1.5), sphere(Vec3::new(0.6, 0.0, 0.0), 1.5)],
+        vec![
+            sphere(Vec3::new(-0.6, 0.0, 0.0), 1.5),
+            sphere(Vec3::new(0.6, 0.0, 0.0), 1.5),
+        ],
         Csg::intersection(Csg::leaf(0), Csg::leaf(1)),
     )
     .expect("valid");
     let (frame, _) = rendered(&dnf_model(&scene), camera);
     let shown = common::surfaces(&frame);
     for primitive in [0, 1] {
-        assert!(shown.contains(&Surface { primitive, face: Face::Front }), "{shown:?}");
+        assert!(
+            shown.contains(&Surface {
+                primitive,
+                face: Face::Front
+            }),
+            "{shown:?}"
+        );
     }
     assert_frames_equal(&frame, &truth(&scene, camera), "the lens");
 }
@@ -90,9 +127,17 @@ fn parity_tests_are_m_times_m_minus_one_per_product() {
         .map(|k| sphere(Vec3::new(k as f32 * 0.3, 0.0, 0.0), 1.0))
         .collect();
     let chain = |m: usize| {
-        Product::new((0..m).map(|k| Literal { primitive: k, complement: k % 2 == 1 }).collect())
+        Product::new(
+            (0..m)
+                .map(|k| Literal {
+                    primitive: k,
+                    complement: k % 2 == 1,
+                })
+                .collect(),
+        )
     };
-    let model = Model::new(primitives, vec![chain(1), chain(2), chain(3), chain(5)]).expect("valid");
+    let model =
+        Model::new(primitives, vec![chain(1), chain(2), chain(3), chain(5)]).expect("valid");
     let (_, tests) = rendered(&model, small_camera());
     assert_eq!(tests, 0 + 2 + 6 + 20);
 }
@@ -110,8 +155,16 @@ fn the_empty_sum_draws_nothing_and_rendering_merges_z_less() {
     let far = sphere(Vec3::new(0.3, 0.0, -0.5), 1.2);
     let scene = Scene::new(vec![near, far], Csg::union(Csg::leaf(0), Csg::leaf(1))).expect("valid");
     let mut frame = Framebuffer::new(camera);
-    let first = Model::new(vec![near, far], vec![Product::new(vec![Literal::positive(0)])]).expect("valid");
-    let second = Model::new(vec![near, far], vec![Product::new(vec![Literal::positive(1)])]).expect("valid");
+    let first = Model::new(
+        vec![near, far],
+        vec![Product::new(vec![Literal::positive(0)])],
+    )
+    .expect("valid");
+    let second = Model::new(
+        vec![near, far],
+        vec![Product::new(vec![Literal::positive(1)])],
+    )
+    .expect("valid");
     render(&first, &mut frame);
     render(&second, &mut frame);
     assert_frames_equal(&frame, &truth(&scene, camera), "two renderings merged");
@@ -123,7 +176,10 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     let camera = example_camera();
     let model = dnf_model(&scene);
     let (frame, tests) = rendered(&model, camera);
-    assert_eq!(tests, 20, "one product of five literals: 5 · 4 parity tests");
+    assert_eq!(
+        tests, 20,
+        "one product of five literals: 5 · 4 parity tests"
+    );
     let truth = truth(&scene, camera);
     assert_frames_equal(&frame, &truth, "the example");
     let picture = csg::shade::side_by_side(&[
@@ -133,7 +189,10 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     testkit::image::assert_image_matches(
         "goldfeather_example",
         &picture,
-        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/goldfeather_example.png"),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/goldfeather_example.png"
+        ),
         testkit::image::Tolerance {
             channel: 2.0 / 255.0,
             mismatched_fraction: 0.002,

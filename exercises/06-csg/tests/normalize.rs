@@ -26,7 +26,11 @@ fn d(x: Csg, y: Csg) -> Csg {
 fn each_rule_rewrites_as_the_table_says() {
     let (x, y, z) = (p(0), p(1), p(2));
     let cases = [
-        (d(x.clone(), u(y.clone(), z.clone())), 1, d(d(x.clone(), y.clone()), z.clone())),
+        (
+            d(x.clone(), u(y.clone(), z.clone())),
+            1,
+            d(d(x.clone(), y.clone()), z.clone()),
+        ),
         (
             i(x.clone(), u(y.clone(), z.clone())),
             2,
@@ -37,14 +41,26 @@ fn each_rule_rewrites_as_the_table_says() {
             3,
             u(d(x.clone(), y.clone()), d(x.clone(), z.clone())),
         ),
-        (i(x.clone(), i(y.clone(), z.clone())), 4, i(i(x.clone(), y.clone()), z.clone())),
+        (
+            i(x.clone(), i(y.clone(), z.clone())),
+            4,
+            i(i(x.clone(), y.clone()), z.clone()),
+        ),
         (
             d(x.clone(), d(y.clone(), z.clone())),
             5,
             u(d(x.clone(), y.clone()), i(x.clone(), z.clone())),
         ),
-        (i(x.clone(), d(y.clone(), z.clone())), 6, d(i(x.clone(), y.clone()), z.clone())),
-        (i(d(x.clone(), y.clone()), z.clone()), 7, d(i(x.clone(), z.clone()), y.clone())),
+        (
+            i(x.clone(), d(y.clone(), z.clone())),
+            6,
+            d(i(x.clone(), y.clone()), z.clone()),
+        ),
+        (
+            i(d(x.clone(), y.clone()), z.clone()),
+            7,
+            d(i(x.clone(), z.clone()), y.clone()),
+        ),
         (
             d(u(x.clone(), y.clone()), z.clone()),
             8,
@@ -90,10 +106,7 @@ fn the_first_matching_rule_wins() {
     let tree = d(u(p(0), p(1)), u(p(2), p(3)));
     let n = normalize(&tree);
     assert_eq!(n.rules, vec![1, 8, 8]);
-    assert_eq!(
-        n.tree,
-        u(d(d(p(0), p(2)), p(3)), d(d(p(1), p(2)), p(3)))
-    );
+    assert_eq!(n.tree, u(d(d(p(0), p(2)), p(3)), d(d(p(1), p(2)), p(3))));
 }
 
 #[test]
@@ -108,8 +121,16 @@ fn a_chain_with_a_difference_inside() {
     assert_eq!(
         products(&n.tree),
         Ok(vec![
-            Product::new(vec![Literal::positive(0), Literal::positive(1), Literal::complement(2)]),
-            Product::new(vec![Literal::positive(0), Literal::positive(1), Literal::complement(3)]),
+            Product::new(vec![
+                Literal::positive(0),
+                Literal::positive(1),
+                Literal::complement(2)
+            ]),
+            Product::new(vec![
+                Literal::positive(0),
+                Literal::positive(1),
+                Literal::complement(3)
+            ]),
         ])
     );
 }

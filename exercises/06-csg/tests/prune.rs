@@ -29,14 +29,21 @@ const NOT_C: Literal = Literal::complement(2);
 /// A at x = 0, B at x = 5 (far apart), C at x = 1 (overlapping A), all of
 /// radius 1.5: bound(A) = [−1.5, 1.5] in x, bound(B) = [3.5, 6.5].
 fn three_spheres(products: Vec<Product>) -> Model {
-    Model::new(vec![sphere(0.0, 1.5), sphere(5.0, 1.5), sphere(1.0, 1.5)], products)
-        .expect("valid")
+    Model::new(
+        vec![sphere(0.0, 1.5), sphere(5.0, 1.5), sphere(1.0, 1.5)],
+        products,
+    )
+    .expect("valid")
 }
 
 #[test]
 fn disjoint_bounds_empty_a_product() {
     let model = three_spheres(vec![product(&[A, B]), product(&[A, C])]);
-    assert_eq!(prune(&model), vec![product(&[A, C])], "A ∩ B = ∅, A ∩ C stays");
+    assert_eq!(
+        prune(&model),
+        vec![product(&[A, C])],
+        "A ∩ B = ∅, A ∩ C stays"
+    );
 }
 
 #[test]
@@ -57,8 +64,17 @@ fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
     // which B's bound misses: A ∩ D ∩ B = ∅, and in A ∩ D − B the B goes.
     let d = Literal::positive(3);
     let model = Model::new(
-        vec![sphere(0.0, 1.5), sphere(5.0, 1.5), sphere(1.0, 1.5), sphere(3.0, 1.5)],
-        vec![product(&[A, d, B]), product(&[A, d, NOT_B]), product(&[d, NOT_B])],
+        vec![
+            sphere(0.0, 1.5),
+            sphere(5.0, 1.5),
+            sphere(1.0, 1.5),
+            sphere(3.0, 1.5),
+        ],
+        vec![
+            product(&[A, d, B]),
+            product(&[A, d, NOT_B]),
+            product(&[d, NOT_B]),
+        ],
     )
     .expect("valid");
     assert_eq!(
@@ -83,7 +99,11 @@ fn random_model() -> impl Strategy<Value = Model> {
     (
         prop::collection::vec(primitive(), 6),
         prop::collection::vec(
-            (Just((0..6).collect::<Vec<usize>>()).prop_shuffle(), 1usize..=6, prop::collection::vec(any::<bool>(), 6)),
+            (
+                Just((0..6).collect::<Vec<usize>>()).prop_shuffle(),
+                1usize..=6,
+                prop::collection::vec(any::<bool>(), 6),
+            ),
             0..5,
         ),
     )

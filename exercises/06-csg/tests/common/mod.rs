@@ -273,7 +273,8 @@ pub fn example_camera() -> Camera {
 
 /// Random primitives inside about `[-2.5, 2.5]³`.
 pub fn primitive() -> impl Strategy<Value = Primitive> {
-    let centre = (-1.5f32..1.5, -1.5f32..1.5, -1.5f32..1.5).prop_map(|(x, y, z)| Vec3::new(x, y, z));
+    let centre =
+        (-1.5f32..1.5, -1.5f32..1.5, -1.5f32..1.5).prop_map(|(x, y, z)| Vec3::new(x, y, z));
     let size = || 0.3f32..1.2;
     let axis = prop_oneof![Just(Axis::X), Just(Axis::Y), Just(Axis::Z)];
     prop_oneof![
