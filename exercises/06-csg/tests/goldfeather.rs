@@ -139,7 +139,8 @@ fn parity_tests_are_m_times_m_minus_one_per_product() {
     let model =
         Model::new(primitives, vec![chain(1), chain(2), chain(3), chain(5)]).expect("valid");
     let (_, tests) = rendered(&model, small_camera());
-    assert_eq!(tests, 0 + 2 + 6 + 20);
+    // Products of 1, 2, 3 and 5 literals: 0 + 2 + 6 + 20.
+    assert_eq!(tests, 28);
 }
 
 #[test]

@@ -38,7 +38,8 @@ pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
     }
     // Two conditions "a ≤ b", each strict (Inside) or tight (On).
     let combine = |conditions: &[(f32, f32)]| {
-        if conditions.iter().any(|&(a, b)| !(a <= b)) {
+        // `a <= b` is false for NaN, so a NaN anywhere gives Outside.
+        if !conditions.iter().all(|&(a, b)| a <= b) {
             Class::Outside
         } else if conditions.iter().all(|&(a, b)| a < b) {
             Class::Inside
