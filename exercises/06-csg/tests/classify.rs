@@ -115,11 +115,29 @@ fn cylinder_axis_caps_rim_and_outside_for_every_axis() {
 }
 
 #[test]
-fn nan_points_are_outside_everything() {
+fn nan_points_and_broken_primitives_are_outside_everything() {
     let p = Vec3::new(f32::NAN, 0.0, 0.0);
     assert_eq!(classify_point(&unit_box(), p), Class::Outside);
     let scene = Scene::new(vec![unit_box()], Csg::leaf(0)).expect("valid");
     assert!(!contains(&scene, p));
+    // A scene refuses broken primitives and unknown leaves; a primitive
+    // classified on its own with a NaN parameter contains nothing.
+    let nan_sphere = Primitive::Sphere {
+        centre: Vec3::ZERO,
+        radius: f32::NAN,
+    };
+    let flat_box = Primitive::Cuboid {
+        min: Vec3::ZERO,
+        max: Vec3::new(1.0, 0.0, 1.0),
+    };
+    for bad in [nan_sphere, flat_box] {
+        assert!(Scene::new(vec![bad], Csg::leaf(0)).is_err(), "{bad:?}");
+    }
+    assert!(
+        Scene::new(vec![unit_box()], Csg::leaf(1)).is_err(),
+        "unknown leaf"
+    );
+    assert_eq!(classify_point(&nan_sphere, Vec3::ZERO), Class::Outside);
 }
 
 /// Two overlapping unit-ish boxes along x: A = [0, 2]³, B = [1, 3] × [0, 2]².

@@ -144,8 +144,24 @@ fn parity_tests_are_m_times_m_minus_one_per_product() {
 }
 
 #[test]
-fn the_empty_sum_draws_nothing_and_rendering_merges_z_less() {
+fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_less() {
     let camera = small_camera();
+    // What a model refuses: an empty product, a product that starts with a
+    // complement (an unbounded solid), a primitive named twice.
+    let two = vec![sphere(Vec3::ZERO, 1.0), sphere(Vec3::X, 1.0)];
+    for bad in [
+        vec![],
+        vec![Literal::complement(0), Literal::positive(1)],
+        vec![Literal::positive(0), Literal::complement(0)],
+        vec![Literal::positive(2)],
+    ] {
+        assert!(
+            Model::new(two.clone(), vec![Product::new(bad.clone())]).is_err(),
+            "{bad:?}"
+        );
+    }
+    assert!(Camera::new(0, 10, Vec3::ZERO, 0.0, 0.0, 1.0).is_err());
+    assert!(Camera::new(10, 10, Vec3::ZERO, f32::NAN, 0.0, 1.0).is_err());
     let empty = Model::new(vec![sphere(Vec3::ZERO, 1.0)], vec![]).expect("valid");
     let (frame, tests) = rendered(&empty, camera);
     assert_eq!(tests, 0);

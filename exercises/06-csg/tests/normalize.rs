@@ -136,6 +136,20 @@ fn a_chain_with_a_difference_inside() {
 }
 
 #[test]
+fn the_procedure_stops_once_the_right_operand_is_a_primitive() {
+    // (X ∩ (Y − Z)) ∩ W: at the root no rule matches (W is a primitive, the
+    // left operand an ∩); in the left subtree rule 6 gives (X ∩ Y) − Z.
+    // Back at the root the `until` condition holds, so the procedure
+    // stops — although rule 7 would now match ((X ∩ Y) − Z) ∩ W. The
+    // result is in normal form all the same: normal form is not a fixed
+    // point of the nine rules.
+    let tree = i(i(p(0), d(p(1), p(2))), p(3));
+    let n = normalize(&tree);
+    assert_eq!(n.rules, vec![6]);
+    assert_eq!(n.tree, i(d(i(p(0), p(1)), p(2)), p(3)));
+}
+
+#[test]
 fn primitives_and_normal_trees_are_left_alone() {
     for tree in [
         p(3),
