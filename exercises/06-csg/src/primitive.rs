@@ -119,9 +119,9 @@ impl Ray {
 
 /// Where a ray runs through a convex primitive: it enters at depth `near`
 /// (a front face) and leaves at depth `far` (a back face), `near < far`.
-/// Either may be infinite when the ray runs along an unbounded direction
-/// of a slab test (never for the bounded primitives here, except in
-/// degenerate parallel cases that are then clipped by another slab).
+/// Both are finite for a unit direction: a slab the ray runs parallel to
+/// gives the whole line, but some other slab (or the round side of a
+/// cylinder) is crossed and bounds the span.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Span {
     /// Depth of the front face.
