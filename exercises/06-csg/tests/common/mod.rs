@@ -1,0 +1,349 @@
+//! What the tests compare with: membership and the sum of products by
+//! their definitions, written differently from the sheet's algorithms,
+//! random scenes, and the seed's example.
+#![allow(dead_code)] // each test file uses a different part
+
+use csg::Vec3;
+use csg::csg::{Csg, Literal, Model, Product, Scene};
+use csg::primitive::{Axis, Primitive};
+use csg::raster::{Camera, Framebuffer, Surface};
+use proptest::prelude::*;
+
+// ---------------------------------------------------------------------------
+// Membership by definition.
+
+/// Whether `p` lies in the closed primitive: each primitive as the set of
+/// points with a non-positive "excess" in every constraint.
+pub fn in_primitive(primitive: &Primitive, p: Vec3) -> bool {
+    let excess: Vec<f32> = match *primitive {
+        Primitive::Cuboid { min, max } => (0..3)
+            .flat_map(|i| [min[i] - p[i], p[i] - max[i]])
+            .collect(),
+        Primitive::Sphere { centre, radius } => {
+            vec![(p - centre).length_squared() - radius * radius]
+        }
+        Primitive::Cylinder {
+            centre,
+            axis,
+            radius,
+            half_length,
+        } => {
+            let k = match axis {
+                Axis::X => 0,
+                Axis::Y => 1,
+                Axis::Z => 2,
+            };
+            let d = p - centre;
+            let across: f32 = (0..3).filter(|&i| i != k).map(|i| d[i] * d[i]).sum();
+            vec![d[k].abs() - half_length, across - radius * radius]
+        }
+    };
+    excess.iter().all(|&e| e <= 0.0)
+}
+
+/// Whether `p` lies in the solid of `tree`, by the seed's rules.
+pub fn in_tree(tree: &Csg, primitives: &[Primitive], p: Vec3) -> bool {
+    match tree {
+        Csg::Primitive(i) => in_primitive(&primitives[*i], p),
+        Csg::Union(x, y) => in_tree(x, primitives, p) || in_tree(y, primitives, p),
+        Csg::Intersection(x, y) => in_tree(x, primitives, p) && in_tree(y, primitives, p),
+        Csg::Difference(x, y) => in_tree(x, primitives, p) && !in_tree(y, primitives, p),
+    }
+}
+
+/// Whether `p` lies in the union of the products.
+pub fn in_sum(products: &[Product], primitives: &[Primitive], p: Vec3) -> bool {
+    products.iter().any(|product| {
+        product
+            .literals
+            .iter()
+            .all(|l| in_primitive(&primitives[l.primitive], p) != l.complement)
+    })
+}
+
+// ---------------------------------------------------------------------------
+// The sum of products by expansion (disjunctive normal form), not by the
+// nine rules: a sum is a list of products, a product a list of literals.
+
+fn complement_of_sum(sum: &[Vec<Literal>]) -> Vec<Vec<Literal>> {
+    // ¬(P₁ ∪ P₂ ∪ …) = ¬P₁ ∩ ¬P₂ ∩ …, and ¬(l₁ ∩ l₂ ∩ …) = ¬l₁ ∪ ¬l₂ ∪ …
+    let mut result: Vec<Vec<Literal>> = vec![Vec::new()];
+    for product in sum {
+        let negated: Vec<Vec<Literal>> = product
+            .iter()
+            .map(|l| {
+                vec![Literal {
+                    primitive: l.primitive,
+                    complement: !l.complement,
+                }]
+            })
+            .collect();
+        result = times(&result, &negated);
+    }
+    result
+}
+
+fn times(x: &[Vec<Literal>], y: &[Vec<Literal>]) -> Vec<Vec<Literal>> {
+    let mut out = Vec::new();
+    for a in x {
+        for b in y {
+            out.push(a.iter().chain(b.iter()).copied().collect());
+        }
+    }
+    out
+}
+
+fn expand(tree: &Csg) -> Vec<Vec<Literal>> {
+    match tree {
+        Csg::Primitive(i) => vec![vec![Literal::positive(*i)]],
+        Csg::Union(x, y) => {
+            let mut s = expand(x);
+            s.extend(expand(y));
+            s
+        }
+        Csg::Intersection(x, y) => times(&expand(x), &expand(y)),
+        Csg::Difference(x, y) => times(&expand(x), &complement_of_sum(&expand(y))),
+    }
+}
+
+/// The products of `tree` by expansion, each with a positive literal
+/// first, products naming a primitive twice simplified (`A ∩ A = A`,
+/// `A ∩ Ā = ∅`).
+pub fn dnf(tree: &Csg) -> Vec<Product> {
+    expand(tree)
+        .into_iter()
+        .filter_map(|mut literals| {
+            literals.sort_by_key(|l| (l.complement, l.primitive));
+            literals.dedup();
+            let contradictory = literals.iter().any(|l| {
+                literals
+                    .iter()
+                    .any(|m| m.primitive == l.primitive && m.complement != l.complement)
+            });
+            let has_positive = literals.first().is_some_and(|l| !l.complement);
+            (!contradictory && has_positive).then(|| Product::new(literals))
+        })
+        .collect()
+}
+
+/// Whether `tree` is in normal form: a union of products, each a
+/// left-deep chain of ∩/− with primitives as right operands.
+pub fn is_normal(tree: &Csg) -> bool {
+    fn is_product(t: &Csg) -> bool {
+        match t {
+            Csg::Primitive(_) => true,
+            Csg::Union(..) => false,
+            Csg::Intersection(x, y) | Csg::Difference(x, y) => y.is_primitive() && is_product(x),
+        }
+    }
+    match tree {
+        Csg::Union(x, y) => is_normal(x) && is_normal(y),
+        t => is_product(t),
+    }
+}
+
+/// Reads a product back as a tree (left-deep).
+pub fn product_tree(product: &Product) -> Csg {
+    let mut literals = product.literals.iter();
+    let first = literals.next().expect("a product is not empty");
+    let mut tree = Csg::leaf(first.primitive);
+    for l in literals {
+        tree = if l.complement {
+            Csg::difference(tree, Csg::leaf(l.primitive))
+        } else {
+            Csg::intersection(tree, Csg::leaf(l.primitive))
+        };
+    }
+    tree
+}
+
+// ---------------------------------------------------------------------------
+// Frames.
+
+/// The pixels where two frames disagree in surface or depth.
+pub fn frame_differences(a: &Framebuffer, b: &Framebuffer) -> Vec<String> {
+    a.camera()
+        .pixels()
+        .filter_map(|p| {
+            let (sa, sb) = (a.surface(p), b.surface(p));
+            let (da, db) = (a.depth(p), b.depth(p));
+            (sa != sb || (sa.is_some() && da != db))
+                .then(|| format!("{p:?}: {sa:?} at {da:?} vs {sb:?} at {db:?}"))
+        })
+        .collect()
+}
+
+/// Panics with the first few differing pixels unless the frames agree.
+#[track_caller]
+pub fn assert_frames_equal(yours: &Framebuffer, truth: &Framebuffer, what: &str) {
+    let diff = frame_differences(yours, truth);
+    assert!(
+        diff.is_empty(),
+        "{what}: {} pixels differ from the ray caster (yours vs truth), first ones:\n{}",
+        diff.len(),
+        diff[..diff.len().min(8)].join("\n")
+    );
+}
+
+/// The ray caster's frame of `scene`.
+pub fn truth(scene: &Scene, camera: Camera) -> Framebuffer {
+    let mut frame = Framebuffer::new(camera);
+    csg::raycast::raycast(scene, &mut frame);
+    frame
+}
+
+/// The surfaces a frame shows, as a set.
+pub fn surfaces(frame: &Framebuffer) -> std::collections::BTreeSet<Surface> {
+    frame
+        .camera()
+        .pixels()
+        .filter_map(|p| frame.surface(p))
+        .collect()
+}
+
+/// How many entry faces of the product's literals each pixel's ray
+/// crosses, the largest such count: the depth complexity by definition.
+pub fn depth_complexity(model: &Model, product: &Product, camera: &Camera) -> u8 {
+    camera
+        .pixels()
+        .map(|p| {
+            let ray = camera.ray(p);
+            product
+                .literals
+                .iter()
+                .filter(|l| model.primitives()[l.primitive].span(&ray).is_some())
+                .count() as u8
+        })
+        .max()
+        .unwrap_or(0)
+}
+
+// ---------------------------------------------------------------------------
+// Cameras and scenes.
+
+/// A small oblique camera over the cube `[-2.5, 2.5]³` for random scenes.
+pub fn small_camera() -> Camera {
+    Camera::new(24, 24, Vec3::ZERO, 0.55, -0.45, 4.5).expect("a valid camera")
+}
+
+/// The seed's example (its figures 1–3, 5 and 9 show a CSG of boxes,
+/// spheres and cylinders; this is the classic one): a cube and a sphere
+/// intersected, three cylinders along x, y and z cut out —
+/// `(C ∩ S) − (X ∪ (Y ∪ Z))`, which normalizes with rule 1 twice at the
+/// root, as the seed's §4.2 says of its example.
+pub fn example_primitives() -> Vec<Primitive> {
+    let cylinder = |axis| Primitive::Cylinder {
+        centre: Vec3::ZERO,
+        axis,
+        radius: 0.55,
+        half_length: 1.6,
+    };
+    vec![
+        Primitive::Cuboid {
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+        },
+        Primitive::Sphere {
+            centre: Vec3::ZERO,
+            radius: 1.32,
+        },
+        cylinder(Axis::X),
+        cylinder(Axis::Y),
+        cylinder(Axis::Z),
+    ]
+}
+
+/// The example's tree, `(P0 ∩ P1) − (P2 ∪ (P3 ∪ P4))`.
+pub fn example_tree() -> Csg {
+    Csg::difference(
+        Csg::intersection(Csg::leaf(0), Csg::leaf(1)),
+        Csg::union(Csg::leaf(2), Csg::union(Csg::leaf(3), Csg::leaf(4))),
+    )
+}
+
+/// The example as a scene.
+pub fn example_scene() -> Scene {
+    Scene::new(example_primitives(), example_tree()).expect("a valid scene")
+}
+
+/// The camera of the example pictures: from above, front and right.
+pub fn example_camera() -> Camera {
+    Camera::new(160, 160, Vec3::ZERO, 0.6, -0.5, 52.0).expect("a valid camera")
+}
+
+/// Random primitives inside about `[-2.5, 2.5]³`.
+pub fn primitive() -> impl Strategy<Value = Primitive> {
+    let centre =
+        (-1.5f32..1.5, -1.5f32..1.5, -1.5f32..1.5).prop_map(|(x, y, z)| Vec3::new(x, y, z));
+    let size = || 0.3f32..1.2;
+    let axis = prop_oneof![Just(Axis::X), Just(Axis::Y), Just(Axis::Z)];
+    prop_oneof![
+        (centre.clone(), size(), size(), size()).prop_map(|(c, a, b, d)| {
+            let half = Vec3::new(a, b, d);
+            Primitive::Cuboid {
+                min: c - half,
+                max: c + half,
+            }
+        }),
+        (centre.clone(), size()).prop_map(|(centre, radius)| Primitive::Sphere { centre, radius }),
+        (centre, axis, size(), size()).prop_map(|(centre, axis, radius, half_length)| {
+            Primitive::Cylinder {
+                centre,
+                axis,
+                radius,
+                half_length,
+            }
+        }),
+    ]
+}
+
+/// A random tree over the given leaves (in this order), random shape and
+/// operations.
+fn tree_over(leaves: Vec<usize>) -> BoxedStrategy<Csg> {
+    if leaves.len() == 1 {
+        return Just(Csg::leaf(leaves[0])).boxed();
+    }
+    let n = leaves.len();
+    (1..n, 0..3u8)
+        .prop_flat_map(move |(split, op)| {
+            let (l, r) = leaves.split_at(split);
+            (tree_over(l.to_vec()), tree_over(r.to_vec()), Just(op))
+        })
+        .prop_map(|(x, y, op)| match op {
+            0 => Csg::union(x, y),
+            1 => Csg::intersection(x, y),
+            _ => Csg::difference(x, y),
+        })
+        .boxed()
+}
+
+/// A random tree with `1..=max_leaves` leaves naming primitives
+/// `0..primitives`, repetitions allowed.
+pub fn tree(primitives: usize, max_leaves: usize) -> impl Strategy<Value = Csg> {
+    prop::collection::vec(0..primitives, 1..=max_leaves).prop_flat_map(tree_over)
+}
+
+/// A random scene of `1..=max` primitives, each a leaf exactly once, in
+/// random order.
+pub fn scene(max: usize) -> impl Strategy<Value = Scene> {
+    prop::collection::vec(primitive(), 1..=max)
+        .prop_flat_map(|primitives| {
+            let n = primitives.len();
+            (
+                Just(primitives),
+                Just((0..n).collect::<Vec<_>>()).prop_shuffle(),
+            )
+        })
+        .prop_flat_map(|(primitives, order)| (Just(primitives), tree_over(order)))
+        .prop_map(|(primitives, tree)| Scene::new(primitives, tree).expect("valid by construction"))
+}
+
+/// Random points in the region of the random primitives.
+pub fn point() -> impl Strategy<Value = Vec3> {
+    (-2.8f32..2.8, -2.8f32..2.8, -2.8f32..2.8).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+/// The model of a scene with the products by expansion.
+pub fn dnf_model(scene: &Scene) -> Model {
+    Model::new(scene.primitives().to_vec(), dnf(scene.tree())).expect("a valid model")
+}

@@ -1,0 +1,232 @@
+//! Task 4: Goldfeather rendering with the parity test.
+
+mod common;
+
+use canvas::Pixel;
+use common::{
+    assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth,
+};
+use csg::Vec3;
+use csg::csg::{Csg, Literal, Model, Product, Scene};
+use csg::goldfeather::render;
+use csg::primitive::Primitive;
+use csg::raster::{Camera, Face, Framebuffer, Surface};
+use proptest::prelude::*;
+
+/// Looks along −z: pixel (4, 4) of a 9 × 9 grid at 2 pixels per unit
+/// looks down the z axis, depth t at z = −t.
+fn straight_camera() -> Camera {
+    Camera::new(9, 9, Vec3::ZERO, 0.0, 0.0, 2.0).expect("valid")
+}
+
+fn sphere(centre: Vec3, radius: f32) -> Primitive {
+    Primitive::Sphere { centre, radius }
+}
+
+fn rendered(model: &Model, camera: Camera) -> (Framebuffer, u64) {
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(model, &mut frame);
+    (frame, stats.parity_tests)
+}
+
+#[test]
+fn a_single_primitive_shows_its_front_face() {
+    let camera = straight_camera();
+    let ball = sphere(Vec3::ZERO, 1.6);
+    let model =
+        Model::new(vec![ball], vec![Product::new(vec![Literal::positive(0)])]).expect("valid");
+    let (frame, tests) = rendered(&model, camera);
+    assert_eq!(tests, 0, "nothing to test a single primitive against");
+    for p in camera.pixels() {
+        let expected = ball.span(&camera.ray(p)).map(|s| {
+            (
+                s.near,
+                Surface {
+                    primitive: 0,
+                    face: Face::Front,
+                },
+            )
+        });
+        let yours = frame
+            .surface(p)
+            .map(|s| (frame.depth(p).unwrap_or(f32::NAN), s));
+        assert_eq!(yours, expected, "{p:?}");
+    }
+}
+
+#[test]
+fn a_dent_shows_the_back_face_of_the_subtracted_sphere() {
+    //   viewer (t = −∞) ──▶  z decreasing
+    //         B: z ∈ [1, 3]      A: z ∈ [−2, 2]
+    //   along the axis, A − B = z ∈ [−2, 1): entered at z = 1, t = −1,
+    //   through B's back face
+    let camera = straight_camera();
+    let a = sphere(Vec3::ZERO, 2.0);
+    let b = sphere(Vec3::new(0.0, 0.0, 2.0), 1.0);
+    let model = Model::new(
+        vec![a, b],
+        vec![Product::new(vec![
+            Literal::positive(0),
+            Literal::complement(1),
+        ])],
+    )
+    .expect("valid");
+    let (frame, tests) = rendered(&model, camera);
+    assert_eq!(tests, 2);
+    let centre = Pixel::new(4, 4);
+    assert_eq!(
+        frame.surface(centre),
+        Some(Surface {
+            primitive: 1,
+            face: Face::Back
+        })
+    );
+    assert_eq!(frame.depth(centre), Some(-1.0));
+    // 1.5 units right of the axis: outside B, on A's front at z = √(4 − 2.25).
+    let side = Pixel::new(7, 4);
+    assert_eq!(
+        frame.surface(side),
+        Some(Surface {
+            primitive: 0,
+            face: Face::Front
+        })
+    );
+    assert_eq!(frame.depth(side), Some(-(4.0f32 - 2.25).sqrt()));
+}
+
+#[test]
+fn the_lens_of_two_spheres_shows_both_front_faces() {
+    // The seed says Y ∩ X need not be drawn after X ∩ Y when Y is not a
+    // complement; but the lens is bounded by both spheres' front faces.
+    let camera = small_camera();
+    let scene = Scene::new(
+        vec![
+            sphere(Vec3::new(-0.6, 0.0, 0.0), 1.5),
+            sphere(Vec3::new(0.6, 0.0, 0.0), 1.5),
+        ],
+        Csg::intersection(Csg::leaf(0), Csg::leaf(1)),
+    )
+    .expect("valid");
+    let (frame, _) = rendered(&dnf_model(&scene), camera);
+    let shown = common::surfaces(&frame);
+    for primitive in [0, 1] {
+        assert!(
+            shown.contains(&Surface {
+                primitive,
+                face: Face::Front
+            }),
+            "{shown:?}"
+        );
+    }
+    assert_frames_equal(&frame, &truth(&scene, camera), "the lens");
+}
+
+#[test]
+fn parity_tests_are_m_times_m_minus_one_per_product() {
+    let primitives: Vec<Primitive> = (0..5)
+        .map(|k| sphere(Vec3::new(k as f32 * 0.3, 0.0, 0.0), 1.0))
+        .collect();
+    let chain = |m: usize| {
+        Product::new(
+            (0..m)
+                .map(|k| Literal {
+                    primitive: k,
+                    complement: k % 2 == 1,
+                })
+                .collect(),
+        )
+    };
+    let model =
+        Model::new(primitives, vec![chain(1), chain(2), chain(3), chain(5)]).expect("valid");
+    let (_, tests) = rendered(&model, small_camera());
+    // Products of 1, 2, 3 and 5 literals: 0 + 2 + 6 + 20.
+    assert_eq!(tests, 28);
+}
+
+#[test]
+fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_less() {
+    let camera = small_camera();
+    // What a model refuses: an empty product, a product that starts with a
+    // complement (an unbounded solid), a primitive named twice.
+    let two = vec![sphere(Vec3::ZERO, 1.0), sphere(Vec3::X, 1.0)];
+    for bad in [
+        vec![],
+        vec![Literal::complement(0), Literal::positive(1)],
+        vec![Literal::positive(0), Literal::complement(0)],
+        vec![Literal::positive(2)],
+    ] {
+        assert!(
+            Model::new(two.clone(), vec![Product::new(bad.clone())]).is_err(),
+            "{bad:?}"
+        );
+    }
+    assert!(Camera::new(0, 10, Vec3::ZERO, 0.0, 0.0, 1.0).is_err());
+    assert!(Camera::new(10, 10, Vec3::ZERO, f32::NAN, 0.0, 1.0).is_err());
+    let empty = Model::new(vec![sphere(Vec3::ZERO, 1.0)], vec![]).expect("valid");
+    let (frame, tests) = rendered(&empty, camera);
+    assert_eq!(tests, 0);
+    assert!(common::surfaces(&frame).is_empty());
+    // A frame that already holds a nearer sphere keeps it where it is in
+    // front: the result is the union's.
+    let near = sphere(Vec3::new(0.0, 0.0, 1.0), 0.8);
+    let far = sphere(Vec3::new(0.3, 0.0, -0.5), 1.2);
+    let scene = Scene::new(vec![near, far], Csg::union(Csg::leaf(0), Csg::leaf(1))).expect("valid");
+    let mut frame = Framebuffer::new(camera);
+    let first = Model::new(
+        vec![near, far],
+        vec![Product::new(vec![Literal::positive(0)])],
+    )
+    .expect("valid");
+    let second = Model::new(
+        vec![near, far],
+        vec![Product::new(vec![Literal::positive(1)])],
+    )
+    .expect("valid");
+    render(&first, &mut frame);
+    render(&second, &mut frame);
+    assert_frames_equal(&frame, &truth(&scene, camera), "two renderings merged");
+}
+
+#[test]
+fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
+    let scene = example_scene();
+    let camera = example_camera();
+    let model = dnf_model(&scene);
+    let (frame, tests) = rendered(&model, camera);
+    assert_eq!(
+        tests, 20,
+        "one product of five literals: 5 · 4 parity tests"
+    );
+    let truth = truth(&scene, camera);
+    assert_frames_equal(&frame, &truth, "the example");
+    let picture = csg::shade::side_by_side(&[
+        csg::shade::shade(&frame, scene.primitives()),
+        csg::shade::shade(&truth, scene.primitives()),
+    ]);
+    testkit::image::assert_image_matches(
+        "goldfeather_example",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/goldfeather_example.png"
+        ),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.002,
+        },
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
+
+    #[test]
+    fn random_scenes_match_the_ray_caster(scene in scene(5)) {
+        let camera = small_camera();
+        let model = dnf_model(&scene);
+        let (frame, tests) = rendered(&model, camera);
+        let expected: usize = model.products().iter().map(|p| p.literals.len() * (p.literals.len() - 1)).sum();
+        prop_assert_eq!(tests, expected as u64);
+        assert_frames_equal(&frame, &truth(&scene, camera), &scene.tree().to_string());
+    }
+}

@@ -1,0 +1,239 @@
+//! Task 5: layered Goldfeather — depth complexity, layer extraction, one
+//! parity test per layer and literal.
+
+mod common;
+
+use common::{
+    assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth,
+};
+use csg::Vec3;
+use csg::csg::{Csg, Literal, Model, Product, Scene};
+use csg::layered::{depth_complexity, render};
+use csg::primitive::Primitive;
+use csg::raster::{Camera, Framebuffer};
+use proptest::prelude::*;
+
+fn sphere(x: f32, y: f32, z: f32, radius: f32) -> Primitive {
+    Primitive::Sphere {
+        centre: Vec3::new(x, y, z),
+        radius,
+    }
+}
+
+/// A plate with `holes` spherical dents in a row along its front face:
+/// `plate − S₁ − S₂ − …`. Seen from the front, each pixel is covered by
+/// the plate's front face and at most one sphere's back face: depth
+/// complexity 2 however many holes there are.
+fn drilled_plate(holes: usize) -> Scene {
+    let width = holes.max(1) as f32;
+    let mut primitives = vec![Primitive::Cuboid {
+        min: Vec3::new(-width, -0.6, -0.5),
+        max: Vec3::new(width, 0.6, 0.5),
+    }];
+    let mut tree = Csg::leaf(0);
+    for k in 0..holes {
+        let x = -width + 1.0 + 2.0 * k as f32;
+        primitives.push(sphere(x, 0.0, 0.6, 0.45));
+        tree = Csg::difference(tree, Csg::leaf(k + 1));
+    }
+    Scene::new(primitives, tree).expect("valid")
+}
+
+/// `n` balls on a line along the view direction, all overlapping: their
+/// intersection needs `n` layers.
+fn skewered_balls(n: usize) -> Scene {
+    let primitives: Vec<Primitive> = (0..n)
+        .map(|k| sphere(0.05 * k as f32, 0.0, -0.1 * k as f32, 1.0))
+        .collect();
+    let tree = (1..n).fold(Csg::leaf(0), |t, k| Csg::intersection(t, Csg::leaf(k)));
+    Scene::new(primitives, tree).expect("valid")
+}
+
+/// Looks along −z at 4 pixels per unit, `2·units + 2` units wide and 4
+/// high: a plate of `units` holes fits, and so do the balls with 1.
+fn front_camera(width_units: usize) -> Camera {
+    let w = (8 * width_units.max(1) + 8) as u32;
+    Camera::new(w, 16, Vec3::ZERO, 0.0, 0.0, 4.0).expect("valid")
+}
+
+#[test]
+fn depth_complexity_counts_entry_faces_per_pixel() {
+    let scene = example_scene();
+    let camera = example_camera();
+    let model = dnf_model(&scene);
+    let product = &model.products()[0];
+    let mut buffer = Framebuffer::new(camera);
+    let k = depth_complexity(&model, product, &mut buffer);
+    assert_eq!(k, common::depth_complexity(&model, product, &camera));
+    for p in camera.pixels() {
+        let ray = camera.ray(p);
+        let count = product
+            .literals
+            .iter()
+            .filter(|l| model.primitives()[l.primitive].span(&ray).is_some())
+            .count();
+        assert_eq!(buffer.stencil(p), Some(count as u8), "{p:?}");
+        assert_eq!(buffer.surface(p), None, "colour writes are off");
+    }
+}
+
+#[test]
+fn a_drilled_plate_needs_two_layers_however_many_holes() {
+    for holes in [1, 3, 6] {
+        let scene = drilled_plate(holes);
+        let camera = front_camera(holes);
+        let model = dnf_model(&scene);
+        let mut buffer = Framebuffer::new(camera);
+        assert_eq!(
+            depth_complexity(&model, &model.products()[0], &mut buffer),
+            2
+        );
+        let mut frame = Framebuffer::new(camera);
+        let stats = render(&model, &mut frame);
+        let m = holes as u64 + 1;
+        assert_eq!(stats.layers, 2, "{holes} holes");
+        assert_eq!(
+            stats.parity_tests,
+            2 * m,
+            "{holes} holes: 2 layers · {m} literals"
+        );
+        assert_frames_equal(&frame, &truth(&scene, camera), &format!("{holes} holes"));
+    }
+}
+
+#[test]
+fn skewered_balls_need_one_layer_per_ball() {
+    let scene = skewered_balls(5);
+    let camera = front_camera(1);
+    let model = dnf_model(&scene);
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(&model, &mut frame);
+    assert_eq!(stats.layers, 5);
+    assert_eq!(stats.parity_tests, 25);
+    assert_frames_equal(&frame, &truth(&scene, camera), "skewered balls");
+}
+
+#[test]
+fn a_product_of_one_primitive_is_one_layer_with_one_parity_test() {
+    // The layer holds the primitive's own front face, tested against the
+    // primitive itself: it must count as inside (the seed's §6.4).
+    let camera = small_camera();
+    let scene = Scene::new(vec![sphere(0.2, 0.1, 0.0, 1.3)], Csg::leaf(0)).expect("valid");
+    let model = dnf_model(&scene);
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(&model, &mut frame);
+    assert_eq!((stats.layers, stats.parity_tests), (1, 1));
+    assert_frames_equal(&frame, &truth(&scene, camera), "one sphere");
+}
+
+#[test]
+fn parity_tests_of_plain_and_layered_goldfeather() {
+    // The sheet's table: plain Goldfeather needs m·(m − 1) parity tests per
+    // product of m literals; layered needs k·m for depth complexity k.
+    println!("| scene | literals m | plain m·(m−1) | layers k | layered k·m |");
+    println!("|---|---:|---:|---:|---:|");
+    for (name, scenes, camera_units) in [
+        ("drilled plate", [1, 3, 7, 15, 31].map(drilled_plate), 32),
+        ("skewered balls", [2, 4, 8, 16, 32].map(skewered_balls), 1),
+    ] {
+        let camera = front_camera(camera_units);
+        for scene in scenes {
+            let n = scene.primitives().len();
+            let model = dnf_model(&scene);
+            let mut frame = Framebuffer::new(camera);
+            let stats = render(&model, &mut frame);
+            let k = u64::from(common::depth_complexity(
+                &model,
+                &model.products()[0],
+                &camera,
+            ));
+            let m = n as u64;
+            assert_eq!(stats.layers, k, "{name}, {n} primitives");
+            assert_eq!(stats.parity_tests, k * m, "{name}, {n} primitives");
+            println!("| {name} | {m} | {} | {k} | {} |", m * (m - 1), k * m);
+        }
+    }
+}
+
+#[test]
+fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
+    let scene = example_scene();
+    let camera = example_camera();
+    let model = dnf_model(&scene);
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(&model, &mut frame);
+    let k = u64::from(common::depth_complexity(
+        &model,
+        &model.products()[0],
+        &camera,
+    ));
+    assert_eq!(stats.layers, k);
+    assert_eq!(stats.parity_tests, 5 * k);
+    let truth = truth(&scene, camera);
+    assert_frames_equal(&frame, &truth, "the example");
+    let picture = csg::shade::side_by_side(&[
+        csg::shade::shade(&frame, scene.primitives()),
+        csg::shade::shade(&truth, scene.primitives()),
+    ]);
+    testkit::image::assert_image_matches(
+        "layered_example",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/layered_example.png"
+        ),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.002,
+        },
+    );
+}
+
+#[test]
+fn products_are_rendered_one_after_the_other() {
+    // Two separate products: the union of a dented and a plain ball.
+    let camera = small_camera();
+    let primitives = vec![
+        sphere(-0.8, 0.0, 0.0, 1.0),
+        sphere(-0.8, 0.0, 0.9, 0.5),
+        sphere(1.0, 0.3, -0.4, 0.9),
+    ];
+    let model = Model::new(
+        primitives.clone(),
+        vec![
+            Product::new(vec![Literal::positive(0), Literal::complement(1)]),
+            Product::new(vec![Literal::positive(2)]),
+        ],
+    )
+    .expect("valid");
+    let scene = Scene::new(
+        primitives,
+        Csg::union(Csg::difference(Csg::leaf(0), Csg::leaf(1)), Csg::leaf(2)),
+    )
+    .expect("valid");
+    let mut frame = Framebuffer::new(camera);
+    render(&model, &mut frame);
+    assert_frames_equal(&frame, &truth(&scene, camera), "two products");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
+
+    #[test]
+    fn random_scenes_match_the_ray_caster(scene in scene(5)) {
+        let camera = small_camera();
+        let model = dnf_model(&scene);
+        let mut frame = Framebuffer::new(camera);
+        let stats = render(&model, &mut frame);
+        let mut expected_layers = 0;
+        let mut expected_tests = 0;
+        for product in model.products() {
+            let k = u64::from(common::depth_complexity(&model, product, &camera));
+            expected_layers += k;
+            expected_tests += k * product.literals.len() as u64;
+        }
+        prop_assert_eq!(stats.layers, expected_layers);
+        prop_assert_eq!(stats.parity_tests, expected_tests);
+        assert_frames_equal(&frame, &truth(&scene, camera), &scene.tree().to_string());
+    }
+}

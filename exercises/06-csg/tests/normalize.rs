@@ -1,0 +1,239 @@
+//! Task 2: normalization to a sum of products with the nine rules.
+
+mod common;
+
+use common::{in_sum, in_tree, is_normal, point, primitive, product_tree, tree};
+use csg::csg::{Csg, CsgError, Literal, Product};
+use csg::normalize::{normalize, products};
+use proptest::prelude::*;
+
+fn p(i: usize) -> Csg {
+    Csg::leaf(i)
+}
+fn u(x: Csg, y: Csg) -> Csg {
+    Csg::union(x, y)
+}
+fn i(x: Csg, y: Csg) -> Csg {
+    Csg::intersection(x, y)
+}
+fn d(x: Csg, y: Csg) -> Csg {
+    Csg::difference(x, y)
+}
+
+/// Each rule once, on primitives X = 0, Y = 1, Z = 2: the rule's number
+/// and right-hand side, written down from the seed's table.
+#[test]
+fn each_rule_rewrites_as_the_table_says() {
+    let (x, y, z) = (p(0), p(1), p(2));
+    let cases = [
+        (
+            d(x.clone(), u(y.clone(), z.clone())),
+            1,
+            d(d(x.clone(), y.clone()), z.clone()),
+        ),
+        (
+            i(x.clone(), u(y.clone(), z.clone())),
+            2,
+            u(i(x.clone(), y.clone()), i(x.clone(), z.clone())),
+        ),
+        (
+            d(x.clone(), i(y.clone(), z.clone())),
+            3,
+            u(d(x.clone(), y.clone()), d(x.clone(), z.clone())),
+        ),
+        (
+            i(x.clone(), i(y.clone(), z.clone())),
+            4,
+            i(i(x.clone(), y.clone()), z.clone()),
+        ),
+        (
+            d(x.clone(), d(y.clone(), z.clone())),
+            5,
+            u(d(x.clone(), y.clone()), i(x.clone(), z.clone())),
+        ),
+        (
+            i(x.clone(), d(y.clone(), z.clone())),
+            6,
+            d(i(x.clone(), y.clone()), z.clone()),
+        ),
+        (
+            i(d(x.clone(), y.clone()), z.clone()),
+            7,
+            d(i(x.clone(), z.clone()), y.clone()),
+        ),
+        (
+            d(u(x.clone(), y.clone()), z.clone()),
+            8,
+            u(d(x.clone(), z.clone()), d(y.clone(), z.clone())),
+        ),
+        (
+            i(u(x.clone(), y.clone()), z.clone()),
+            9,
+            u(i(x.clone(), z.clone()), i(y.clone(), z.clone())),
+        ),
+    ];
+    for (tree, rule, expected) in cases {
+        let n = normalize(&tree);
+        assert_eq!(n.tree, expected, "rule {rule} on {tree}: got {}", n.tree);
+        assert_eq!(n.rules, vec![rule], "rules applied to {tree}");
+    }
+}
+
+#[test]
+fn the_seeds_example_needs_rule_one_twice_at_the_root() {
+    // (C ∩ S) − (X ∪ (Y ∪ Z)) → ((C ∩ S) − X) − (Y ∪ Z) → (((C ∩ S) − X) − Y) − Z
+    let tree = common::example_tree();
+    let n = normalize(&tree);
+    assert_eq!(n.rules, vec![1, 1]);
+    assert_eq!(n.tree, d(d(d(i(p(0), p(1)), p(2)), p(3)), p(4)));
+    let expected = Product::new(vec![
+        Literal::positive(0),
+        Literal::positive(1),
+        Literal::complement(2),
+        Literal::complement(3),
+        Literal::complement(4),
+    ]);
+    assert_eq!(products(&n.tree), Ok(vec![expected]));
+}
+
+#[test]
+fn the_first_matching_rule_wins() {
+    // X − (Y ∪ Z) with X a union matches rules 1 and 8: rule 1 first.
+    //   (A ∪ B) − (Y ∪ Z)
+    //   1: ((A ∪ B) − Y) − Z                    root: no rule (left is −)
+    //   left ((A ∪ B) − Y), 8: (A − Y) ∪ (B − Y)
+    //   root again, 8: ((A − Y) − Z) ∪ ((B − Y) − Z)
+    let tree = d(u(p(0), p(1)), u(p(2), p(3)));
+    let n = normalize(&tree);
+    assert_eq!(n.rules, vec![1, 8, 8]);
+    assert_eq!(n.tree, u(d(d(p(0), p(2)), p(3)), d(d(p(1), p(2)), p(3))));
+}
+
+#[test]
+fn a_chain_with_a_difference_inside() {
+    // A ∩ (B − (C ∩ D)):
+    //   6: (A ∩ B) − (C ∩ D)
+    //   3: ((A ∩ B) − C) ∪ ((A ∩ B) − D)
+    let tree = i(p(0), d(p(1), i(p(2), p(3))));
+    let n = normalize(&tree);
+    assert_eq!(n.rules, vec![6, 3]);
+    assert_eq!(n.tree, u(d(i(p(0), p(1)), p(2)), d(i(p(0), p(1)), p(3))));
+    assert_eq!(
+        products(&n.tree),
+        Ok(vec![
+            Product::new(vec![
+                Literal::positive(0),
+                Literal::positive(1),
+                Literal::complement(2)
+            ]),
+            Product::new(vec![
+                Literal::positive(0),
+                Literal::positive(1),
+                Literal::complement(3)
+            ]),
+        ])
+    );
+}
+
+#[test]
+fn the_procedure_stops_once_the_right_operand_is_a_primitive() {
+    // (X ∩ (Y − Z)) ∩ W: at the root no rule matches (W is a primitive, the
+    // left operand an ∩); in the left subtree rule 6 gives (X ∩ Y) − Z.
+    // Back at the root the `until` condition holds, so the procedure
+    // stops — although rule 7 would now match ((X ∩ Y) − Z) ∩ W. The
+    // result is in normal form all the same: normal form is not a fixed
+    // point of the nine rules.
+    let tree = i(i(p(0), d(p(1), p(2))), p(3));
+    let n = normalize(&tree);
+    assert_eq!(n.rules, vec![6]);
+    assert_eq!(n.tree, i(d(i(p(0), p(1)), p(2)), p(3)));
+}
+
+#[test]
+fn primitives_and_normal_trees_are_left_alone() {
+    for tree in [
+        p(3),
+        i(p(0), p(1)),
+        u(d(p(0), p(1)), i(p(2), p(0))),
+        d(d(d(p(0), p(1)), p(2)), p(3)),
+    ] {
+        let n = normalize(&tree);
+        assert_eq!(n.tree, tree);
+        assert_eq!(n.rules, Vec::<u8>::new(), "{tree}");
+    }
+}
+
+#[test]
+fn products_of_trees_not_in_normal_form_are_refused() {
+    for tree in [
+        d(p(0), u(p(1), p(2))),
+        i(u(p(0), p(1)), p(2)),
+        i(p(0), i(p(1), p(2))),
+    ] {
+        assert!(
+            matches!(products(&tree), Err(CsgError::NotNormal(_))),
+            "{tree}: {:?}",
+            products(&tree)
+        );
+    }
+    assert_eq!(
+        products(&p(7)),
+        Ok(vec![Product::new(vec![Literal::positive(7)])])
+    );
+}
+
+/// The terms of a (nested) union, left to right.
+fn union_terms(tree: &Csg) -> Vec<Csg> {
+    match tree {
+        Csg::Union(x, y) => {
+            let mut terms = union_terms(x);
+            terms.extend(union_terms(y));
+            terms
+        }
+        t => vec![t.clone()],
+    }
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn normalized_trees_are_sums_of_products_with_primitives_on_the_right(tree in tree(5, 8)) {
+        let n = normalize(&tree);
+        prop_assert!(is_normal(&n.tree), "{} normalized to {}", tree, n.tree);
+        prop_assert!(n.rules.iter().all(|r| (1..=9).contains(r)));
+        let sum = products(&n.tree).expect("a normal tree");
+        prop_assert!(sum.iter().all(|p| !p.literals.is_empty() && !p.literals[0].complement));
+        // The products, read back as trees, are the union's terms in order.
+        let rebuilt: Vec<Csg> = sum.iter().map(product_tree).collect();
+        prop_assert_eq!(rebuilt, union_terms(&n.tree));
+    }
+
+    #[test]
+    fn normalization_preserves_membership(
+        primitives in prop::collection::vec(primitive(), 5),
+        tree in tree(5, 8),
+        points in prop::collection::vec(point(), 24),
+    ) {
+        let n = normalize(&tree);
+        let sum = products(&n.tree).expect("a normal tree");
+        for q in points {
+            let before = in_tree(&tree, &primitives, q);
+            prop_assert_eq!(in_tree(&n.tree, &primitives, q), before, "{} → {} at {:?}", tree, n.tree, q);
+            prop_assert_eq!(in_sum(&sum, &primitives, q), before, "products of {} at {:?}", n.tree, q);
+        }
+    }
+
+    #[test]
+    fn normalization_keeps_the_leaves(tree in tree(6, 8)) {
+        // Rules only copy and move subtrees: every leaf survives, no new one
+        // appears.
+        let mut before = tree.leaves();
+        let mut after = normalize(&tree).tree.leaves();
+        before.sort_unstable();
+        before.dedup();
+        after.sort_unstable();
+        after.dedup();
+        prop_assert_eq!(after, before);
+    }
+}
