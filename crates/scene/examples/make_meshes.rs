@@ -164,7 +164,14 @@ fn torus(ring: f32, tube: f32) -> Mesh {
             let r = ring + tube * b.cos();
             let p = Vec3::new(r * a.cos(), r * a.sin(), tube * b.sin());
             let shade = 0.6 + 0.4 * b.cos();
-            vertex(&mut mesh, p, hue(u) * shade);
+            vertex(
+                &mut mesh,
+                p,
+                Rgba {
+                    a: 1.0,
+                    ..hue(u) * shade
+                },
+            );
         }
     }
     let at = |i: usize, j: usize| ((i % TORUS_RING) * TORUS_TUBE + j % TORUS_TUBE) as u32;
@@ -177,13 +184,15 @@ fn torus(ring: f32, tube: f32) -> Mesh {
     mesh
 }
 
-/// A fully saturated colour of hue `h ∈ [0, 1)`, alpha kept at 1 when scaled.
+/// The fully saturated colour of hue `h ∈ [0, 1]` (red at 0, green at ⅓,
+/// blue at ⅔), as in the HSV model with `S = V = 1`.
 fn hue(h: f32) -> Rgba {
-    let channel = |offset: f32| {
-        let x = (h + offset).fract() * 6.0;
-        (2.0 - (x - 3.0).abs()).clamp(0.0, 1.0)
-    };
-    Rgba::new(channel(0.0), channel(2.0 / 3.0), channel(1.0 / 3.0), 1.0)
+    let x = h * 6.0;
+    Rgba::rgb(
+        ((x - 3.0).abs() - 1.0).clamp(0.0, 1.0),
+        (2.0 - (x - 2.0).abs()).clamp(0.0, 1.0),
+        (2.0 - (x - 4.0).abs()).clamp(0.0, 1.0),
+    )
 }
 
 /// The letters "CG", extruded along z: each stroke is a box of six quads.
