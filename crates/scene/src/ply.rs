@@ -30,7 +30,8 @@
 //! and its 0-based index in a binary payload. The reader never panics and
 //! does work proportional to the input's size: before the payload is read,
 //! the element counts the header declares are checked against the bytes
-//! that follow, so a header claiming 10⁹ vertices fails at once.
+//! that follow (at least one byte per entry), so a header claiming 10⁹
+//! vertices fails at once.
 
 use std::fmt;
 use std::io::ErrorKind as IoKind;
@@ -314,38 +315,20 @@ fn strip_line(message: &str) -> String {
     }
 }
 
-/// Size in bytes of a binary scalar.
-fn scalar_size(t: &ScalarType) -> usize {
-    match t {
-        ScalarType::Char | ScalarType::UChar => 1,
-        ScalarType::Short | ScalarType::UShort => 2,
-        ScalarType::Int | ScalarType::UInt | ScalarType::Float => 4,
-        ScalarType::Double => 8,
-    }
-}
-
 /// Checks that the declared entries can fit into the `available` bytes after
 /// the header, so that the reader's work is bounded by the file's size.
 ///
-/// An ASCII entry takes at least one byte (its line break); a binary entry
-/// at least the sum of its scalars and list counts (an entry without
-/// properties is counted as one byte: otherwise a header could declare
-/// 10¹⁸ empty entries, and reading them would never end).
+/// Every entry is counted as at least one byte: true for ASCII (its line
+/// break) and for binary entries with a property. A binary element without
+/// properties takes no bytes at all, so without this bound a header could
+/// declare 10¹⁸ of them and reading would never end; here such an element
+/// may have at most as many entries as there are bytes left. (A stricter
+/// bound, the full size of each binary entry, would report a truncated file
+/// here, in the header, instead of at the entry where it is cut.)
 fn check_counts(header: &Header, available: usize) -> Result<(), PlyErrorKind> {
     let mut needed = 0usize;
     for element in header.elements.values() {
-        let entry = match header.encoding {
-            Encoding::Ascii => 1,
-            _ => element
-                .properties
-                .values()
-                .map(|p| match &p.data_type {
-                    PropertyType::Scalar(t) | PropertyType::List(t, _) => scalar_size(t),
-                })
-                .sum::<usize>()
-                .max(1),
-        };
-        needed = needed.saturating_add(element.count.saturating_mul(entry));
+        needed = needed.saturating_add(element.count);
         if needed > available {
             return Err(PlyErrorKind::CountTooLarge {
                 element: element.name.clone(),
