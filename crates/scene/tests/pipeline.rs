@@ -32,7 +32,10 @@ fn clip(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
 fn screen_of_world(p: Vec3) -> (Vec2, f32) {
     let c = camera();
     let v = c
-        .screen(ClipVertex::new(c.model_view_projection() * p.extend(1.0), Rgba::WHITE))
+        .screen(ClipVertex::new(
+            c.model_view_projection() * p.extend(1.0),
+            Rgba::WHITE,
+        ))
         .expect("finite");
     (v.position, v.depth)
 }
@@ -45,7 +48,12 @@ fn projection_is_the_textbook_perspective_matrix() {
     let expected = Mat4::from_cols_array_2d(&[
         [f / aspect, 0.0, 0.0, 0.0],
         [0.0, f, 0.0, 0.0],
-        [0.0, 0.0, (FAR + NEAR) / (NEAR - FAR), 2.0 * FAR * NEAR / (NEAR - FAR)],
+        [
+            0.0,
+            0.0,
+            (FAR + NEAR) / (NEAR - FAR),
+            2.0 * FAR * NEAR / (NEAR - FAR),
+        ],
         [0.0, 0.0, -1.0, 0.0],
     ])
     .transpose();
@@ -141,7 +149,10 @@ fn clip_space_gives_one_polygon_per_valid_face() {
     };
     let polygons = identity.clip_space(&mesh);
     assert_eq!(polygons.len(), 2, "the face with index 9 is skipped");
-    assert_eq!(polygons[0][1], ClipVertex::new(Vec4::new(1.0, 0.0, 0.0, 1.0), Rgba::GREEN));
+    assert_eq!(
+        polygons[0][1],
+        ClipVertex::new(Vec4::new(1.0, 0.0, 0.0, 1.0), Rgba::GREEN)
+    );
     assert_eq!(polygons[1][1], ClipVertex::new(Vec4::ONE, Rgba::WHITE));
 }
 
@@ -154,7 +165,10 @@ fn shipped(name: &str) -> Vec<ClipVertex> {
 #[test]
 fn plain_meshes_lie_inside_the_view_volume() {
     for name in ["plane.ply", "star.ply", "text.ply", "torus.ply"] {
-        let outside = shipped(name).iter().filter(|v| !inside_view_volume(v)).count();
+        let outside = shipped(name)
+            .iter()
+            .filter(|v| !inside_view_volume(v))
+            .count();
         assert_eq!(outside, 0, "{name}");
     }
 }
@@ -169,21 +183,36 @@ fn clipped_meshes_cross_the_near_plane_and_the_sides() {
             "{name}: nothing before the near plane"
         );
         assert!(
-            vertices.iter().any(|v| p(v).w > 0.0 && p(v).x.abs() > p(v).w),
+            vertices
+                .iter()
+                .any(|v| p(v).w > 0.0 && p(v).x.abs() > p(v).w),
             "{name}: nothing beside the view"
         );
-        assert!(vertices.iter().any(inside_view_volume), "{name}: nothing visible");
+        assert!(
+            vertices.iter().any(inside_view_volume),
+            "{name}: nothing visible"
+        );
     }
     assert!(
-        shipped("clipped_torus.ply").iter().any(|v| v.position.w < 0.0),
+        shipped("clipped_torus.ply")
+            .iter()
+            .any(|v| v.position.w < 0.0),
         "clipped_torus: nothing behind the eye"
     );
 }
 
 #[test]
 fn discard_outside_keeps_only_whole_polygons_inside() {
-    let inside = vec![clip(0.0, 0.0, 0.0, 1.0), clip(1.0, 1.0, 1.0, 1.0), clip(-1.0, 0.5, 0.0, 1.0)];
-    let crossing = vec![clip(0.0, 0.0, 0.0, 1.0), clip(1.5, 0.0, 0.0, 1.0), clip(0.0, 1.0, 0.0, 1.0)];
+    let inside = vec![
+        clip(0.0, 0.0, 0.0, 1.0),
+        clip(1.0, 1.0, 1.0, 1.0),
+        clip(-1.0, 0.5, 0.0, 1.0),
+    ];
+    let crossing = vec![
+        clip(0.0, 0.0, 0.0, 1.0),
+        clip(1.5, 0.0, 0.0, 1.0),
+        clip(0.0, 1.0, 0.0, 1.0),
+    ];
     let behind = vec![clip(0.0, 0.0, 0.0, -1.0); 3];
     let kept = discard_outside(&[inside.clone(), crossing, behind]);
     assert_eq!(kept, vec![inside]);
@@ -250,7 +279,10 @@ fn fill_mode_covers_the_closed_polygon_and_interpolates_colour() {
     testkit::assert_pixels_eq(&expected, &covered, "filled quad");
     assert_eq!(canvas.get(Pixel::new(5, 5)), Some(Rgba::WHITE));
     assert_eq!(canvas.get(Pixel::new(1, 1)), Some(Rgba::BLACK));
-    assert_eq!(canvas.get(Pixel::new(3, 3)), Some(Rgba::from_rgba8([128, 128, 128, 255])));
+    assert_eq!(
+        canvas.get(Pixel::new(3, 3)),
+        Some(Rgba::from_rgba8([128, 128, 128, 255]))
+    );
 }
 
 #[test]

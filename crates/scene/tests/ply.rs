@@ -96,7 +96,10 @@ fn element(name: &str, index: usize) -> Location {
 
 #[test]
 fn ascii_triangle_reads_positions_colours_and_face() {
-    assert_eq!(ply::parse(TRIANGLE.as_bytes(), "t.ply").unwrap(), triangle());
+    assert_eq!(
+        ply::parse(TRIANGLE.as_bytes(), "t.ply").unwrap(),
+        triangle()
+    );
 }
 
 #[test]
@@ -132,7 +135,11 @@ fn file_without_faces_gives_mesh_without_faces() {
 fn written_files_read_back_identically_in_both_formats() {
     for format in [Format::Ascii, Format::BinaryLittleEndian] {
         let bytes = ply::to_bytes(&triangle(), format);
-        assert_eq!(ply::parse(&bytes, "t.ply").unwrap(), triangle(), "{format:?}");
+        assert_eq!(
+            ply::parse(&bytes, "t.ply").unwrap(),
+            triangle(),
+            "{format:?}"
+        );
     }
     let ascii = ply::to_bytes(&triangle(), Format::Ascii);
     assert!(ascii.starts_with(b"ply\nformat ascii 1.0\n"));
@@ -175,7 +182,11 @@ fn shipped_torus_and_plane_are_quads() {
 
 #[test]
 fn truncated_ascii_file_names_the_missing_line() {
-    let text: String = TRIANGLE.lines().take(15).map(|l| format!("{l}\n")).collect();
+    let text: String = TRIANGLE
+        .lines()
+        .take(15)
+        .map(|l| format!("{l}\n"))
+        .collect();
     let e = error(text.as_bytes());
     assert_eq!(e.location, Location::Line(16));
     assert!(matches!(e.kind, PlyErrorKind::Truncated(_)), "{e}");
@@ -227,7 +238,13 @@ fn counts_larger_than_the_file_fail_before_reading() {
     let e = error(with_line(3, "element vertex 1000000000000").as_bytes());
     assert_eq!(e.location, Location::Header);
     assert!(
-        matches!(e.kind, PlyErrorKind::CountTooLarge { declared: 1_000_000_000_000, .. }),
+        matches!(
+            e.kind,
+            PlyErrorKind::CountTooLarge {
+                declared: 1_000_000_000_000,
+                ..
+            }
+        ),
         "{e}"
     );
     // Binary entries without properties take no bytes; a huge count of
@@ -314,7 +331,10 @@ fn missing_or_mistyped_properties_are_named() {
     let e = error(with_line(11, "property list uchar float vertex_indices").as_bytes());
     assert!(matches!(e.kind, PlyErrorKind::WrongType { .. }), "{e}");
     let e = error(with_line(3, "element point 3").as_bytes());
-    assert!(matches!(e.kind, PlyErrorKind::MissingElement("vertex")), "{e}");
+    assert!(
+        matches!(e.kind, PlyErrorKind::MissingElement("vertex")),
+        "{e}"
+    );
 }
 
 #[test]
