@@ -317,7 +317,7 @@ fn vertex_that_cannot_be_divided_drops_its_edges_and_its_fill() {
         clip(0.0, 0.0, 0.0, 0.0),
     ];
     let mut canvas = Canvas::new(s, s);
-    flat(s).render(&[triangle.clone()], Mode::Line, &mut canvas);
+    flat(s).render(std::slice::from_ref(&triangle), Mode::Line, &mut canvas);
     let bottom: Vec<Pixel> = (1..=6).map(|x| Pixel::new(x, 1)).collect();
     testkit::assert_pixels_eq(&bottom, &canvas.pixels_not(Rgba::BLACK), "edges left");
     let mut canvas = Canvas::new(s, s);
