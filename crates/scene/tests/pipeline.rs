@@ -134,6 +134,19 @@ fn clip_vertex_lerp_is_exact_at_the_ends() {
 }
 
 #[test]
+fn mesh_bounds_hold_every_position() {
+    let mesh = Mesh {
+        positions: vec![Vec3::new(1.0, -2.0, 3.0), Vec3::new(-1.0, 5.0, 0.0)],
+        ..Mesh::default()
+    };
+    assert_eq!(
+        mesh.bounds(),
+        Some([Vec3::new(-1.0, -2.0, 0.0), Vec3::new(1.0, 5.0, 3.0)])
+    );
+    assert_eq!(Mesh::default().bounds(), None);
+}
+
+#[test]
 fn clip_space_gives_one_polygon_per_valid_face() {
     let mesh = Mesh {
         positions: vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE],

@@ -123,6 +123,35 @@ fn polygons_double_coordinates_and_float_colours_are_read() {
 }
 
 #[test]
+fn big_endian_binary_is_read_too() {
+    let mut bytes = b"ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\n\
+                      property float y\nproperty float z\nelement face 1\n\
+                      property list uchar int vertex_indices\nend_header\n"
+        .to_vec();
+    for p in [[0.0f32, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]] {
+        for c in p {
+            bytes.extend_from_slice(&c.to_be_bytes());
+        }
+    }
+    bytes.push(3);
+    for i in [0i32, 1, 2] {
+        bytes.extend_from_slice(&i.to_be_bytes());
+    }
+    let mesh = ply::parse(&bytes, "be.ply").unwrap();
+    assert_eq!(mesh.positions, triangle().positions);
+    assert_eq!(mesh.faces, triangle().faces);
+}
+
+#[test]
+fn translucent_colours_are_written_with_alpha() {
+    let mut mesh = triangle();
+    mesh.colours[1] = Rgba::from_rgba8([10, 20, 30, 40]);
+    let bytes = ply::to_bytes(&mesh, Format::Ascii);
+    assert!(String::from_utf8_lossy(&bytes).contains("property uchar alpha\n"));
+    assert_eq!(ply::parse(&bytes, "a.ply").unwrap(), mesh);
+}
+
+#[test]
 fn file_without_faces_gives_mesh_without_faces() {
     let text = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
                 property float z\nend_header\n1 2 3\n";
@@ -365,9 +394,11 @@ fn missing_file_is_an_io_error_naming_the_path() {
 
 // ---- properties ----
 
-/// Colours on the 8-bit levels a PLY `uchar` can hold.
+/// Colours on the 8-bit levels a PLY `uchar` can hold, mostly opaque.
 fn colour8() -> impl Strategy<Value = Rgba> {
-    (any::<u8>(), any::<u8>(), any::<u8>()).prop_map(|(r, g, b)| Rgba::from_rgba8([r, g, b, 255]))
+    let alpha = prop_oneof![9 => Just(u8::MAX), 1 => any::<u8>()];
+    (any::<u8>(), any::<u8>(), any::<u8>(), alpha)
+        .prop_map(|(r, g, b, a)| Rgba::from_rgba8([r, g, b, a]))
 }
 
 fn mesh() -> impl Strategy<Value = Mesh> {
