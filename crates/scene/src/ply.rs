@@ -236,6 +236,17 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
         error(location, kind)
     })?;
     check_counts(&header, reader.get_ref().len()).map_err(|kind| error(Location::Header, kind))?;
+    // What the mesh needs from the header is checked before the payload is
+    // read.
+    let vertex_def = header
+        .elements
+        .get(VERTEX)
+        .ok_or_else(|| error(Location::Header, PlyErrorKind::MissingElement(VERTEX)))?;
+    let layout = VertexLayout::of(vertex_def).map_err(|kind| error(Location::Header, kind))?;
+    let face_key = match header.elements.get(FACE) {
+        Some(def) => Some(face_key(def).map_err(|kind| error(Location::Header, kind))?),
+        None => None,
+    };
 
     let mut vertices = Vec::new();
     let mut faces = Vec::new();
@@ -275,11 +286,6 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
         return Err(error(location, PlyErrorKind::TrailingData(rest.len())));
     }
 
-    let vertex_def = header
-        .elements
-        .get(VERTEX)
-        .ok_or_else(|| error(Location::Header, PlyErrorKind::MissingElement(VERTEX)))?;
-    let layout = VertexLayout::of(vertex_def).map_err(|kind| error(Location::Header, kind))?;
     let mut mesh = Mesh::default();
     for (index, vertex) in vertices.iter().enumerate() {
         let at = || Location::Element {
@@ -290,8 +296,7 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
         mesh.positions.push(position);
         mesh.colours.push(colour);
     }
-    if let Some(face_def) = header.elements.get(FACE) {
-        let key = face_key(face_def).map_err(|kind| error(Location::Header, kind))?;
+    if let Some(key) = face_key {
         for (index, face) in faces.iter().enumerate() {
             let at = || Location::Element {
                 element: FACE.to_owned(),
