@@ -15,12 +15,9 @@ fn plane_z(x: f64, y: f64) -> f64 {
 /// A triangle on the plane `z = 2x + 3y + 1`:
 ///
 /// ```text
-///   y 6 |   hi
-///     4 |  / ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾ (scanline ys = 4)
-///     2 | /        ___--- mid
-///     0 | lo ---‾‾‾
-///       +----------------------
-///         0   2   4   6   8    x
+///   hi (2, 6)          vertices sorted by y: lo, mid, hi
+///   mid (8, 2)         the long edge lo–hi crosses every scanline
+///   lo (0, 0)
 /// ```
 fn known_triangle() -> [DVec3; 3] {
     [(0.0, 0.0), (8.0, 2.0), (2.0, 6.0)].map(|(x, y)| DVec3::new(x, y, plane_z(x, y)))

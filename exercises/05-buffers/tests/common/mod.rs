@@ -71,8 +71,8 @@ pub fn differing_pixels(a: &Canvas, b: &Canvas) -> Vec<Pixel> {
 pub fn interpenetrating_triangles() -> [[Vertex; 3]; 2] {
     // Red: depth 0.2 at x = 4 rising to 0.8 at x = 60 (z = 0.2 + 0.6·(x − 4)/56).
     // Blue: depth 0.8 at x = 4 falling to 0.2 at x = 60. Equal at x = 32.
-    let red = Rgba::rgb(0.9, 0.2, 0.2);
-    let blue = Rgba::rgb(0.2, 0.3, 0.9);
+    let red = Rgba::rgb(0.8, 0.2, 0.2);
+    let blue = Rgba::rgb(0.2, 0.4, 0.8);
     [
         [
             vertex(4.0, 10.0, 0.2, red),
