@@ -18,7 +18,11 @@ fn flat(x: f32, y: f32, size: f32, depth: f32, colour: Rgba) -> [Vertex; 3] {
 #[test]
 fn the_key_is_the_farthest_vertex() {
     let w = Rgba::WHITE;
-    let t = [vertex(0.0, 0.0, 0.3, w), vertex(5.0, 0.0, 0.7, w), vertex(0.0, 5.0, 0.1, w)];
+    let t = [
+        vertex(0.0, 0.0, 0.3, w),
+        vertex(5.0, 0.0, 0.7, w),
+        vertex(0.0, 5.0, 0.1, w),
+    ];
     assert_eq!(farthest_depth(&t), Some(0.7));
     let mut nan = t;
     nan[2].depth = f32::NAN;
@@ -96,17 +100,28 @@ fn interpenetrating_triangles_defeat_the_painter() {
         }
     }
     let wrong = differing_pixels(&expected, &canvas);
-    assert!(!wrong.is_empty(), "the painter cannot draw interpenetration, yet the picture is right");
+    assert!(
+        !wrong.is_empty(),
+        "the painter cannot draw interpenetration, yet the picture is right"
+    );
     // Exactly the pixels where red is nearer (or tied, at x = 32, where the
     // first triangle keeps the pixel) but painted over by blue.
     let red = Rgba::from_rgba8(triangles[0][0].colour.to_rgba8());
-    assert!(wrong.iter().all(|&p| expected.get(p) == Some(red) && p.x <= 32), "{wrong:?}");
+    assert!(
+        wrong
+            .iter()
+            .all(|&p| expected.get(p) == Some(red) && p.x <= 32),
+        "{wrong:?}"
+    );
     // Reversing the input only moves the error to the other half.
     let mut reversed = Canvas::new(64, 64);
     reversed.clear(Rgba::grey(0.1));
     paint(&mut reversed, &[triangles[1], triangles[0]]);
     let wrong = differing_pixels(&expected, &reversed);
-    assert!(!wrong.is_empty() && wrong.iter().all(|&p| p.x > 32), "{wrong:?}");
+    assert!(
+        !wrong.is_empty() && wrong.iter().all(|&p| p.x > 32),
+        "{wrong:?}"
+    );
 }
 
 #[test]
@@ -114,7 +129,10 @@ fn interpenetrating_triangles_match_the_reference_image() {
     testkit::image::assert_image_matches(
         "painter_interpenetrating",
         &painter_scene(),
-        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/painter_interpenetrating.png"),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/painter_interpenetrating.png"
+        ),
         testkit::image::Tolerance::EXACT,
     );
 }
@@ -125,8 +143,20 @@ fn paint_leaves_the_depth_plane_alone_and_skips_bad_triangles() {
     let mut bad = flat(0.0, 0.0, 6.0, 0.5, Rgba::RED);
     bad[1].depth = f32::NAN;
     let far_away = flat(1e30, 1e30, 1e30, 0.5, Rgba::RED);
-    paint(&mut canvas, &[bad, far_away, flat(0.0, 0.0, 3.0, 0.4, Rgba::GREEN)]);
-    assert!(canvas.pixels_not(Rgba::BLACK).iter().all(|&p| canvas.get(p) == Some(Rgba::GREEN)));
+    paint(
+        &mut canvas,
+        &[bad, far_away, flat(0.0, 0.0, 3.0, 0.4, Rgba::GREEN)],
+    );
+    assert!(
+        canvas
+            .pixels_not(Rgba::BLACK)
+            .iter()
+            .all(|&p| canvas.get(p) == Some(Rgba::GREEN))
+    );
     assert!(!canvas.pixels_not(Rgba::BLACK).is_empty());
-    assert!(canvas.enumerate().all(|(p, _)| canvas.depth(p) == Some(1.0)));
+    assert!(
+        canvas
+            .enumerate()
+            .all(|(p, _)| canvas.depth(p) == Some(1.0))
+    );
 }

@@ -22,14 +22,20 @@ fn grey(x: f32, y: f32, depth: f32) -> Vertex {
 /// A triangle whose depth changes quickly across it (m = 0.06 per pixel):
 /// enough for the fill to beat the outline at half the edge pixels.
 fn tilted() -> [Vertex; 3] {
-    [grey(2.0, 1.0, 0.2), grey(17.0, 3.0, 0.4), grey(6.0, 10.0, 0.8)]
+    [
+        grey(2.0, 1.0, 0.2),
+        grey(17.0, 3.0, 0.4),
+        grey(6.0, 10.0, 0.8),
+    ]
 }
 
 /// The pixels of the outline, by the given line rasterizer.
 fn outline_pixels(canvas: &Canvas, triangle: [Vertex; 3]) -> Vec<Pixel> {
     let mut pixels = Vec::new();
     for k in 0..3 {
-        draw_line(triangle[k], triangle[(k + 1) % 3], canvas.viewport(), |f| pixels.push(f.pixel));
+        draw_line(triangle[k], triangle[(k + 1) % 3], canvas.viewport(), |f| {
+            pixels.push(f.pixel)
+        });
     }
     pixels
 }
@@ -60,14 +66,26 @@ fn offset_is_m_times_factor_plus_r_times_units() {
 fn slope_is_the_larger_partial_derivative() {
     // z = 0.01·x + 0.03·y + 0.1 → m = 0.03
     let z = |x: f32, y: f32| 0.01 * x + 0.03 * y + 0.1;
-    let tri = [grey(0.0, 0.0, z(0.0, 0.0)), grey(8.0, 1.0, z(8.0, 1.0)), grey(2.0, 7.0, z(2.0, 7.0))];
+    let tri = [
+        grey(0.0, 0.0, z(0.0, 0.0)),
+        grey(8.0, 1.0, z(8.0, 1.0)),
+        grey(2.0, 7.0, z(2.0, 7.0)),
+    ];
     let m = max_depth_slope(tri).unwrap();
     assert!((m - 0.03).abs() < 1e-6, "m = {m}");
     // z = 0.5 − 0.05·x → m = 0.05 (a magnitude)
-    let tri = [grey(0.0, 0.0, 0.5), grey(4.0, 0.0, 0.3), grey(0.0, 4.0, 0.5)];
+    let tri = [
+        grey(0.0, 0.0, 0.5),
+        grey(4.0, 0.0, 0.3),
+        grey(0.0, 4.0, 0.5),
+    ];
     assert!((max_depth_slope(tri).unwrap() - 0.05).abs() < 1e-7);
     // A triangle of constant depth has no slope.
-    let tri = [grey(0.0, 0.0, 0.5), grey(4.0, 1.0, 0.5), grey(1.0, 4.0, 0.5)];
+    let tri = [
+        grey(0.0, 0.0, 0.5),
+        grey(4.0, 1.0, 0.5),
+        grey(1.0, 4.0, 0.5),
+    ];
     assert_eq!(max_depth_slope(tri), Ok(0.0));
     // tilted(): z = 0.2 + 0.013...·x + 0.06...·y
     let m = max_depth_slope(tilted()).unwrap();
@@ -76,7 +94,11 @@ fn slope_is_the_larger_partial_derivative() {
 
 #[test]
 fn degenerate_and_non_finite_triangles_have_no_slope() {
-    let line = [grey(0.0, 0.0, 0.1), grey(2.0, 2.0, 0.5), grey(5.0, 5.0, 0.9)];
+    let line = [
+        grey(0.0, 0.0, 0.1),
+        grey(2.0, 2.0, 0.5),
+        grey(5.0, 5.0, 0.9),
+    ];
     assert_eq!(max_depth_slope(line), Err(OffsetError::Degenerate));
     let mut nan = tilted();
     nan[1].depth = f32::NAN;
@@ -131,21 +153,38 @@ fn without_offset_the_outline_is_stitched() {
 fn with_the_slides_offset_the_outline_is_whole() {
     let canvas = drawing(Some(PolygonOffset::SLIDES));
     let outline = outline_pixels(&canvas, tilted());
-    testkit::assert_pixels_eq(&outline, &canvas.pixels_not(Rgba::BLACK), "outline with offset");
+    testkit::assert_pixels_eq(
+        &outline,
+        &canvas.pixels_not(Rgba::BLACK),
+        "outline with offset",
+    );
     testkit::assert_raster_snapshot!("hidden_line_with_offset", canvas);
 }
 
 #[test]
 fn offset_moves_the_fill_back_by_o() {
     let mut canvas = Canvas::new(20, 12);
-    hidden_line(&mut canvas, &[tilted()], STYLE, Some(PolygonOffset { factor: 1.0, units: 0.0 }));
+    hidden_line(
+        &mut canvas,
+        &[tilted()],
+        STYLE,
+        Some(PolygonOffset {
+            factor: 1.0,
+            units: 0.0,
+        }),
+    );
     let m = max_depth_slope(tilted()).unwrap();
     let outline = outline_pixels(&canvas, tilted());
     let mut checked = 0;
     fill_triangle(tilted(), canvas.viewport(), |f| {
         if !outline.contains(&f.pixel) {
             let stored = canvas.depth(f.pixel).unwrap();
-            assert!((stored - (f.depth + m)).abs() < 1e-6, "{}: {stored} vs {} + {m}", f.pixel, f.depth);
+            assert!(
+                (stored - (f.depth + m)).abs() < 1e-6,
+                "{}: {stored} vs {} + {m}",
+                f.pixel,
+                f.depth
+            );
             checked += 1;
         }
     });
@@ -156,15 +195,29 @@ fn offset_moves_the_fill_back_by_o() {
 fn edges_behind_another_triangle_stay_hidden() {
     // A near, flat triangle (depth 0.1) in front of the tilted one: the
     // offset must not pull the back triangle's edges through it.
-    let front = [grey(0.0, 4.0, 0.1), grey(12.0, 4.0, 0.1), grey(6.0, 12.0, 0.1)];
+    let front = [
+        grey(0.0, 4.0, 0.1),
+        grey(12.0, 4.0, 0.1),
+        grey(6.0, 12.0, 0.1),
+    ];
     let mut canvas = Canvas::new(20, 12);
-    hidden_line(&mut canvas, &[tilted(), front], STYLE, Some(PolygonOffset::SLIDES));
+    hidden_line(
+        &mut canvas,
+        &[tilted(), front],
+        STYLE,
+        Some(PolygonOffset::SLIDES),
+    );
     let front_outline = outline_pixels(&canvas, front);
     let mut inside_front = 0;
     fill_triangle(front, canvas.viewport(), |f| {
         if !front_outline.contains(&f.pixel) {
             inside_front += 1;
-            assert_eq!(canvas.get(f.pixel), Some(Rgba::BLACK), "{} shows a hidden edge", f.pixel);
+            assert_eq!(
+                canvas.get(f.pixel),
+                Some(Rgba::BLACK),
+                "{} shows a hidden edge",
+                f.pixel
+            );
         }
     });
     assert!(inside_front > 10);
@@ -173,7 +226,11 @@ fn edges_behind_another_triangle_stay_hidden() {
     fill_triangle(front, canvas.viewport(), |f| front_cover.push(f.pixel));
     for p in outline_pixels(&canvas, tilted()) {
         if !front_cover.contains(&p) {
-            assert_eq!(canvas.get(p), Some(Rgba::WHITE), "{p} of the back outline is missing");
+            assert_eq!(
+                canvas.get(p),
+                Some(Rgba::WHITE),
+                "{p} of the back outline is missing"
+            );
         }
     }
 }
@@ -181,9 +238,22 @@ fn edges_behind_another_triangle_stay_hidden() {
 #[test]
 fn degenerate_triangles_are_outlined_only_and_hostile_ones_ignored() {
     let mut canvas = Canvas::new(8, 8);
-    let line = [grey(1.0, 1.0, 0.5), grey(3.0, 3.0, 0.5), grey(6.0, 6.0, 0.5)];
-    let hostile = [grey(f32::NAN, 0.0, 0.5), grey(1e30, 1.0, f32::INFINITY), grey(2.0, 2.0, 0.5)];
-    hidden_line(&mut canvas, &[line, hostile], STYLE, Some(PolygonOffset::SLIDES));
+    let line = [
+        grey(1.0, 1.0, 0.5),
+        grey(3.0, 3.0, 0.5),
+        grey(6.0, 6.0, 0.5),
+    ];
+    let hostile = [
+        grey(f32::NAN, 0.0, 0.5),
+        grey(1e30, 1.0, f32::INFINITY),
+        grey(2.0, 2.0, 0.5),
+    ];
+    hidden_line(
+        &mut canvas,
+        &[line, hostile],
+        STYLE,
+        Some(PolygonOffset::SLIDES),
+    );
     let drawn = canvas.pixels_not(Rgba::BLACK);
     let expected: Vec<Pixel> = (1..=6).map(|k| Pixel::new(k, k)).collect();
     testkit::assert_pixels_eq(&expected, &drawn, "a degenerate triangle's outline");

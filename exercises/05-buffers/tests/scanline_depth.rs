@@ -33,9 +33,17 @@ fn span_below_the_middle_vertex_has_vertex_1_at_the_bottom() {
     // a at (y1 − ys)/(y1 − y2) = 1/2 of lo–mid: (4, 1); b at 1/6 of lo–hi: (1/3, 1).
     let span = span_at(known_triangle(), 1.0).expect("ys = 1 crosses the triangle");
     assert_eq!(span.y, 1.0);
-    assert!(close(span.a.x, 4.0, 1e-15) && close(span.a.y, 12.0, 1e-15), "a = {}", span.a);
+    assert!(
+        close(span.a.x, 4.0, 1e-15) && close(span.a.y, 12.0, 1e-15),
+        "a = {}",
+        span.a
+    );
     assert!(close(span.b.x, 1.0 / 3.0, 1e-15), "x_b = {}", span.b.x);
-    assert!(close(span.b.y, plane_z(1.0 / 3.0, 1.0), 1e-15), "z_b = {}", span.b.y);
+    assert!(
+        close(span.b.y, plane_z(1.0 / 3.0, 1.0), 1e-15),
+        "z_b = {}",
+        span.b.y
+    );
 }
 
 #[test]
@@ -43,9 +51,17 @@ fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
     // ys = 4 ≥ 2: vertex 1 = hi (2, 6), 2 = mid (8, 2), 3 = lo (0, 0).
     // a at 1/2 of hi–mid: (5, 4); b at 1/3 of hi–lo: (4/3, 4).
     let span = span_at(known_triangle(), 4.0).expect("ys = 4 crosses the triangle");
-    assert!(close(span.a.x, 5.0, 1e-15) && close(span.a.y, 23.0, 1e-15), "a = {}", span.a);
+    assert!(
+        close(span.a.x, 5.0, 1e-15) && close(span.a.y, 23.0, 1e-15),
+        "a = {}",
+        span.a
+    );
     assert!(close(span.b.x, 4.0 / 3.0, 1e-15), "x_b = {}", span.b.x);
-    assert!(close(span.b.y, plane_z(4.0 / 3.0, 4.0), 1e-15), "z_b = {}", span.b.y);
+    assert!(
+        close(span.b.y, plane_z(4.0 / 3.0, 4.0), 1e-15),
+        "z_b = {}",
+        span.b.y
+    );
     // At the middle vertex's own scanline, a is that vertex.
     let at_mid = span_at(known_triangle(), 2.0).unwrap();
     assert!(close(at_mid.a.x, 8.0, 1e-15) && close(at_mid.a.y, plane_z(8.0, 2.0), 1e-15));
@@ -54,7 +70,14 @@ fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
 #[test]
 fn vertex_order_does_not_change_the_span() {
     let [p, q, r] = known_triangle();
-    for triangle in [[p, q, r], [q, r, p], [r, p, q], [r, q, p], [q, p, r], [p, r, q]] {
+    for triangle in [
+        [p, q, r],
+        [q, r, p],
+        [r, p, q],
+        [r, q, p],
+        [q, p, r],
+        [p, r, q],
+    ] {
         assert_eq!(span_at(triangle, 1.5), span_at(known_triangle(), 1.5));
     }
 }
@@ -84,7 +107,11 @@ fn depth_in_span_follows_the_zp_formula() {
 
 #[test]
 fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
-    let flat_top = [DVec3::new(0.0, 0.0, 1.0), DVec3::new(-4.0, 4.0, 2.0), DVec3::new(4.0, 4.0, 3.0)];
+    let flat_top = [
+        DVec3::new(0.0, 0.0, 1.0),
+        DVec3::new(-4.0, 4.0, 2.0),
+        DVec3::new(4.0, 4.0, 3.0),
+    ];
     let top = span_at(flat_top, 4.0).expect("the top scanline of a flat top");
     assert!(top.a.is_finite() && top.b.is_finite(), "{top:?}");
     let xs = [top.a.x.min(top.b.x), top.a.x.max(top.b.x)];
@@ -99,7 +126,11 @@ fn scanlines_outside_and_bad_triangles_have_no_span() {
     assert_eq!(span_at(known_triangle(), -0.5), None);
     assert_eq!(span_at(known_triangle(), 6.5), None);
     assert_eq!(span_at(known_triangle(), f64::NAN), None);
-    let flat = [DVec3::ZERO, DVec3::new(5.0, 0.0, 1.0), DVec3::new(2.0, 0.0, 2.0)];
+    let flat = [
+        DVec3::ZERO,
+        DVec3::new(5.0, 0.0, 1.0),
+        DVec3::new(2.0, 0.0, 2.0),
+    ];
     assert_eq!(span_at(flat, 0.0), None, "a triangle without height");
     let mut nan = known_triangle();
     nan[1].z = f64::NAN;
@@ -113,9 +144,17 @@ fn scanlines_outside_and_bad_triangles_have_no_span() {
 fn plane_of_the_known_triangle() {
     let plane = DepthPlane::try_from_triangle(known_triangle()).unwrap();
     assert!(close(plane.depth_at(DVec2::new(3.0, 1.0)), 10.0, 1e-15));
-    assert!(close(plane.depth_at(DVec2::new(-7.0, 11.0)), plane_z(-7.0, 11.0), 1e-15));
+    assert!(close(
+        plane.depth_at(DVec2::new(-7.0, 11.0)),
+        plane_z(-7.0, 11.0),
+        1e-15
+    ));
     // z(x + 1) = z − A/C, and z grows by 2 per column: A/C = −2.
-    assert!(close(plane.step_x(), -2.0, 1e-15), "A/C = {}", plane.step_x());
+    assert!(
+        close(plane.step_x(), -2.0, 1e-15),
+        "A/C = {}",
+        plane.step_x()
+    );
     let row = incremental_depths(&plane, 1, 1, 4);
     assert_eq!(row, [6.0, 8.0, 10.0, 12.0], "z on row 1 from x = 1");
     assert_eq!(incremental_depths(&plane, 1, 1, 0), Vec::<f64>::new());
@@ -123,11 +162,21 @@ fn plane_of_the_known_triangle() {
 
 #[test]
 fn triangles_without_a_depth_plane_are_errors() {
-    let edge_on = [DVec3::ZERO, DVec3::new(1.0, 1.0, 0.5), DVec3::new(2.0, 2.0, 0.9)];
-    assert_eq!(DepthPlane::try_from_triangle(edge_on), Err(ScanlineError::Degenerate));
+    let edge_on = [
+        DVec3::ZERO,
+        DVec3::new(1.0, 1.0, 0.5),
+        DVec3::new(2.0, 2.0, 0.9),
+    ];
+    assert_eq!(
+        DepthPlane::try_from_triangle(edge_on),
+        Err(ScanlineError::Degenerate)
+    );
     let mut nan = known_triangle();
     nan[0].y = f64::NAN;
-    assert_eq!(DepthPlane::try_from_triangle(nan), Err(ScanlineError::NotFinite));
+    assert_eq!(
+        DepthPlane::try_from_triangle(nan),
+        Err(ScanlineError::NotFinite)
+    );
 }
 
 /// Triangles with vertices in `[-20, 20]²` and depths in `[0, 1]`, with at

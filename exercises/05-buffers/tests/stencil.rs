@@ -36,12 +36,24 @@ fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
     use StencilFunc::*;
     // ref 0xA1, stored 0xAF: 0xA1 < 0xAF in full, equal in the high nibble.
     let (reference, stored) = (0xA1, 0xAF);
-    let full = [Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always]
-        .map(|f| f.passes(reference, stored, 0xFF));
-    assert_eq!(full, [false, true, false, true, false, true, false, true], "mask 0xFF");
-    let high = [Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always]
-        .map(|f| f.passes(reference, stored, 0xF0));
-    assert_eq!(high, [false, false, true, true, false, false, true, true], "mask 0xF0");
+    let full = [
+        Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always,
+    ]
+    .map(|f| f.passes(reference, stored, 0xFF));
+    assert_eq!(
+        full,
+        [false, true, false, true, false, true, false, true],
+        "mask 0xFF"
+    );
+    let high = [
+        Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always,
+    ]
+    .map(|f| f.passes(reference, stored, 0xF0));
+    assert_eq!(
+        high,
+        [false, false, true, true, false, false, true, true],
+        "mask 0xF0"
+    );
     // The reference is on the left: LESS passes where ref < stored.
     assert!(Less.passes(1, 2, 0xFF) && !Less.passes(2, 1, 0xFF));
     assert!(Greater.passes(2, 1, 0xFF) && !Greater.passes(1, 2, 0xFF));
@@ -50,7 +62,10 @@ fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
 
 #[test]
 fn write_mask_keeps_the_bits_outside_it() {
-    assert_eq!(write_masked(0b1010_1010, 0b0101_0101, 0b0000_1111), 0b1010_0101);
+    assert_eq!(
+        write_masked(0b1010_1010, 0b0101_0101, 0b0000_1111),
+        0b1010_0101
+    );
     assert_eq!(write_masked(0xAB, 0x00, 0x00), 0xAB);
     assert_eq!(write_masked(0xAB, 0x12, 0xFF), 0x12);
 }
@@ -138,31 +153,73 @@ fn each_outcome_applies_its_own_operation() {
     };
     // Stencil fails: sfail, no colour, no depth.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(0, 0, 0.1, Rgba::RED), &telling_state(StencilFunc::Never), true);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(0, 0, 0.1, Rgba::RED),
+        &telling_state(StencilFunc::Never),
+        true,
+    );
     assert_eq!(out, Some(StencilOutcome::StencilFail));
-    assert_eq!((c.stencil(p), c.get(p), c.depth(p)), (Some(0), Some(Rgba::BLACK), Some(0.5)));
+    assert_eq!(
+        (c.stencil(p), c.get(p), c.depth(p)),
+        (Some(0), Some(Rgba::BLACK), Some(0.5))
+    );
     // Stencil passes, depth fails (0.9 is behind 0.5): dpfail.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(0, 0, 0.9, Rgba::RED), &telling_state(StencilFunc::Always), true);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(0, 0, 0.9, Rgba::RED),
+        &telling_state(StencilFunc::Always),
+        true,
+    );
     assert_eq!(out, Some(StencilOutcome::DepthFail));
-    assert_eq!((c.stencil(p), c.get(p), c.depth(p)), (Some(11), Some(Rgba::BLACK), Some(0.5)));
+    assert_eq!(
+        (c.stencil(p), c.get(p), c.depth(p)),
+        (Some(11), Some(Rgba::BLACK), Some(0.5))
+    );
     // Both pass: dppass, colour and depth written.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(0, 0, 0.1, Rgba::RED), &telling_state(StencilFunc::Always), true);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(0, 0, 0.1, Rgba::RED),
+        &telling_state(StencilFunc::Always),
+        true,
+    );
     assert_eq!(out, Some(StencilOutcome::DepthPass));
-    assert_eq!((c.stencil(p), c.get(p), c.depth(p)), (Some(42), Some(Rgba::RED), Some(0.1)));
+    assert_eq!(
+        (c.stencil(p), c.get(p), c.depth(p)),
+        (Some(42), Some(Rgba::RED), Some(0.1))
+    );
     // Depth test off: the farther fragment passes, and no depth is written.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(0, 0, 0.9, Rgba::RED), &telling_state(StencilFunc::Always), false);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(0, 0, 0.9, Rgba::RED),
+        &telling_state(StencilFunc::Always),
+        false,
+    );
     assert_eq!(out, Some(StencilOutcome::DepthPass));
-    assert_eq!((c.stencil(p), c.get(p), c.depth(p)), (Some(42), Some(Rgba::RED), Some(0.5)));
+    assert_eq!(
+        (c.stencil(p), c.get(p), c.depth(p)),
+        (Some(42), Some(Rgba::RED), Some(0.5))
+    );
     // Equal depth fails LESS.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(0, 0, 0.5, Rgba::RED), &telling_state(StencilFunc::Always), true);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(0, 0, 0.5, Rgba::RED),
+        &telling_state(StencilFunc::Always),
+        true,
+    );
     assert_eq!(out, Some(StencilOutcome::DepthFail));
     // Outside the canvas: nothing.
     let mut c = setup();
-    let out = stencil_fragment(&mut c, fragment(1, 0, 0.1, Rgba::RED), &telling_state(StencilFunc::Always), true);
+    let out = stencil_fragment(
+        &mut c,
+        fragment(1, 0, 0.1, Rgba::RED),
+        &telling_state(StencilFunc::Always),
+        true,
+    );
     assert_eq!(out, None);
     assert_eq!(c, setup());
 }
@@ -198,7 +255,10 @@ fn masked_rectangle() -> Canvas {
     };
     let viewport = canvas.viewport();
     fill_triangle([at(1.0, 1.0), at(14.0, 3.0), at(5.0, 9.0)], viewport, |f| {
-        let invisible = canvas::Fragment { colour: Rgba::BLACK, ..f };
+        let invisible = canvas::Fragment {
+            colour: Rgba::BLACK,
+            ..f
+        };
         stencil_fragment(&mut canvas, invisible, &mark, false);
     });
     let test = StencilState {
@@ -206,7 +266,10 @@ fn masked_rectangle() -> Canvas {
         reference: 1,
         ..StencilState::DEFAULT
     };
-    let full = [[at(-1.0, -1.0), at(17.0, -1.0), at(17.0, 11.0)], [at(-1.0, -1.0), at(17.0, 11.0), at(-1.0, 11.0)]];
+    let full = [
+        [at(-1.0, -1.0), at(17.0, -1.0), at(17.0, 11.0)],
+        [at(-1.0, -1.0), at(17.0, 11.0), at(-1.0, 11.0)],
+    ];
     for t in full {
         fill_triangle(t, viewport, |f| {
             stencil_fragment(&mut canvas, f, &test, false);
@@ -222,7 +285,11 @@ fn stencil_equal_masks_a_full_screen_rectangle_to_a_triangle() {
         .iter()
         .map(|f| f.pixel)
         .collect();
-    testkit::assert_pixels_eq(&triangle, &canvas.pixels_not(Rgba::BLACK), "the masked rectangle");
+    testkit::assert_pixels_eq(
+        &triangle,
+        &canvas.pixels_not(Rgba::BLACK),
+        "the masked rectangle",
+    );
     testkit::assert_raster_snapshot!("masked_rectangle", canvas);
 }
 
@@ -249,7 +316,11 @@ fn incr_counts_the_depth_complexity() {
     }
     for y in 0..12 {
         for x in 0..12 {
-            assert_eq!(canvas.stencil(Pixel::new(x, y)), Some(expected[y as usize][x as usize]), "({x}, {y})");
+            assert_eq!(
+                canvas.stencil(Pixel::new(x, y)),
+                Some(expected[y as usize][x as usize]),
+                "({x}, {y})"
+            );
         }
     }
 }

@@ -28,7 +28,10 @@ fn depth_functions_compare_incoming_with_stored() {
     ];
     for (func, expected) in table {
         let yours = [0.25, 0.5, 0.75].map(|z| func.passes(z, 0.5));
-        assert_eq!(yours, expected, "{func:?} for incoming 0.25, 0.5, 0.75 vs stored 0.5");
+        assert_eq!(
+            yours, expected,
+            "{func:?} for incoming 0.25, 0.5, 0.75 vs stored 0.5"
+        );
     }
     assert_eq!(DepthFunc::default(), Less, "OpenGL's default is LESS");
 }
@@ -126,7 +129,7 @@ fn depth_rows(canvas: &Canvas) -> Vec<String> {
         .map(|y| {
             (0..8)
                 .map(|x| match canvas.depth(Pixel::new(x, y)) {
-                    Some(z) if z == 1.0 => "∞".to_string(),
+                    Some(1.0) => "∞".to_string(),
                     Some(z) => format!("{}", (z * 10.0).round()),
                     None => "?".to_string(),
                 })
@@ -181,7 +184,11 @@ fn seed_example_less_and_lequal_differ_on_the_ties_only() {
         "BBBBBB..",
     ];
     assert_eq!(colour_rows(&seed_example(DepthFunc::Less)), less, "LESS");
-    assert_eq!(colour_rows(&seed_example(DepthFunc::LEqual)), lequal, "LEQUAL");
+    assert_eq!(
+        colour_rows(&seed_example(DepthFunc::LEqual)),
+        lequal,
+        "LEQUAL"
+    );
 }
 
 #[test]
@@ -204,12 +211,23 @@ fn clear_sets_colour_and_clamped_depth_everywhere() {
     for (value, stored) in [(0.75, 0.75), (7.0, 1.0), (f32::INFINITY, 1.0), (-2.0, 0.0)] {
         clear(&mut canvas, grey, value).unwrap();
         for (p, c) in canvas.enumerate().collect::<Vec<_>>() {
-            assert_eq!(c, Rgba::from_rgba8(grey.to_rgba8()), "colour at {p} after clear");
-            assert_eq!(canvas.depth(p), Some(stored), "depth at {p} after clear({value})");
+            assert_eq!(
+                c,
+                Rgba::from_rgba8(grey.to_rgba8()),
+                "colour at {p} after clear"
+            );
+            assert_eq!(
+                canvas.depth(p),
+                Some(stored),
+                "depth at {p} after clear({value})"
+            );
         }
     }
     let before = canvas.clone();
-    assert!(clear(&mut canvas, RED, f32::NAN).is_err(), "NaN clear depth");
+    assert!(
+        clear(&mut canvas, RED, f32::NAN).is_err(),
+        "NaN clear depth"
+    );
     assert_eq!(canvas, before, "a failed clear changed the canvas");
 }
 
@@ -225,7 +243,10 @@ fn depth_range_maps_zero_to_near_and_one_to_far() {
     assert_eq!((clamped.near(), clamped.far()), (0.0, 1.0));
     assert!(DepthRange::try_new(f32::NAN, 1.0).is_err());
     assert!(DepthRange::try_new(0.0, f32::NAN).is_err());
-    assert_eq!(DepthRange::default(), DepthRange::try_new(0.0, 1.0).unwrap());
+    assert_eq!(
+        DepthRange::default(),
+        DepthRange::try_new(0.0, 1.0).unwrap()
+    );
 }
 
 #[test]
@@ -241,7 +262,10 @@ fn depth_range_is_applied_before_the_test_and_the_write() {
     // 0.1 maps to 0.55: in front, and 0.55 is stored.
     assert!(depth_test(&mut canvas, fragment(0, 0, 0.1, RED), &state));
     let stored = canvas.depth(Pixel::new(0, 0)).unwrap();
-    assert!((stored - 0.55).abs() < 1e-6, "stored {stored}, expected 0.55");
+    assert!(
+        (stored - 0.55).abs() < 1e-6,
+        "stored {stored}, expected 0.55"
+    );
 }
 
 #[test]
@@ -273,7 +297,11 @@ fn bad_fragments_are_discarded() {
     ] {
         assert!(!depth_test(&mut canvas, f, &always), "{f:?} passed");
     }
-    assert_eq!(canvas, Canvas::new(2, 2), "a discarded fragment changed the canvas");
+    assert_eq!(
+        canvas,
+        Canvas::new(2, 2),
+        "a discarded fragment changed the canvas"
+    );
 }
 
 fn zbuffer_scene() -> Canvas {
@@ -297,7 +325,12 @@ fn interpenetrating_triangles_match_the_nearest_fragment_picture() {
             expected.set(p, Rgba::grey(0.1));
         }
     }
-    testkit::assert_canvas_eq(&expected, &zbuffer_scene(), 0.0, "z-buffer vs nearest fragment");
+    testkit::assert_canvas_eq(
+        &expected,
+        &zbuffer_scene(),
+        0.0,
+        "z-buffer vs nearest fragment",
+    );
 }
 
 #[test]
@@ -305,7 +338,10 @@ fn interpenetrating_triangles_match_the_reference_image() {
     testkit::image::assert_image_matches(
         "zbuffer_interpenetrating",
         &zbuffer_scene(),
-        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/zbuffer_interpenetrating.png"),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/zbuffer_interpenetrating.png"
+        ),
         testkit::image::Tolerance::EXACT,
     );
 }

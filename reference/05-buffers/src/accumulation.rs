@@ -79,7 +79,9 @@ impl DoubleBuffer {
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum AccumError {
     /// The canvas and the accumulation buffer differ in size.
-    #[error("the canvas is {canvas_width}x{canvas_height}, the accumulation buffer {width}x{height}")]
+    #[error(
+        "the canvas is {canvas_width}x{canvas_height}, the accumulation buffer {width}x{height}"
+    )]
     SizeMismatch {
         /// Accumulation buffer width.
         width: u32,
@@ -157,7 +159,12 @@ impl AccumulationBuffer {
     /// canvas has another size. Accumulating one frame with `Load` or
     /// `Accum` (value 1, from a cleared buffer) and returning it with value
     /// 1 gives that frame back exactly.
-    pub fn accum(&mut self, op: AccumOp, value: f32, canvas: &mut Canvas) -> Result<(), AccumError> {
+    pub fn accum(
+        &mut self,
+        op: AccumOp,
+        value: f32,
+        canvas: &mut Canvas,
+    ) -> Result<(), AccumError> {
         // BEGIN SOLUTION accumulation: check the value and the size, then apply op to every pixel as glAccum defines it
         if !value.is_finite() {
             return Err(AccumError::NotFinite);

@@ -134,9 +134,13 @@ mod tests {
         // bottom edge y = 0 out (a bottom edge), on the hypotenuse out.
         let mut pixels = Vec::new();
         let vp = Viewport::new(-5, -5, 5, 5);
-        fill_triangle([at(0.0, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)], vp, |f| {
-            pixels.push(f.pixel);
-        });
+        fill_triangle(
+            [at(0.0, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)],
+            vp,
+            |f| {
+                pixels.push(f.pixel);
+            },
+        );
         let expected: Vec<Pixel> = [(0, 1), (1, 1), (2, 1), (0, 2), (1, 2), (0, 3)]
             .map(|(x, y)| Pixel::new(x, y))
             .to_vec();
@@ -147,7 +151,11 @@ mod tests {
     fn depth_is_the_plane_through_the_vertices() {
         // z = 0.01·x + 0.02·y + 0.1
         let z = |x: f32, y: f32| 0.01 * x + 0.02 * y + 0.1;
-        let tri = [at(0.0, 0.0, z(0.0, 0.0)), at(8.0, 1.0, z(8.0, 1.0)), at(2.0, 7.0, z(2.0, 7.0))];
+        let tri = [
+            at(0.0, 0.0, z(0.0, 0.0)),
+            at(8.0, 1.0, z(8.0, 1.0)),
+            at(2.0, 7.0, z(2.0, 7.0)),
+        ];
         fill_triangle(tri, Viewport::new(0, 0, 9, 9), |f| {
             let expect = z(f.pixel.x as f32, f.pixel.y as f32);
             assert!((f.depth - expect).abs() < 1e-6, "{f:?}");
@@ -157,9 +165,14 @@ mod tests {
     #[test]
     fn dda_line_includes_both_endpoints_and_interpolates_depth() {
         let mut frags = Vec::new();
-        draw_line(at(0.0, 0.0, 0.0), at(4.0, 2.0, 1.0), Viewport::new(0, 0, 9, 9), |f| {
-            frags.push(f);
-        });
+        draw_line(
+            at(0.0, 0.0, 0.0),
+            at(4.0, 2.0, 1.0),
+            Viewport::new(0, 0, 9, 9),
+            |f| {
+                frags.push(f);
+            },
+        );
         let pixels: Vec<Pixel> = frags.iter().map(|f| f.pixel).collect();
         let expected = [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)].map(|(x, y)| Pixel::new(x, y));
         assert_eq!(pixels, expected);
@@ -170,11 +183,21 @@ mod tests {
     fn hostile_input_emits_nothing() {
         let vp = Viewport::new(0, 0, 9, 9);
         let mut count = 0;
-        fill_triangle([at(f32::NAN, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)], vp, |_| {
-            count += 1;
+        fill_triangle(
+            [at(f32::NAN, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)],
+            vp,
+            |_| {
+                count += 1;
+            },
+        );
+        fill_triangle(
+            [at(1.0, 1.0, 0.0), at(2.0, 2.0, 0.0), at(3.0, 3.0, 0.0)],
+            vp,
+            |_| count += 1,
+        );
+        draw_line(at(0.0, 0.0, 0.0), at(f32::INFINITY, 0.0, 0.0), vp, |_| {
+            count += 1
         });
-        fill_triangle([at(1.0, 1.0, 0.0), at(2.0, 2.0, 0.0), at(3.0, 3.0, 0.0)], vp, |_| count += 1);
-        draw_line(at(0.0, 0.0, 0.0), at(f32::INFINITY, 0.0, 0.0), vp, |_| count += 1);
         assert_eq!(count, 0);
     }
 }

@@ -219,9 +219,11 @@ pub fn stencil_fragment(
     let p = fragment.pixel;
     let stored = canvas.stencil(p)?;
     let stored_depth = canvas.depth(p)?;
+    // A NaN depth compares false and so fails LESS.
+    let depth_passes = !depth_test || fragment.depth < stored_depth;
     let outcome = if !state.func.passes(state.reference, stored, state.value_mask) {
         StencilOutcome::StencilFail
-    } else if depth_test && !(fragment.depth < stored_depth) {
+    } else if !depth_passes {
         StencilOutcome::DepthFail
     } else {
         StencilOutcome::DepthPass
