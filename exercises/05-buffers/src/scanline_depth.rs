@@ -86,7 +86,9 @@ pub fn depth_in_span(span: &Span, x_p: f64) -> f64 {
 /// `z(x, y) = (−A·x − B·y − D) / C` (seed: "Ebenengleichung").
 ///
 /// `(A, B, C)` is a normal of the plane (the cross product of two edges),
-/// `D = −(A, B, C) · V0`. Only the ratios `A/C`, `B/C`, `D/C` matter.
+/// `D = −(A, B, C) · V0`. Only the ratios `A/C`, `B/C`, `D/C` matter. (The
+/// seed calls `D` "Abstand vom Ursprung": that holds only for a normal of
+/// length 1; here the normal is not normalized, and need not be.)
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthPlane {
     /// The normal `(A, B, C)`; `C ≠ 0`.
@@ -127,7 +129,8 @@ impl DepthPlane {
 ///
 /// Rounding errors add up along the row: after `n` steps the result may
 /// differ from [`DepthPlane::depth_at`] by about `n` units in the last
-/// place of the largest value involved.
+/// place of the largest value involved. The caller chooses `count` (a
+/// span of the canvas): the result holds `count` values.
 #[must_use]
 pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize) -> Vec<f64> {
     todo!("scanline_depth: evaluate the plane once at the first pixel, then subtract A/C per step")

@@ -19,6 +19,11 @@
 //!   m = max(|∂z/∂x|, |∂z/∂y|)   the polygon's largest depth slope
 //!   r                           the smallest resolvable depth difference
 //! ```
+//!
+//! The seed glosses `m` as "Maximaler z-Unterschied des Objektes" (the
+//! largest depth difference across the object); OpenGL's `m` is the
+//! largest depth *slope*, the depth change per pixel, which is what
+//! decides how far the fill and the line can differ on one pixel.
 
 use canvas::{Canvas, Fragment, Rgba, Vertex};
 

@@ -226,6 +226,8 @@ pub fn depth_test(canvas: &mut Canvas, fragment: Fragment, state: &DepthState) -
         return false;
     }
     let z = state.range.map(fragment.depth);
+    // The seed's pseudo-code writes `pz <= readZ` here, fixing LEQUAL; the
+    // comparison is a parameter, as in OpenGL.
     if !state.func.passes(z, stored) {
         return false;
     }
