@@ -1,4 +1,4 @@
-//! The canvas: colour and depth planes of `width × height` pixels.
+//! The canvas: colour, depth and stencil planes of `width × height` pixels.
 
 use std::path::Path;
 
@@ -9,6 +9,14 @@ use crate::{Pixel, Rgba, Span, Viewport, ascii};
 /// The value a cleared depth plane holds: the far end of the depth range
 /// `[0, 1]` (OpenGL's default `glClearDepth(1.0)`).
 pub const DEPTH_CLEAR: f32 = 1.0;
+
+/// The value a cleared stencil plane holds: 0 (OpenGL's default
+/// `glClearStencil(0)`).
+pub const STENCIL_CLEAR: u8 = 0;
+
+/// Bits per stencil value: the stencil plane holds one `u8` per pixel, the
+/// 8 bits the lecture slides and a `DEPTH24_STENCIL8` framebuffer assume.
+pub const STENCIL_BITS: u32 = u8::BITS;
 
 /// A vertex as rasterizers receive it: after projection and viewport
 /// transform, in pixel coordinates.
@@ -85,12 +93,16 @@ pub enum CanvasError {
     },
 }
 
-/// A raster of `width × height` pixels with a colour plane and a depth plane.
+/// A raster of `width × height` pixels with a colour plane, a depth plane
+/// and a stencil plane.
 ///
 /// The colour plane holds 8 bits per channel, like an `RGBA8` framebuffer
 /// and the PNG it is saved as: [`Canvas::set`] rounds each channel of an
 /// [`Rgba`] to the nearest of 256 levels (clamping to `[0, 1]`), and
 /// [`Canvas::get`] returns the stored level. The depth plane holds `f32`.
+/// The stencil plane holds [`STENCIL_BITS`] = 8 bits per pixel (`u8`);
+/// no drawing function of the canvas touches it: only
+/// [`Canvas::set_stencil`] and [`Canvas::clear_stencil`] do.
 ///
 /// Pixel `(x, y)` is stored at index `y · width + x`, row 0 at the bottom
 /// (see the crate documentation for the full convention). Every write
@@ -102,13 +114,15 @@ pub struct Canvas {
     height: u32,
     colour: Vec<[u8; 4]>,
     depth: Vec<f32>,
+    stencil: Vec<u8>,
 }
 
 impl Canvas {
     /// The largest number of pixels a canvas may have (a 16384² image).
     pub const MAX_PIXELS: u64 = 1 << 28;
 
-    /// A canvas cleared to [`Rgba::BLACK`] and [`DEPTH_CLEAR`].
+    /// A canvas cleared to [`Rgba::BLACK`], [`DEPTH_CLEAR`] and
+    /// [`STENCIL_CLEAR`].
     ///
     /// # Panics
     /// If `width · height` exceeds [`Canvas::MAX_PIXELS`]; see
@@ -133,6 +147,7 @@ impl Canvas {
             height,
             colour: vec![Rgba::BLACK.to_rgba8(); n as usize],
             depth: vec![DEPTH_CLEAR; n as usize],
+            stencil: vec![STENCIL_CLEAR; n as usize],
         })
     }
 
@@ -172,6 +187,7 @@ impl Canvas {
     }
 
     /// Sets every pixel to `colour` and every depth to [`DEPTH_CLEAR`].
+    /// The stencil plane is left as it is (see [`Canvas::clear_stencil`]).
     pub fn clear(&mut self, colour: Rgba) {
         self.colour.fill(colour.to_rgba8());
         self.depth.fill(DEPTH_CLEAR);
@@ -221,6 +237,26 @@ impl Canvas {
         if let Some(i) = self.index(p) {
             self.depth[i] = depth;
         }
+    }
+
+    /// The stencil value at `p`, or `None` outside the canvas.
+    #[must_use]
+    pub fn stencil(&self, p: Pixel) -> Option<u8> {
+        self.index(p).map(|i| self.stencil[i])
+    }
+
+    /// Sets the stencil value at `p`; ignored outside the canvas.
+    pub fn set_stencil(&mut self, p: Pixel, value: u8) {
+        if let Some(i) = self.index(p) {
+            self.stencil[i] = value;
+        }
+    }
+
+    /// Sets every stencil value to `value` (OpenGL's `glClearStencil(value)`
+    /// followed by `glClear(GL_STENCIL_BUFFER_BIT)`; [`STENCIL_CLEAR`] is
+    /// the default).
+    pub fn clear_stencil(&mut self, value: u8) {
+        self.stencil.fill(value);
     }
 
     /// Writes a fragment's colour and depth without a depth test; ignored
@@ -384,6 +420,26 @@ mod tests {
         assert!(c.pixels_not(Rgba::BLACK).is_empty());
         assert_eq!(c.get(Pixel::new(0, -1)), None);
         assert_eq!(c.depth(Pixel::new(5, 5)), None);
+        c.set_stencil(Pixel::new(-1, 0), 7);
+        assert_eq!(c.stencil(Pixel::new(3, 0)), None);
+        assert_eq!(c.stencil(Pixel::new(2, 1)), Some(STENCIL_CLEAR));
+    }
+
+    #[test]
+    fn stencil_plane_is_set_and_cleared_on_its_own() {
+        let mut c = Canvas::new(2, 2);
+        c.set_stencil(Pixel::new(1, 0), 200);
+        assert_eq!(c.stencil(Pixel::new(1, 0)), Some(200));
+        assert_eq!(c.stencil(Pixel::new(0, 0)), Some(STENCIL_CLEAR));
+        c.clear(Rgba::WHITE);
+        c.plot(Fragment {
+            pixel: Pixel::new(1, 0),
+            depth: 0.5,
+            colour: Rgba::RED,
+        });
+        assert_eq!(c.stencil(Pixel::new(1, 0)), Some(200));
+        c.clear_stencil(3);
+        assert!((0..2).all(|y| (0..2).all(|x| c.stencil(Pixel::new(x, y)) == Some(3))));
     }
 
     #[test]

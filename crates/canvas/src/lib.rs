@@ -1,4 +1,4 @@
-//! The course canvas: a raster with colour and depth planes, and the pixel
+//! The course canvas: a raster with colour, depth and stencil planes, and the pixel
 //! conventions every rasterizer in this course follows.
 //!
 //! # Pixel convention
@@ -41,7 +41,7 @@ mod colour;
 mod pixel;
 
 pub use ascii::{ASCII_LEGEND, ascii_grid, ink_char};
-pub use canvas::{Canvas, CanvasError, DEPTH_CLEAR, Fragment, Vertex};
+pub use canvas::{Canvas, CanvasError, DEPTH_CLEAR, Fragment, STENCIL_BITS, STENCIL_CLEAR, Vertex};
 pub use colour::Rgba;
 pub use pixel::{MAX_COORD, Pixel, Span, Viewport, round_half_away, within_limits};
 

@@ -1,0 +1,203 @@
+//! Given code, not an exercise: a small rasterizer that turns triangles and
+//! lines into fragments with depth, so that the buffer tasks have something
+//! to test and write. (Topic 03 teaches how to write one; nothing here
+//! needs its solution.)
+//!
+//! Convention (see `canvas`): pixel centres at integers, y up. Triangles
+//! cover the pixels whose centre lies inside, with the top-left rule on
+//! edges; lines are DDA lines that include both endpoints.
+
+use canvas::{Fragment, MAX_COORD, Pixel, Vertex, Viewport, round_half_away};
+
+/// Whether both coordinates are finite and within ±[`MAX_COORD`].
+fn usable(v: &Vertex) -> bool {
+    let limit = f64::from(MAX_COORD);
+    v.position.is_finite()
+        && f64::from(v.position.x).abs() <= limit
+        && f64::from(v.position.y).abs() <= limit
+}
+
+/// Twice the signed area of `a, b, p` (positive when counter-clockwise,
+/// y up): the edge function of the edge `a → b` at `p`.
+fn edge(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+}
+
+/// Emits one fragment per pixel whose centre lies inside the triangle,
+/// with depth and colour interpolated by barycentric weights (the plane
+/// through the three vertices, evaluated at the pixel centre).
+///
+/// - **Edges:** a centre exactly on an edge belongs to the triangle when
+///   the edge is a left or a top edge (the top-left rule), so triangles
+///   sharing an edge never both emit a pixel.
+/// - **Skipped:** zero-area triangles and vertices with a NaN, infinite or
+///   out-of-range (beyond ±[`MAX_COORD`]) position emit nothing.
+/// - Only pixels inside `viewport` (inclusive bounds) are emitted, row by
+///   row from the bottom, left to right.
+///
+/// Evaluated in `f64`; exact for vertices on a grid of 1/256 pixel and
+/// coordinates below 2¹⁶.
+pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut emit: impl FnMut(Fragment)) {
+    if !vertices.iter().all(usable) || viewport.is_empty() {
+        return;
+    }
+    let p = vertices.map(|v| [f64::from(v.position.x), f64::from(v.position.y)]);
+    let area = edge(p[0], p[1], p[2]);
+    if area == 0.0 {
+        return;
+    }
+    // Orient every edge so that the inside is where its function is ≥ 0.
+    let sign = area.signum();
+    // Edge k runs from vertex k+1 to vertex k+2 and is opposite vertex k,
+    // so its function divided by the area is vertex k's barycentric weight.
+    let ends = [(1, 2), (2, 0), (0, 1)];
+    let top_left = ends.map(|(i, j)| {
+        let (ex, ey) = ((p[j][0] - p[i][0]) * sign, (p[j][1] - p[i][1]) * sign);
+        // Counter-clockwise with y up: a left edge runs downwards, a top
+        // edge runs to the left.
+        ey < 0.0 || (ey == 0.0 && ex < 0.0)
+    });
+    let lo = |k: usize| p[0][k].min(p[1][k]).min(p[2][k]).ceil();
+    let hi = |k: usize| p[0][k].max(p[1][k]).max(p[2][k]).floor();
+    let x0 = lo(0).max(f64::from(viewport.x_min)) as i32;
+    let x1 = hi(0).min(f64::from(viewport.x_max)) as i32;
+    let y0 = lo(1).max(f64::from(viewport.y_min)) as i32;
+    let y1 = hi(1).min(f64::from(viewport.y_max)) as i32;
+    for y in y0..=y1 {
+        for x in x0..=x1 {
+            let c = [f64::from(x), f64::from(y)];
+            let w = [0, 1, 2].map(|k| edge(p[ends[k].0], p[ends[k].1], c) * sign);
+            let inside = (0..3).all(|k| w[k] > 0.0 || (w[k] == 0.0 && top_left[k]));
+            if !inside {
+                continue;
+            }
+            let l = w.map(|wk| wk / (area * sign));
+            let depth = l[0] * f64::from(vertices[0].depth)
+                + l[1] * f64::from(vertices[1].depth)
+                + l[2] * f64::from(vertices[2].depth);
+            let colour = vertices[0].colour * l[0] as f32
+                + vertices[1].colour * l[1] as f32
+                + vertices[2].colour * l[2] as f32;
+            emit(Fragment {
+                pixel: Pixel::new(x, y),
+                depth: depth as f32,
+                colour,
+            });
+        }
+    }
+}
+
+/// Emits the fragments of the DDA line from `a` to `b`, both endpoints
+/// included, with depth and colour interpolated linearly.
+///
+/// With `n = ⌈max(|Δx|, |Δy|)⌉` steps, step `i` samples `t = i / n` at
+/// `a + t · (b − a)` and emits the nearest pixel (rounding half away from
+/// zero); a zero-length line emits one fragment. Non-finite or
+/// out-of-range endpoints emit nothing; fragments outside `viewport` are
+/// left out.
+pub fn draw_line(a: Vertex, b: Vertex, viewport: Viewport, mut emit: impl FnMut(Fragment)) {
+    if !usable(&a) || !usable(&b) {
+        return;
+    }
+    let d = b.position - a.position;
+    let steps = d.x.abs().max(d.y.abs()).ceil() as u32;
+    for i in 0..=steps {
+        let t = if steps == 0 {
+            0.0
+        } else {
+            i as f32 / steps as f32
+        };
+        let v = a.mix(&b, t);
+        let pixel = Pixel::new(round_half_away(v.position.x), round_half_away(v.position.y));
+        if viewport.contains(pixel) {
+            emit(Fragment {
+                pixel,
+                depth: v.depth,
+                colour: v.colour,
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use canvas::{Rgba, Vec2};
+
+    fn at(x: f32, y: f32, depth: f32) -> Vertex {
+        Vertex::new(Vec2::new(x, y), depth, Rgba::WHITE)
+    }
+
+    #[test]
+    fn right_triangle_keeps_left_and_bottom_edge_pixels_by_the_top_left_rule() {
+        // (0,0)-(4,0)-(0,4): centres on the left edge x = 0 are in, on the
+        // bottom edge y = 0 out (a bottom edge), on the hypotenuse out.
+        let mut pixels = Vec::new();
+        let vp = Viewport::new(-5, -5, 5, 5);
+        fill_triangle(
+            [at(0.0, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)],
+            vp,
+            |f| {
+                pixels.push(f.pixel);
+            },
+        );
+        let expected: Vec<Pixel> = [(0, 1), (1, 1), (2, 1), (0, 2), (1, 2), (0, 3)]
+            .map(|(x, y)| Pixel::new(x, y))
+            .to_vec();
+        assert_eq!(pixels, expected);
+    }
+
+    #[test]
+    fn depth_is_the_plane_through_the_vertices() {
+        // z = 0.01·x + 0.02·y + 0.1
+        let z = |x: f32, y: f32| 0.01 * x + 0.02 * y + 0.1;
+        let tri = [
+            at(0.0, 0.0, z(0.0, 0.0)),
+            at(8.0, 1.0, z(8.0, 1.0)),
+            at(2.0, 7.0, z(2.0, 7.0)),
+        ];
+        fill_triangle(tri, Viewport::new(0, 0, 9, 9), |f| {
+            let expect = z(f.pixel.x as f32, f.pixel.y as f32);
+            assert!((f.depth - expect).abs() < 1e-6, "{f:?}");
+        });
+    }
+
+    #[test]
+    fn dda_line_includes_both_endpoints_and_interpolates_depth() {
+        let mut frags = Vec::new();
+        draw_line(
+            at(0.0, 0.0, 0.0),
+            at(4.0, 2.0, 1.0),
+            Viewport::new(0, 0, 9, 9),
+            |f| {
+                frags.push(f);
+            },
+        );
+        let pixels: Vec<Pixel> = frags.iter().map(|f| f.pixel).collect();
+        let expected = [(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)].map(|(x, y)| Pixel::new(x, y));
+        assert_eq!(pixels, expected);
+        assert_eq!(frags[2].depth, 0.5);
+    }
+
+    #[test]
+    fn hostile_input_emits_nothing() {
+        let vp = Viewport::new(0, 0, 9, 9);
+        let mut count = 0;
+        fill_triangle(
+            [at(f32::NAN, 0.0, 0.0), at(4.0, 0.0, 0.0), at(0.0, 4.0, 0.0)],
+            vp,
+            |_| {
+                count += 1;
+            },
+        );
+        fill_triangle(
+            [at(1.0, 1.0, 0.0), at(2.0, 2.0, 0.0), at(3.0, 3.0, 0.0)],
+            vp,
+            |_| count += 1,
+        );
+        draw_line(at(0.0, 0.0, 0.0), at(f32::INFINITY, 0.0, 0.0), vp, |_| {
+            count += 1
+        });
+        assert_eq!(count, 0);
+    }
+}

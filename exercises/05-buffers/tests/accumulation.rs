@@ -1,0 +1,275 @@
+//! Task 6: double buffering and jittered accumulation.
+
+mod common;
+
+use buffers::accumulation::{
+    AccumError, AccumOp, AccumulationBuffer, DoubleBuffer, JITTER_8, jittered_antialias,
+};
+use buffers::raster::fill_triangle;
+use canvas::{Canvas, Pixel, Rgba, Vec2, Vec4, Vertex};
+use common::vertex;
+use proptest::prelude::*;
+
+#[test]
+fn drawing_into_the_back_buffer_shows_only_after_the_swap() {
+    let mut buffers = DoubleBuffer::try_new(4, 3).unwrap();
+    let p = Pixel::new(1, 2);
+    buffers.back_mut().set(p, Rgba::RED);
+    assert_eq!(
+        buffers.front().get(p),
+        Some(Rgba::BLACK),
+        "the back buffer leaked to the front"
+    );
+    buffers.swap();
+    assert_eq!(
+        buffers.front().get(p),
+        Some(Rgba::RED),
+        "the swap did not show the frame"
+    );
+    // The old front is now the back buffer, with its old content.
+    assert_eq!(buffers.back_mut().get(p), Some(Rgba::BLACK));
+    buffers.back_mut().set(p, Rgba::GREEN);
+    assert_eq!(buffers.front().get(p), Some(Rgba::RED));
+    let before = buffers.clone();
+    buffers.swap();
+    buffers.swap();
+    assert_eq!(buffers, before, "two swaps must restore the state");
+    assert_eq!(buffers.front().get(p), Some(Rgba::RED));
+}
+
+/// A 2 × 1 canvas with the 8-bit colours 51/255 = 0.2 and 102/255 = 0.4.
+fn two_pixels() -> Canvas {
+    let mut c = Canvas::new(2, 1);
+    c.set(Pixel::new(0, 0), Rgba::new(0.2, 0.4, 0.0, 1.0));
+    c.set(Pixel::new(1, 0), Rgba::new(0.4, 0.2, 1.0, 0.0));
+    c
+}
+
+fn close(a: Vec4, b: Vec4) -> bool {
+    (a - b).abs().max_element() < 1e-6
+}
+
+#[test]
+fn each_operation_does_what_glaccum_says() {
+    let mut canvas = two_pixels();
+    let mut acc = AccumulationBuffer::try_new(2, 1).unwrap();
+    let p = Pixel::new(0, 0);
+    assert_eq!(acc.get(p), Some(Vec4::ZERO), "a new buffer is cleared to 0");
+    acc.accum(AccumOp::Load, 2.0, &mut canvas).unwrap(); // acc = 2·colour
+    assert!(
+        close(acc.get(p).unwrap(), Vec4::new(0.4, 0.8, 0.0, 2.0)),
+        "LOAD 2: {}",
+        acc.get(p).unwrap()
+    );
+    acc.accum(AccumOp::Accum, 0.5, &mut canvas).unwrap(); // acc += colour/2
+    assert!(
+        close(acc.get(p).unwrap(), Vec4::new(0.5, 1.0, 0.0, 2.5)),
+        "ACCUM 0.5"
+    );
+    acc.accum(AccumOp::Mult, 0.5, &mut canvas).unwrap(); // acc /= 2
+    assert!(
+        close(acc.get(p).unwrap(), Vec4::new(0.25, 0.5, 0.0, 1.25)),
+        "MULT 0.5"
+    );
+    acc.accum(AccumOp::Add, -0.04, &mut canvas).unwrap(); // acc −= 0.04
+    assert!(
+        close(acc.get(p).unwrap(), Vec4::new(0.21, 0.46, -0.04, 1.21)),
+        "ADD −0.04"
+    );
+    assert_eq!(canvas, two_pixels(), "only RETURN writes the canvas");
+    // colour = 2·acc = (0.42, 0.92, −0.08, 2.42), clamped and rounded to 8 bits
+    acc.accum(AccumOp::Return, 2.0, &mut canvas).unwrap();
+    assert_eq!(
+        canvas.get(p).unwrap().to_rgba8(),
+        [107, 235, 0, 255],
+        "RETURN 2"
+    );
+    assert_eq!(acc.get(Pixel::new(2, 0)), None);
+}
+
+#[test]
+fn bad_values_and_sizes_are_errors_that_change_nothing() {
+    let mut canvas = two_pixels();
+    let mut acc = AccumulationBuffer::try_new(2, 1).unwrap();
+    acc.accum(AccumOp::Load, 1.0, &mut canvas).unwrap();
+    let before = acc.clone();
+    for value in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+        for op in [
+            AccumOp::Accum,
+            AccumOp::Load,
+            AccumOp::Return,
+            AccumOp::Mult,
+            AccumOp::Add,
+        ] {
+            assert_eq!(
+                acc.accum(op, value, &mut canvas),
+                Err(AccumError::NotFinite),
+                "{op:?} {value}"
+            );
+        }
+    }
+    let mut wrong_size = Canvas::new(3, 1);
+    assert!(matches!(
+        acc.accum(AccumOp::Return, 1.0, &mut wrong_size),
+        Err(AccumError::SizeMismatch { .. })
+    ));
+    assert_eq!(acc, before);
+    assert_eq!(canvas, two_pixels());
+    assert_eq!(wrong_size, Canvas::new(3, 1));
+    assert_eq!(
+        AccumulationBuffer::try_new(u32::MAX, u32::MAX),
+        Err(AccumError::TooLarge)
+    );
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn accumulating_one_frame_gives_that_frame(levels in prop::collection::vec(any::<[u8; 4]>(), 12)) {
+        let mut frame = Canvas::new(4, 3);
+        for (i, &c) in levels.iter().enumerate() {
+            frame.set(Pixel::new(i as i32 % 4, i as i32 / 4), Rgba::from_rgba8(c));
+        }
+        for op in [AccumOp::Accum, AccumOp::Load] {
+            let mut acc = AccumulationBuffer::try_new(4, 3).unwrap();
+            let mut source = frame.clone();
+            acc.accum(op, 1.0, &mut source).unwrap();
+            let mut out = Canvas::new(4, 3);
+            acc.accum(AccumOp::Return, 1.0, &mut out).unwrap();
+            prop_assert_eq!(&out, &frame, "{:?} 1 then RETURN 1", op);
+        }
+    }
+
+    #[test]
+    fn n_equal_frames_average_to_that_frame(levels in prop::collection::vec(any::<[u8; 4]>(), 6), n in 1usize..10) {
+        let mut frame = Canvas::new(3, 2);
+        for (i, &c) in levels.iter().enumerate() {
+            frame.set(Pixel::new(i as i32 % 3, i as i32 / 3), Rgba::from_rgba8(c));
+        }
+        let jitter = vec![Vec2::ZERO; n];
+        let out = jittered_antialias(3, 2, &jitter, |canvas, _| *canvas = frame.clone()).unwrap();
+        let comparison = testkit::image::compare(&frame, &out, 1.0 / 255.0);
+        prop_assert_eq!(comparison.mismatched, 0, "{} equal frames, largest difference {}", n, comparison.max_difference);
+    }
+}
+
+/// The scene: triangles shifted by `−j`, so that pixel centres sample it
+/// at `centre + j`.
+fn render(triangles: &[[Vertex; 3]]) -> impl FnMut(&mut Canvas, Vec2) + '_ {
+    move |canvas: &mut Canvas, j: Vec2| {
+        let viewport = canvas.viewport();
+        for t in triangles {
+            let moved = t.map(|v| Vertex {
+                position: v.position - j,
+                ..v
+            });
+            fill_triangle(moved, viewport, |f| canvas.set(f.pixel, f.colour));
+        }
+    }
+}
+
+/// Whether the point lies strictly inside the triangle (no sample of these
+/// tests falls on an edge).
+fn inside(t: &[Vertex; 3], q: Vec2) -> bool {
+    let side = |a: Vec2, b: Vec2| (b - a).perp_dot(q - a);
+    let s = [
+        side(t[0].position, t[1].position),
+        side(t[1].position, t[2].position),
+        side(t[2].position, t[0].position),
+    ];
+    s.iter().all(|&v| v > 0.0) || s.iter().all(|&v| v < 0.0)
+}
+
+#[test]
+fn one_centred_sample_gives_the_aliased_frame() {
+    let triangles = [[
+        vertex(1.3, 0.7, 0.5, Rgba::WHITE),
+        vertex(9.1, 2.2, 0.5, Rgba::WHITE),
+        vertex(3.4, 7.9, 0.5, Rgba::GREEN),
+    ]];
+    let mut aliased = Canvas::new(10, 8);
+    render(&triangles)(&mut aliased, Vec2::ZERO);
+    let out = jittered_antialias(10, 8, &[Vec2::ZERO], render(&triangles)).unwrap();
+    assert_eq!(out, aliased);
+}
+
+#[test]
+fn edge_pixels_get_the_fraction_of_samples_inside() {
+    // The given table: the Red Book's j8, moved around the pixel centre.
+    let mut xs: Vec<f32> = JITTER_8.iter().map(|j| (j.x + 0.5) * 16.0).collect();
+    let mut ys: Vec<f32> = JITTER_8.iter().map(|j| (j.y + 0.5) * 16.0).collect();
+    xs.sort_by(f32::total_cmp);
+    ys.sort_by(f32::total_cmp);
+    // One sample in each eighth of the pixel, horizontally and vertically.
+    let odd: Vec<f32> = (0..8).map(|k| (2 * k + 1) as f32).collect();
+    assert_eq!(xs, odd);
+    assert_eq!(ys, odd);
+    assert_eq!(JITTER_8[0], Vec2::new(0.0625, -0.0625));
+
+    let triangles = [[
+        vertex(0.3, 0.2, 0.5, Rgba::WHITE),
+        vertex(11.7, 2.1, 0.5, Rgba::WHITE),
+        vertex(2.2, 8.9, 0.5, Rgba::WHITE),
+    ]];
+    let out = jittered_antialias(12, 10, &JITTER_8, render(&triangles)).unwrap();
+    let mut partial = 0;
+    for (p, c) in out.enumerate() {
+        let hits = JITTER_8
+            .iter()
+            .filter(|&&j| inside(&triangles[0], p.centre() + j))
+            .count();
+        let expected = hits as f32 / 8.0;
+        assert!(
+            (c.r - expected).abs() <= 1.0 / 255.0,
+            "{p}: {} of 8 samples inside, got {}",
+            hits,
+            c.r
+        );
+        if hits > 0 && hits < 8 {
+            partial += 1;
+        }
+    }
+    assert!(partial > 10, "the edges should be antialiased");
+}
+
+#[test]
+fn no_jitter_is_an_error() {
+    let result = jittered_antialias(4, 4, &[], |_, _| {});
+    assert_eq!(result.err(), Some(AccumError::NoJitter));
+}
+
+fn antialiased_scene() -> Canvas {
+    let c = |r, g, b| Rgba::rgb(r, g, b);
+    let triangles = [
+        [
+            vertex(3.0, 4.0, 0.5, c(0.9, 0.3, 0.2)),
+            vertex(58.0, 12.0, 0.5, c(0.9, 0.3, 0.2)),
+            vertex(20.0, 44.0, 0.5, c(0.9, 0.8, 0.2)),
+        ],
+        [
+            vertex(30.0, 46.0, 0.5, c(0.2, 0.5, 0.9)),
+            vertex(40.3, 9.7, 0.5, c(0.2, 0.9, 0.6)),
+            vertex(61.0, 40.0, 0.5, c(0.2, 0.5, 0.9)),
+        ],
+        [
+            vertex(5.0, 40.0, 0.5, Rgba::WHITE),
+            vertex(14.0, 38.5, 0.5, Rgba::WHITE),
+            vertex(6.0, 46.0, 0.5, Rgba::WHITE),
+        ],
+    ];
+    jittered_antialias(64, 48, &JITTER_8, render(&triangles)).unwrap()
+}
+
+#[test]
+fn antialiased_triangles_match_the_reference_image() {
+    testkit::image::assert_image_matches(
+        "accumulation_antialiased",
+        &antialiased_scene(),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/accumulation_antialiased.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
+}

@@ -1,0 +1,260 @@
+//! Task 4: polygon offset for hidden-line drawing.
+
+mod common;
+
+use buffers::polygon_offset::{
+    DEPTH_RESOLUTION, HiddenLineStyle, OffsetError, PolygonOffset, hidden_line, max_depth_slope,
+};
+use buffers::raster::{draw_line, fill_triangle};
+use canvas::{Canvas, Pixel, Rgba, Vertex};
+use common::vertex;
+use proptest::prelude::*;
+
+const STYLE: HiddenLineStyle = HiddenLineStyle {
+    fill: Rgba::BLACK,
+    line: Rgba::WHITE,
+};
+
+fn grey(x: f32, y: f32, depth: f32) -> Vertex {
+    vertex(x, y, depth, Rgba::grey(0.5))
+}
+
+/// A triangle whose depth changes quickly across it (m = 0.06 per pixel):
+/// enough for the fill to beat the outline at half the edge pixels.
+fn tilted() -> [Vertex; 3] {
+    [
+        grey(2.0, 1.0, 0.2),
+        grey(17.0, 3.0, 0.4),
+        grey(6.0, 10.0, 0.8),
+    ]
+}
+
+/// The pixels of the outline, by the given line rasterizer.
+fn outline_pixels(canvas: &Canvas, triangle: [Vertex; 3]) -> Vec<Pixel> {
+    let mut pixels = Vec::new();
+    for k in 0..3 {
+        draw_line(triangle[k], triangle[(k + 1) % 3], canvas.viewport(), |f| {
+            pixels.push(f.pixel)
+        });
+    }
+    pixels
+}
+
+fn drawing(offset: Option<PolygonOffset>) -> Canvas {
+    let mut canvas = Canvas::new(20, 12);
+    hidden_line(&mut canvas, &[tilted()], STYLE, offset);
+    canvas
+}
+
+#[test]
+fn offset_is_m_times_factor_plus_r_times_units() {
+    let o = PolygonOffset {
+        factor: 2.0,
+        units: 3.0,
+    };
+    assert_eq!(o.offset(0.25), 0.5 + 3.0 * DEPTH_RESOLUTION);
+    assert_eq!(PolygonOffset::SLIDES.offset(0.0), DEPTH_RESOLUTION);
+    let back = PolygonOffset {
+        factor: -1.0,
+        units: -2.0,
+    };
+    assert_eq!(back.offset(0.5), -0.5 - 2.0 * DEPTH_RESOLUTION);
+    assert_eq!(DEPTH_RESOLUTION, 2.0f32.powi(-24));
+}
+
+#[test]
+fn slope_is_the_larger_partial_derivative() {
+    // z = 0.01·x + 0.03·y + 0.1 → m = 0.03
+    let z = |x: f32, y: f32| 0.01 * x + 0.03 * y + 0.1;
+    let tri = [
+        grey(0.0, 0.0, z(0.0, 0.0)),
+        grey(8.0, 1.0, z(8.0, 1.0)),
+        grey(2.0, 7.0, z(2.0, 7.0)),
+    ];
+    let m = max_depth_slope(tri).unwrap();
+    assert!((m - 0.03).abs() < 1e-6, "m = {m}");
+    // z = 0.5 − 0.05·x → m = 0.05 (a magnitude)
+    let tri = [
+        grey(0.0, 0.0, 0.5),
+        grey(4.0, 0.0, 0.3),
+        grey(0.0, 4.0, 0.5),
+    ];
+    assert!((max_depth_slope(tri).unwrap() - 0.05).abs() < 1e-7);
+    // A triangle of constant depth has no slope.
+    let tri = [
+        grey(0.0, 0.0, 0.5),
+        grey(4.0, 1.0, 0.5),
+        grey(1.0, 4.0, 0.5),
+    ];
+    assert_eq!(max_depth_slope(tri), Ok(0.0));
+    // tilted(): z = 0.2 + 0.013...·x + 0.06...·y
+    let m = max_depth_slope(tilted()).unwrap();
+    assert!(m > 0.055 && m < 0.07, "m = {m}");
+}
+
+#[test]
+fn degenerate_and_non_finite_triangles_have_no_slope() {
+    let line = [
+        grey(0.0, 0.0, 0.1),
+        grey(2.0, 2.0, 0.5),
+        grey(5.0, 5.0, 0.9),
+    ];
+    assert_eq!(max_depth_slope(line), Err(OffsetError::Degenerate));
+    let mut nan = tilted();
+    nan[1].depth = f32::NAN;
+    assert_eq!(max_depth_slope(nan), Err(OffsetError::NotFinite));
+    let mut inf = tilted();
+    inf[0].position.x = f32::INFINITY;
+    assert_eq!(max_depth_slope(inf), Err(OffsetError::NotFinite));
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn slope_matches_the_plane_and_ignores_vertex_order(
+        a in -0.05f32..0.05, b in -0.05f32..0.05, c in 0.3f32..0.5,
+        p in prop::array::uniform6(-10i32..10),
+        rotate in 0usize..3, flip in any::<bool>(),
+    ) {
+        let pos = [(p[0], p[1]), (p[2], p[3]), (p[4], p[5])];
+        let area = (pos[1].0 - pos[0].0) * (pos[2].1 - pos[0].1) - (pos[2].0 - pos[0].0) * (pos[1].1 - pos[0].1);
+        prop_assume!(area.abs() >= 4);
+        let mut tri = pos.map(|(x, y)| grey(x as f32, y as f32, a * x as f32 + b * y as f32 + c));
+        tri.rotate_left(rotate);
+        if flip {
+            tri.swap(1, 2);
+        }
+        let m = max_depth_slope(tri).unwrap();
+        let expected = a.abs().max(b.abs());
+        prop_assert!((m - expected).abs() < 2e-6, "m = {}, plane slopes {} and {}", m, a, b);
+    }
+}
+
+/// The plane of `tilted()` is `z ≈ 0.2 + 0.0047·x + 0.0646·y`: depth grows
+/// up and to the right. On the edge from (17, 3) to (6, 10) the inside lies
+/// below-left, so wherever the line's pixel centre is inside, the fill is
+/// nearer than the line and hides it: every other pixel or so of that edge
+/// is missing. On the other two edges the inside is deeper and the line wins.
+#[test]
+fn without_offset_the_outline_is_stitched() {
+    let canvas = drawing(None);
+    let outline = outline_pixels(&canvas, tilted());
+    let hidden: Vec<Pixel> = outline
+        .iter()
+        .copied()
+        .filter(|&p| canvas.get(p) != Some(Rgba::WHITE))
+        .collect();
+    assert!(!hidden.is_empty(), "no stitching without polygon offset");
+    testkit::assert_raster_snapshot!("hidden_line_without_offset", canvas);
+}
+
+#[test]
+fn with_the_slides_offset_the_outline_is_whole() {
+    let canvas = drawing(Some(PolygonOffset::SLIDES));
+    let outline = outline_pixels(&canvas, tilted());
+    testkit::assert_pixels_eq(
+        &outline,
+        &canvas.pixels_not(Rgba::BLACK),
+        "outline with offset",
+    );
+    testkit::assert_raster_snapshot!("hidden_line_with_offset", canvas);
+}
+
+#[test]
+fn offset_moves_the_fill_back_by_o() {
+    let mut canvas = Canvas::new(20, 12);
+    hidden_line(
+        &mut canvas,
+        &[tilted()],
+        STYLE,
+        Some(PolygonOffset {
+            factor: 1.0,
+            units: 0.0,
+        }),
+    );
+    let m = max_depth_slope(tilted()).unwrap();
+    let outline = outline_pixels(&canvas, tilted());
+    let mut checked = 0;
+    fill_triangle(tilted(), canvas.viewport(), |f| {
+        if !outline.contains(&f.pixel) {
+            let stored = canvas.depth(f.pixel).unwrap();
+            assert!(
+                (stored - (f.depth + m)).abs() < 1e-6,
+                "{}: {stored} vs {} + {m}",
+                f.pixel,
+                f.depth
+            );
+            checked += 1;
+        }
+    });
+    assert!(checked > 20);
+}
+
+#[test]
+fn edges_behind_another_triangle_stay_hidden() {
+    // A near, flat triangle (depth 0.1) in front of the tilted one: the
+    // offset must not pull the back triangle's edges through it.
+    let front = [
+        grey(0.0, 4.0, 0.1),
+        grey(12.0, 4.0, 0.1),
+        grey(6.0, 12.0, 0.1),
+    ];
+    let mut canvas = Canvas::new(20, 12);
+    hidden_line(
+        &mut canvas,
+        &[tilted(), front],
+        STYLE,
+        Some(PolygonOffset::SLIDES),
+    );
+    let front_outline = outline_pixels(&canvas, front);
+    let mut inside_front = 0;
+    fill_triangle(front, canvas.viewport(), |f| {
+        if !front_outline.contains(&f.pixel) {
+            inside_front += 1;
+            assert_eq!(
+                canvas.get(f.pixel),
+                Some(Rgba::BLACK),
+                "{} shows a hidden edge",
+                f.pixel
+            );
+        }
+    });
+    assert!(inside_front > 10);
+    // And the back triangle's edges outside the front one are all drawn.
+    let mut front_cover = Vec::new();
+    fill_triangle(front, canvas.viewport(), |f| front_cover.push(f.pixel));
+    for p in outline_pixels(&canvas, tilted()) {
+        if !front_cover.contains(&p) {
+            assert_eq!(
+                canvas.get(p),
+                Some(Rgba::WHITE),
+                "{p} of the back outline is missing"
+            );
+        }
+    }
+}
+
+#[test]
+fn degenerate_triangles_are_outlined_only_and_hostile_ones_ignored() {
+    let mut canvas = Canvas::new(8, 8);
+    let line = [
+        grey(1.0, 1.0, 0.5),
+        grey(3.0, 3.0, 0.5),
+        grey(6.0, 6.0, 0.5),
+    ];
+    let hostile = [
+        grey(f32::NAN, 0.0, 0.5),
+        grey(1e30, 1.0, f32::INFINITY),
+        grey(2.0, 2.0, 0.5),
+    ];
+    hidden_line(
+        &mut canvas,
+        &[line, hostile],
+        STYLE,
+        Some(PolygonOffset::SLIDES),
+    );
+    let drawn = canvas.pixels_not(Rgba::BLACK);
+    let expected: Vec<Pixel> = (1..=6).map(|k| Pixel::new(k, k)).collect();
+    testkit::assert_pixels_eq(&expected, &drawn, "a degenerate triangle's outline");
+}

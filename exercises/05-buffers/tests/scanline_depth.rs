@@ -1,0 +1,236 @@
+//! Task 2: depth along a scanline, by interpolation between edge
+//! intersections and incrementally from the plane equation.
+
+use buffers::scanline_depth::{
+    DepthPlane, ScanlineError, Span, depth_in_span, incremental_depths, span_at,
+};
+use glam::{DVec2, DVec3};
+use proptest::prelude::*;
+
+/// `z = 2x + 3y + 1`, exact in `f64` for the small values used here.
+fn plane_z(x: f64, y: f64) -> f64 {
+    2.0 * x + 3.0 * y + 1.0
+}
+
+/// A triangle on the plane `z = 2x + 3y + 1`:
+///
+/// ```text
+///   hi (2, 6)          vertices sorted by y: lo, mid, hi
+///   mid (8, 2)         the long edge lo–hi crosses every scanline
+///   lo (0, 0)
+/// ```
+fn known_triangle() -> [DVec3; 3] {
+    [(0.0, 0.0), (8.0, 2.0), (2.0, 6.0)].map(|(x, y)| DVec3::new(x, y, plane_z(x, y)))
+}
+
+fn close(a: f64, b: f64, tolerance: f64) -> bool {
+    (a - b).abs() <= tolerance * (1.0 + a.abs().max(b.abs()))
+}
+
+#[test]
+fn span_below_the_middle_vertex_has_vertex_1_at_the_bottom() {
+    // ys = 1 < 2: vertex 1 = lo (0, 0), 2 = mid (8, 2), 3 = hi (2, 6).
+    // a at (y1 − ys)/(y1 − y2) = 1/2 of lo–mid: (4, 1); b at 1/6 of lo–hi: (1/3, 1).
+    let span = span_at(known_triangle(), 1.0).expect("ys = 1 crosses the triangle");
+    assert_eq!(span.y, 1.0);
+    assert!(
+        close(span.a.x, 4.0, 1e-15) && close(span.a.y, 12.0, 1e-15),
+        "a = {}",
+        span.a
+    );
+    assert!(close(span.b.x, 1.0 / 3.0, 1e-15), "x_b = {}", span.b.x);
+    assert!(
+        close(span.b.y, plane_z(1.0 / 3.0, 1.0), 1e-15),
+        "z_b = {}",
+        span.b.y
+    );
+}
+
+#[test]
+fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
+    // ys = 4 ≥ 2: vertex 1 = hi (2, 6), 2 = mid (8, 2), 3 = lo (0, 0).
+    // a at 1/2 of hi–mid: (5, 4); b at 1/3 of hi–lo: (4/3, 4).
+    let span = span_at(known_triangle(), 4.0).expect("ys = 4 crosses the triangle");
+    assert!(
+        close(span.a.x, 5.0, 1e-15) && close(span.a.y, 23.0, 1e-15),
+        "a = {}",
+        span.a
+    );
+    assert!(close(span.b.x, 4.0 / 3.0, 1e-15), "x_b = {}", span.b.x);
+    assert!(
+        close(span.b.y, plane_z(4.0 / 3.0, 4.0), 1e-15),
+        "z_b = {}",
+        span.b.y
+    );
+    // At the middle vertex's own scanline, a is that vertex.
+    let at_mid = span_at(known_triangle(), 2.0).unwrap();
+    assert!(close(at_mid.a.x, 8.0, 1e-15) && close(at_mid.a.y, plane_z(8.0, 2.0), 1e-15));
+}
+
+#[test]
+fn vertex_order_does_not_change_the_span() {
+    let [p, q, r] = known_triangle();
+    for triangle in [
+        [p, q, r],
+        [q, r, p],
+        [r, p, q],
+        [r, q, p],
+        [q, p, r],
+        [p, r, q],
+    ] {
+        assert_eq!(span_at(triangle, 1.5), span_at(known_triangle(), 1.5));
+    }
+}
+
+#[test]
+fn depth_in_span_follows_the_zp_formula() {
+    let span = Span {
+        y: 0.0,
+        a: DVec2::new(2.0, 0.5),
+        b: DVec2::new(10.0, 0.1),
+    };
+    // z_p = z_b − (z_b − z_a)(x_b − x_p)/(x_b − x_a)
+    assert_eq!(depth_in_span(&span, 10.0), 0.1);
+    assert!(close(depth_in_span(&span, 2.0), 0.5, 1e-15));
+    assert!(close(depth_in_span(&span, 6.0), 0.3, 1e-15));
+    // On the known triangle, the span gives the plane: z(3, 1) = 10.
+    let known = span_at(known_triangle(), 1.0).unwrap();
+    assert!(close(depth_in_span(&known, 3.0), 10.0, 1e-14));
+    // A span of zero width (at a vertex) gives z_a, never NaN.
+    let point = Span {
+        y: 0.0,
+        a: DVec2::new(4.0, 0.25),
+        b: DVec2::new(4.0, 0.25),
+    };
+    assert_eq!(depth_in_span(&point, 4.0), 0.25);
+}
+
+#[test]
+fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
+    let flat_top = [
+        DVec3::new(0.0, 0.0, 1.0),
+        DVec3::new(-4.0, 4.0, 2.0),
+        DVec3::new(4.0, 4.0, 3.0),
+    ];
+    let top = span_at(flat_top, 4.0).expect("the top scanline of a flat top");
+    assert!(top.a.is_finite() && top.b.is_finite(), "{top:?}");
+    let xs = [top.a.x.min(top.b.x), top.a.x.max(top.b.x)];
+    assert_eq!(xs, [-4.0, 4.0], "the span is the top edge");
+    let flat_bottom = flat_top.map(|v| DVec3::new(v.x, -v.y, v.z));
+    let bottom = span_at(flat_bottom, -4.0).expect("the bottom scanline of a flat bottom");
+    assert!(bottom.a.is_finite() && bottom.b.is_finite(), "{bottom:?}");
+}
+
+#[test]
+fn scanlines_outside_and_bad_triangles_have_no_span() {
+    assert_eq!(span_at(known_triangle(), -0.5), None);
+    assert_eq!(span_at(known_triangle(), 6.5), None);
+    assert_eq!(span_at(known_triangle(), f64::NAN), None);
+    let flat = [
+        DVec3::ZERO,
+        DVec3::new(5.0, 0.0, 1.0),
+        DVec3::new(2.0, 0.0, 2.0),
+    ];
+    assert_eq!(span_at(flat, 0.0), None, "a triangle without height");
+    let mut nan = known_triangle();
+    nan[1].z = f64::NAN;
+    assert_eq!(span_at(nan, 1.0), None);
+    let mut inf = known_triangle();
+    inf[2].x = f64::INFINITY;
+    assert_eq!(span_at(inf, 1.0), None);
+}
+
+#[test]
+fn plane_of_the_known_triangle() {
+    let plane = DepthPlane::try_from_triangle(known_triangle()).unwrap();
+    assert!(close(plane.depth_at(DVec2::new(3.0, 1.0)), 10.0, 1e-15));
+    assert!(close(
+        plane.depth_at(DVec2::new(-7.0, 11.0)),
+        plane_z(-7.0, 11.0),
+        1e-15
+    ));
+    // z(x + 1) = z − A/C, and z grows by 2 per column: A/C = −2.
+    assert!(
+        close(plane.step_x(), -2.0, 1e-15),
+        "A/C = {}",
+        plane.step_x()
+    );
+    let row = incremental_depths(&plane, 1, 1, 4);
+    assert_eq!(row, [6.0, 8.0, 10.0, 12.0], "z on row 1 from x = 1");
+    assert_eq!(incremental_depths(&plane, 1, 1, 0), Vec::<f64>::new());
+}
+
+#[test]
+fn triangles_without_a_depth_plane_are_errors() {
+    let edge_on = [
+        DVec3::ZERO,
+        DVec3::new(1.0, 1.0, 0.5),
+        DVec3::new(2.0, 2.0, 0.9),
+    ];
+    assert_eq!(
+        DepthPlane::try_from_triangle(edge_on),
+        Err(ScanlineError::Degenerate)
+    );
+    let mut nan = known_triangle();
+    nan[0].y = f64::NAN;
+    assert_eq!(
+        DepthPlane::try_from_triangle(nan),
+        Err(ScanlineError::NotFinite)
+    );
+}
+
+/// Triangles with vertices in `[-20, 20]²` and depths in `[0, 1]`, with at
+/// least a few pixels of area.
+fn triangle() -> impl Strategy<Value = [DVec3; 3]> {
+    let v = (-20.0f64..20.0, -20.0f64..20.0, 0.0f64..1.0).prop_map(|(x, y, z)| DVec3::new(x, y, z));
+    [v.clone(), v.clone(), v].prop_filter("area of at least 4 pixels", |t| {
+        (t[1] - t[0]).cross(t[2] - t[0]).z.abs() >= 8.0
+    })
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn interpolation_and_the_plane_equation_agree(triangle in triangle(), row in -20i32..=20) {
+        let plane = DepthPlane::try_from_triangle(triangle).unwrap();
+        let Some(span) = span_at(triangle, f64::from(row)) else {
+            let ys: Vec<f64> = triangle.iter().map(|v| v.y).collect();
+            let (lo, hi) = (ys.iter().copied().fold(f64::MAX, f64::min), ys.iter().copied().fold(f64::MIN, f64::max));
+            prop_assert!(f64::from(row) < lo || f64::from(row) > hi, "no span on row {} inside the triangle", row);
+            return Ok(());
+        };
+        // Both crossings lie on the triangle's plane and on its edges' x range.
+        for end in [span.a, span.b] {
+            let z = plane.depth_at(DVec2::new(end.x, f64::from(row)));
+            prop_assert!(close(end.y, z, 1e-9), "span end {} is off the plane (z = {})", end, z);
+        }
+        let first = span.a.x.min(span.b.x).ceil() as i32;
+        let last = span.a.x.max(span.b.x).floor() as i32;
+        if first > last {
+            return Ok(());
+        }
+        let count = (last - first + 1) as usize;
+        let incremental = incremental_depths(&plane, row, first, count);
+        prop_assert_eq!(incremental.len(), count);
+        for (k, z_inc) in incremental.into_iter().enumerate() {
+            let x = f64::from(first) + k as f64;
+            let z_int = depth_in_span(&span, x);
+            prop_assert!(close(z_inc, z_int, 1e-9), "x = {}: incremental {} vs interpolated {}", x, z_inc, z_int);
+        }
+    }
+
+    #[test]
+    fn hostile_input_never_panics(
+        v in prop::array::uniform9(prop_oneof![Just(f64::NAN), Just(f64::INFINITY), Just(1e300), Just(-1e300), -5.0f64..5.0]),
+        ys in prop_oneof![Just(f64::NAN), -5.0f64..5.0],
+    ) {
+        let triangle = [DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]), DVec3::new(v[6], v[7], v[8])];
+        if let Some(span) = span_at(triangle, ys) {
+            let _ = depth_in_span(&span, 0.0);
+        }
+        if let Ok(plane) = DepthPlane::try_from_triangle(triangle) {
+            let _ = incremental_depths(&plane, 0, 0, 4);
+        }
+    }
+}
