@@ -287,3 +287,5 @@ pub fn segment() -> impl Strategy<Value = Segment> {
         point(30.0).prop_map(|a| Segment::new(a, a)),
     ]
 }
+
+pub mod lines;
