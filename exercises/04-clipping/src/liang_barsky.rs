@@ -47,4 +47,3 @@ pub fn liang_barsky(segment: Segment, window: ClipWindow) -> Result<Option<Segme
         "liang_barsky: check the endpoints, then narrow [t_in, t_out] = [0, 1] with p_k t <= q_k for the four borders"
     )
 }
-

@@ -38,7 +38,10 @@ fn each_plane_has_a_unit_outward_normal_and_distance_one() {
     for plane in clip_planes() {
         let n = plane.vector.truncate();
         assert_eq!(n.length(), 1.0, "{plane:?}: normal not of unit length");
-        assert_eq!(plane.vector.w, -1.0, "{plane:?}: the last component is −d = −1");
+        assert_eq!(
+            plane.vector.w, -1.0,
+            "{plane:?}: the last component is −d = −1"
+        );
         // The centre of the face the plane bounds is on it; one step further
         // out is outside; the cube's centre is inside.
         assert_eq!(plane.distance(n.extend(1.0)), 0.0);
@@ -99,7 +102,11 @@ fn intersect_in_homogeneous_coordinates_and_at_the_near_plane() {
 
 #[test]
 fn intersect_is_none_when_the_edge_does_not_cross() {
-    let inside = [p(0.0, 0.0, 0.0, 1.0), p(0.5, 0.0, 0.0, 1.0), p(1.0, 0.0, 0.0, 1.0)];
+    let inside = [
+        p(0.0, 0.0, 0.0, 1.0),
+        p(0.5, 0.0, 0.0, 1.0),
+        p(1.0, 0.0, 0.0, 1.0),
+    ];
     let outside = [p(2.0, 0.0, 0.0, 1.0), p(9.0, 1.0, 0.0, 1.0)];
     for a in inside {
         for b in inside {

@@ -30,7 +30,13 @@ fn outcodes_of_the_nine_regions() {
 #[test]
 fn points_on_the_border_are_inside() {
     let w = ten();
-    for (x, y) in [(0.0, 0.0), (10.0, 10.0), (0.0, 5.0), (5.0, 10.0), (10.0, 0.0)] {
+    for (x, y) in [
+        (0.0, 0.0),
+        (10.0, 10.0),
+        (0.0, 5.0),
+        (5.0, 10.0),
+        (10.0, 0.0),
+    ] {
         assert_eq!(outcode(Vec2::new(x, y), w), Outcode::INSIDE, "({x}, {y})");
     }
     assert_eq!(outcode(Vec2::new(-1e-6, 10.0), w), Outcode::LEFT);
@@ -47,7 +53,10 @@ fn outcodes_drawn_around_a_window() {
     });
     // ascii_grid's first line is its ink legend; this grid has its own.
     let body: Vec<&str> = grid.lines().skip(1).collect();
-    let grid = format!("outcode in hex: 1 LEFT, 2 RIGHT, 4 BOTTOM, 8 TOP\n{}", body.join("\n"));
+    let grid = format!(
+        "outcode in hex: 1 LEFT, 2 RIGHT, 4 BOTTOM, 8 TOP\n{}",
+        body.join("\n")
+    );
     insta::assert_snapshot!(grid);
 }
 

@@ -34,8 +34,15 @@ use crate::plane::{CLIP_NUDGE, ClipPlane};
 #[must_use]
 pub fn clip_planes() -> [ClipPlane; 6] {
     // BEGIN SOLUTION clip_planes: list the six planes (n, -d) of the cube -w <= x, y, z <= w, outward normals, in the order +x, -x, +y, -y, +z, -z
-    [Vec4::X, Vec4::NEG_X, Vec4::Y, Vec4::NEG_Y, Vec4::Z, Vec4::NEG_Z]
-        .map(|normal| ClipPlane::new(normal - Vec4::W))
+    [
+        Vec4::X,
+        Vec4::NEG_X,
+        Vec4::Y,
+        Vec4::NEG_Y,
+        Vec4::Z,
+        Vec4::NEG_Z,
+    ]
+    .map(|normal| ClipPlane::new(normal - Vec4::W))
     // END SOLUTION
 }
 

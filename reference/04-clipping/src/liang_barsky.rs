@@ -81,4 +81,3 @@ pub fn liang_barsky(segment: Segment, window: ClipWindow) -> Result<Option<Segme
     Ok(Some(Segment::new(segment.at(t_in), segment.at(t_out))))
     // END SOLUTION
 }
-

@@ -68,7 +68,8 @@ pub fn convex_area_in_square(polygon: &[Vec2]) -> f64 {
     points.extend(square.iter().filter(|&&c| in_convex(&p, c)));
     for i in 0..p.len() {
         for j in 0..4 {
-            if let Some(x) = segment_crossing(p[i], p[(i + 1) % p.len()], square[j], square[(j + 1) % 4])
+            if let Some(x) =
+                segment_crossing(p[i], p[(i + 1) % p.len()], square[j], square[(j + 1) % 4])
             {
                 points.push(x);
             }
@@ -98,7 +99,8 @@ fn segment_crossing(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> Optio
     let q = [c[0] - a[0], c[1] - a[1]];
     let t = (q[0] * s[1] - q[1] * s[0]) / denom;
     let u = (q[0] * r[1] - q[1] * r[0]) / denom;
-    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then(|| [a[0] + t * r[0], a[1] + t * r[1]])
+    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u))
+        .then(|| [a[0] + t * r[0], a[1] + t * r[1]])
 }
 
 /// Andrew's monotone chain, then the shoelace formula.
@@ -117,7 +119,9 @@ fn hull_area(mut points: Vec<[f64; 2]>) -> f64 {
             Box::new(points.iter().rev())
         };
         for &pt in iter {
-            while hull.len() >= start + 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], pt) <= 0.0 {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], pt) <= 0.0
+            {
                 hull.pop();
             }
             hull.push(pt);
@@ -132,18 +136,37 @@ fn hull_area(mut points: Vec<[f64; 2]>) -> f64 {
         / 2.0
 }
 
-/// The largest distance from a point of `a` to the nearest point of `b`,
-/// both ways (the Hausdorff distance of two vertex sets, in 4D).
-pub fn vertex_set_distance(a: &[ClipVertex], b: &[ClipVertex]) -> f32 {
+/// The largest distance from a vertex of one closed polygon to the
+/// boundary (the edges, closing edge included) of the other, both ways, in
+/// 4D: how far apart their outlines are, whatever their vertex counts.
+pub fn outline_distance(a: &[ClipVertex], b: &[ClipVertex]) -> f32 {
+    fn to_boundary(p: Vec4, polygon: &[ClipVertex]) -> f32 {
+        let n = polygon.len();
+        (0..n)
+            .map(|i| {
+                let (u, v) = (polygon[i].position, polygon[(i + 1) % n].position);
+                let d = v - u;
+                let t = if d == Vec4::ZERO {
+                    0.0
+                } else {
+                    ((p - u).dot(d) / d.dot(d)).clamp(0.0, 1.0)
+                };
+                p.distance(u + t * d)
+            })
+            .fold(f32::INFINITY, f32::min)
+    }
     let one_way = |a: &[ClipVertex], b: &[ClipVertex]| {
         a.iter()
-            .map(|u| {
-                b.iter()
-                    .map(|v| u.position.distance(v.position))
-                    .fold(f32::INFINITY, f32::min)
-            })
+            .map(|u| to_boundary(u.position, b))
             .fold(0.0, f32::max)
     };
+    if a.is_empty() || b.is_empty() {
+        return if a.len() == b.len() {
+            0.0
+        } else {
+            f32::INFINITY
+        };
+    }
     one_way(a, b).max(one_way(b, a))
 }
 
