@@ -1,0 +1,37 @@
+//! A small library rasterizer for the pipeline: DDA lines and edge-function
+//! triangles with colour and depth interpolation and a depth test.
+//!
+//! This is not student work (the exercise topics build their own); it is
+//! kept small and plain so that the pipeline can draw.
+//!
+//! Pixel convention: the canvas's (centres at integers, y up, rounding half
+//! away from zero). Depth test: a fragment is written only where its depth
+//! is *less* than the stored one (OpenGL's `GL_LESS`); NaN depth never
+//! passes. Input with a coordinate that is not finite or beyond
+//! ±[`canvas::MAX_COORD`] is not drawn; the work per primitive is bounded by
+//! the canvas size, however long the primitive.
+
+mod dda;
+mod edge_function;
+
+pub use dda::draw_line;
+pub use edge_function::fill_triangle;
+
+use canvas::{Canvas, Fragment, Vertex, within_limits};
+
+/// Writes the fragment if it passes the depth test `depth < stored`
+/// (`GL_LESS`); ignored off the canvas.
+pub fn depth_test(canvas: &mut Canvas, fragment: Fragment) {
+    if canvas
+        .depth(fragment.pixel)
+        .is_some_and(|stored| fragment.depth < stored)
+    {
+        canvas.plot(fragment);
+    }
+}
+
+/// Whether a vertex's position can be rasterized: finite and within
+/// ±[`canvas::MAX_COORD`].
+fn drawable(v: &Vertex) -> bool {
+    within_limits(v.position.x) && within_limits(v.position.y)
+}
