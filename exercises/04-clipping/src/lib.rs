@@ -11,14 +11,6 @@
 //! your files until you fill them in.)
 #![warn(missing_docs)]
 
-/// Given: a clip-space vertex with position and colour.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/04-clipping/src/vertex.rs"
-)]
-pub mod vertex;
-pub use vertex::ClipVertex;
-
 /// Given: a plane of clip space as a 4-vector, `CLIP_NUDGE`.
 #[cfg_attr(
     feature = "reference",
@@ -86,4 +78,6 @@ pub mod liang_barsky;
 
 pub use error::ClipError;
 pub use plane::{CLIP_NUDGE, ClipPlane};
+/// The clip-space vertex of the course library: position and colour.
+pub use scene::ClipVertex;
 pub use window::{ClipWindow, Segment};

@@ -258,6 +258,111 @@ fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
 }
 
 // ---------------------------------------------------------------------------
+// Pictures: the sheet's `clipped_` meshes through the course pipeline.
+
+/// The size of each of the four panels of a picture.
+const PANEL: u32 = 256;
+
+/// Renders `mesh` four times into one canvas, the course pipeline around
+/// your clipping:
+///
+/// ```text
+///   +-------------------+-------------------+
+///   | wireframe,        | wireframe,        |
+///   | without clipping  | with clipping     |
+///   +-------------------+-------------------+
+///   | filled,           | filled,           |
+///   | without clipping  | with clipping     |
+///   +-------------------+-------------------+
+/// ```
+///
+/// Without clipping, vertices behind the eye are divided by a negative `w`
+/// and land mirrored: the long stray edges and smeared triangles there are
+/// what clipping removes.
+fn four_panels(mesh_name: &str) -> canvas::Canvas {
+    use scene::{Mode, Pipeline};
+    let mesh = scene::ply::load(scene::data::path(mesh_name)).expect("a shipped mesh");
+    let pipeline = Pipeline::for_mesh(&mesh, PANEL, PANEL);
+    let polygons = pipeline.clip_space(&mesh);
+    let clipped: Vec<Vec<ClipVertex>> = polygons.iter().map(|p| clip(p)).collect();
+    let mut picture = canvas::Canvas::new(2 * PANEL, 2 * PANEL);
+    for (column, input) in [&polygons, &clipped].into_iter().enumerate() {
+        // y points up: the wireframe row is the upper one.
+        for (row, mode) in [(1, Mode::Line), (0, Mode::Fill)] {
+            let mut panel = canvas::Canvas::new(PANEL, PANEL);
+            panel.clear(Rgba::BLACK);
+            pipeline.render(input, mode, &mut panel);
+            for (p, colour) in panel.enumerate() {
+                let at = canvas::Pixel::new(
+                    p.x + (column as u32 * PANEL) as i32,
+                    p.y + (row * PANEL) as i32,
+                );
+                picture.set(at, colour);
+            }
+        }
+    }
+    picture
+}
+
+/// Rounding in your arithmetic may move an edge by a pixel where it meets
+/// the border; nothing else may differ.
+const PICTURE_TOLERANCE: testkit::image::Tolerance = testkit::image::Tolerance {
+    channel: 4.0 / 255.0,
+    mismatched_fraction: 0.002,
+};
+
+#[test]
+fn clipped_star_matches_the_reference_image() {
+    let picture = four_panels("clipped_star.ply");
+    testkit::image::assert_image_matches(
+        "clipping_clipped_star",
+        &picture,
+        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/clipped_star.png"),
+        PICTURE_TOLERANCE,
+    );
+}
+
+#[test]
+fn clipped_torus_matches_the_reference_image() {
+    let picture = four_panels("clipped_torus.ply");
+    testkit::image::assert_image_matches(
+        "clipping_clipped_torus",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/clipped_torus.png"
+        ),
+        PICTURE_TOLERANCE,
+    );
+}
+
+#[test]
+fn clipped_meshes_keep_everything_inside_and_lose_what_is_outside() {
+    for name in ["clipped_star.ply", "clipped_torus.ply"] {
+        let mesh = scene::ply::load(scene::data::path(name)).expect("a shipped mesh");
+        let pipeline = scene::Pipeline::for_mesh(&mesh, PANEL, PANEL);
+        let polygons = pipeline.clip_space(&mesh);
+        let (mut cut, mut dropped) = (0, 0);
+        for polygon in &polygons {
+            let got = clip(polygon);
+            if polygon.iter().all(|v| excess(v.position) <= 0.0) {
+                assert_eq!(&got, polygon, "{name}: a face inside changed");
+            } else if got.is_empty() {
+                dropped += 1;
+            } else {
+                cut += 1;
+            }
+            assert!(
+                got.iter().all(|v| excess(v.position) <= 1e-5),
+                "{name}: {got:?}"
+            );
+        }
+        // The sheet's point of these meshes: some faces cross the border.
+        assert!(cut > 0, "{name}: {cut} cut, {dropped} dropped");
+    }
+}
+
+// ---------------------------------------------------------------------------
 // Properties.
 
 fn colour() -> impl Strategy<Value = Rgba> {

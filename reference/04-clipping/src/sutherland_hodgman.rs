@@ -31,7 +31,7 @@ use crate::plane::{ClipPlane, MAX_CLIP_COORD};
 // BEGIN SOLUTION
 use crate::plane::CLIP_NUDGE;
 // END SOLUTION
-use crate::ClipVertex;
+use scene::ClipVertex;
 
 /// Clips a polygon against one plane: the part of it with `v · p ≤ 0`
 /// (the sheet's `clipPlane`).
