@@ -14,6 +14,13 @@ use canvas::Vec4;
 /// nudge is in the parameter, so it moves the new vertex by
 /// `1e-6 · |l_a − l_b|` in signed distance: far more than the rounding
 /// error of `t` near 1 (`f32::EPSILON / 2 ≈ 6e-8`).
+///
+/// A limit of the sheet's method: the nudge is relative to the *edge*, so it
+/// moves the new vertex by `1e-6` of the edge's length. For edges of the
+/// size of the clip volume that is far below a pixel; an edge `10⁶` times
+/// longer than the volume is wide has its crossing moved by a whole volume
+/// width (a nudge in signed distance, `l = −1e-6 · w`, would not have this
+/// limit).
 pub const CLIP_NUDGE: f32 = 1e-6;
 
 /// The largest clip-space coordinate (absolute value) clipping accepts:

@@ -26,9 +26,9 @@
 //! colour linearly in clip space, *before* the division by `w`: there the
 //! edge is still a straight line with a linear parameter.
 
-use crate::ClipVertex;
 use crate::error::ClipError;
-use crate::plane::{ClipPlane, MAX_CLIP_COORD};
+use crate::plane::{CLIP_NUDGE, ClipPlane, MAX_CLIP_COORD};
+use scene::ClipVertex;
 
 /// Clips a polygon against one plane: the part of it with `v · p ≤ 0`
 /// (the sheet's `clipPlane`).

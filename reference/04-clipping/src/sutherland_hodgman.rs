@@ -27,10 +27,7 @@
 //! edge is still a straight line with a linear parameter.
 
 use crate::error::ClipError;
-use crate::plane::{ClipPlane, MAX_CLIP_COORD};
-// BEGIN SOLUTION
-use crate::plane::CLIP_NUDGE;
-// END SOLUTION
+use crate::plane::{CLIP_NUDGE, ClipPlane, MAX_CLIP_COORD};
 use scene::ClipVertex;
 
 /// Clips a polygon against one plane: the part of it with `v · p ≤ 0`
