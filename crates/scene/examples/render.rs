@@ -60,10 +60,11 @@ fn main() -> ExitCode {
 }
 
 fn run(args: &Args) -> Result<(), Box<dyn std::error::Error>> {
-    let path = if args.mesh.exists() {
-        args.mesh.clone()
+    let shipped = scene::data::path(&args.mesh.to_string_lossy());
+    let path = if !args.mesh.exists() && shipped.exists() {
+        shipped
     } else {
-        scene::data::path(&args.mesh.to_string_lossy())
+        args.mesh.clone()
     };
     let mesh = scene::ply::load(&path)?;
     let mut canvas = Canvas::try_new(args.width, args.height)?;

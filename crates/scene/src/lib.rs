@@ -28,7 +28,7 @@
 mod clip_vertex;
 pub mod data;
 mod mesh;
-mod pipeline;
+pub mod pipeline;
 pub mod ply;
 pub mod raster;
 

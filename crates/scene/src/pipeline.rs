@@ -54,6 +54,10 @@ impl Pipeline {
     /// perspective with [`FOV_Y`], the canvas's aspect ratio (1 for an empty
     /// canvas), [`NEAR`] and [`FAR`].
     ///
+    /// The sheet names the camera of its `main.m` but does not print its
+    /// values; these are the course's own, chosen so that the plain shipped
+    /// meshes fill most of the picture.
+    ///
     /// Because the camera does not adapt to the mesh, the `clipped_` meshes
     /// reach outside the view volume as the sheet intends (through the near
     /// plane, behind the eye and past the sides); the other shipped meshes
@@ -141,15 +145,19 @@ impl Pipeline {
     ///   clipping convex faces produces); fewer than 3 vertices draw nothing.
     ///
     /// Both write a fragment only where its depth is less than the stored
-    /// depth ([`raster::depth_test`]).
+    /// depth ([`raster::depth_test`]); the canvas should be cleared to
+    /// [`canvas::DEPTH_CLEAR`] first.
     ///
     /// Polygons are drawn as given, clipped or not. A vertex that
     /// [`Pipeline::screen`] cannot map (`w = 0`, NaN, infinite) is skipped:
     /// its edges are not drawn, and its polygon is not filled. Vertices
     /// behind the eye (`w < 0`) are divided naively; fragments beyond the
     /// canvas are dropped, and lines or triangles reaching past
-    /// [`canvas::MAX_COORD`] are not drawn (see [`raster`]). Nothing
-    /// here panics or loops longer than the canvas is large.
+    /// [`canvas::MAX_COORD`] are not drawn (see [`raster`]). Depth is not
+    /// clamped: geometry between the eye and the near plane gets depth
+    /// below 0 and wins every depth test, geometry beyond the far plane or
+    /// behind the eye mostly gets depth above 1 and fails it. Nothing here
+    /// panics or loops longer than the canvas is large.
     pub fn render(&self, polygons: &[Vec<ClipVertex>], mode: Mode, canvas: &mut Canvas) {
         for polygon in polygons {
             let screen: Vec<Option<Vertex>> = polygon.iter().map(|&v| self.screen(v)).collect();
@@ -182,6 +190,9 @@ impl Pipeline {
 /// `−w ≤ x ≤ w, −w ≤ y ≤ w, −w ≤ z ≤ w` (boundary included). NaN is outside.
 #[must_use]
 pub fn inside_view_volume(v: &ClipVertex) -> bool {
+    // Boundary included, as the sheet's hint on `inside(...)` says (its
+    // list in section 5.2 writes `v · p < 0` for "inside", which would
+    // exclude points on the plane).
     let p = v.position;
     let w = p.w;
     [p.x, p.y, p.z].iter().all(|&c| -w <= c && c <= w)

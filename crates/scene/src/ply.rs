@@ -100,9 +100,15 @@ pub enum PlyErrorKind {
     /// number, a missing value. The message is the PLY parser's.
     #[error("{0}")]
     Syntax(String),
-    /// An element declares more entries than the rest of the file can hold.
+    /// The `format` line names no known encoding (or no valid version).
     #[error(
-        "element '{element}' declares {declared} entries, more than the {available} bytes left can hold"
+        "unknown format '{0}': expected ascii, binary_little_endian or binary_big_endian, version 1.0"
+    )]
+    UnknownFormat(String),
+    /// The elements declare more entries than there are bytes after the
+    /// header (checked before reading, see [`parse`]).
+    #[error(
+        "element '{element}' declares {declared} entries, more than the {available} bytes after the header can hold"
     )]
     CountTooLarge {
         /// The element.
@@ -221,10 +227,26 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
     };
     let parser = Parser::<DefaultElement>::new();
     let mut reader = Reader::new(bytes);
-    let header = parser
-        .read_header(&mut reader)
-        .map_err(|e| error(line_or(&e, Location::Header), kind_of(e)))?;
+    let header = parser.read_header(&mut reader).map_err(|e| {
+        let location = line_or(&e, Location::Header);
+        let kind = match unknown_format(bytes, &location) {
+            Some(format) => PlyErrorKind::UnknownFormat(format),
+            None => kind_of(e),
+        };
+        error(location, kind)
+    })?;
     check_counts(&header, reader.get_ref().len()).map_err(|kind| error(Location::Header, kind))?;
+    // What the mesh needs from the header is checked before the payload is
+    // read.
+    let vertex_def = header
+        .elements
+        .get(VERTEX)
+        .ok_or_else(|| error(Location::Header, PlyErrorKind::MissingElement(VERTEX)))?;
+    let layout = VertexLayout::of(vertex_def).map_err(|kind| error(Location::Header, kind))?;
+    let face_key = match header.elements.get(FACE) {
+        Some(def) => Some(face_key(def).map_err(|kind| error(Location::Header, kind))?),
+        None => None,
+    };
 
     let mut vertices = Vec::new();
     let mut faces = Vec::new();
@@ -264,11 +286,6 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
         return Err(error(location, PlyErrorKind::TrailingData(rest.len())));
     }
 
-    let vertex_def = header
-        .elements
-        .get(VERTEX)
-        .ok_or_else(|| error(Location::Header, PlyErrorKind::MissingElement(VERTEX)))?;
-    let layout = VertexLayout::of(vertex_def).map_err(|kind| error(Location::Header, kind))?;
     let mut mesh = Mesh::default();
     for (index, vertex) in vertices.iter().enumerate() {
         let at = || Location::Element {
@@ -279,8 +296,7 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
         mesh.positions.push(position);
         mesh.colours.push(colour);
     }
-    if let Some(face_def) = header.elements.get(FACE) {
-        let key = face_key(face_def).map_err(|kind| error(Location::Header, kind))?;
+    if let Some(key) = face_key {
         for (index, face) in faces.iter().enumerate() {
             let at = || Location::Element {
                 element: FACE.to_owned(),
@@ -294,24 +310,48 @@ pub fn parse(bytes: &[u8], name: &str) -> Result<Mesh, PlyError> {
     Ok(mesh)
 }
 
+/// The format named on a `format` line the parser rejected, if the error
+/// is on such a line.
+fn unknown_format(bytes: &[u8], location: &Location) -> Option<String> {
+    let Location::Line(line) = *location else {
+        return None;
+    };
+    let text = bytes.split(|&b| b == b'\n').nth(line.checked_sub(1)?)?;
+    let text = String::from_utf8_lossy(text);
+    let mut words = text.split_whitespace();
+    (words.next()? == "format").then(|| words.next().unwrap_or("").to_owned())
+}
+
 /// The location a parser error names: its line, or `fallback`.
 fn line_or(e: &ParseError, fallback: Location) -> Location {
     e.line().map_or(fallback, Location::Line)
 }
 
 fn kind_of(e: ParseError) -> PlyErrorKind {
+    let message = tidy(&e.to_string());
     match e.kind() {
-        IoKind::UnexpectedEof => PlyErrorKind::Truncated(e.to_string()),
-        _ => PlyErrorKind::Syntax(strip_line(&e.to_string())),
+        IoKind::UnexpectedEof => PlyErrorKind::Truncated(message),
+        _ => PlyErrorKind::Syntax(message),
     }
 }
 
-/// The parser's message without its own "Line N: " prefix (the location is
-/// reported separately).
-fn strip_line(message: &str) -> String {
-    match message.split_once(": ") {
-        Some((head, rest)) if head.starts_with("Line ") => rest.to_owned(),
-        _ => message.to_owned(),
+/// The parser's message on one line: without its own "Line N: " prefix (the
+/// location is reported separately), and for its nested form
+/// `context \n\tString: 'text'\n\tError: inner ...` only the text and the
+/// innermost error.
+fn tidy(message: &str) -> String {
+    let message = match message.split_once(": ") {
+        Some((head, rest)) if head.starts_with("Line ") => rest,
+        _ => message,
+    };
+    let innermost = message.rsplit("Error: ").next().unwrap_or(message).trim();
+    let text = message
+        .split_once("String: ")
+        .map(|(_, rest)| rest.lines().next().unwrap_or("").trim_matches(['\'', ' ']));
+    let first = message.lines().next().unwrap_or("").trim();
+    match text {
+        Some(text) => format!("{first} `{text}`: {innermost}"),
+        None => message.split_whitespace().collect::<Vec<_>>().join(" "),
     }
 }
 

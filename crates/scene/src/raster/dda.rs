@@ -45,14 +45,17 @@ pub fn draw_line(canvas: &mut Canvas, a: Vertex, b: Vertex) {
         let hi = (enter.max(leave).ceil() + 1.0).clamp(0.0, steps);
         (lo as i64, hi as i64)
     };
+    let origin = a.position.as_dvec2();
     for i in first..=last {
-        let t = if steps == 0.0 {
-            0.0
-        } else {
-            (i as f64 / steps) as f32
-        };
-        let v = a.mix(&b, t);
-        let pixel = Pixel::new(round_half_away(v.position.x), round_half_away(v.position.y));
+        let t = if steps == 0.0 { 0.0 } else { i as f64 / steps };
+        // The position in f64: in f32, a line 10⁷ pixels long would lose
+        // the fraction that decides the rounding.
+        let position = origin + delta * t;
+        let v = a.mix(&b, t as f32);
+        let pixel = Pixel::new(
+            round_half_away(position.x as f32),
+            round_half_away(position.y as f32),
+        );
         depth_test(
             canvas,
             Fragment {
