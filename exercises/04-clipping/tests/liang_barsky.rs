@@ -1,0 +1,19 @@
+//! Task 4: Liang-Barsky line clipping in the segment's parameter.
+
+mod common;
+
+use clipping::liang_barsky::liang_barsky;
+
+line_clipping_spec!(liang_barsky);
+
+#[test]
+fn endpoints_inside_are_kept_exactly() {
+    // t_in = 0 and t_out = 1 must give the endpoints themselves, not
+    // P₀ + 1 · Δ (which can round).
+    let seg = s(0.1, 0.7, 30.3, 5.9);
+    let got = clip(seg, ten()).expect("enters the window");
+    assert_eq!(got.from, seg.from);
+    let seg = s(30.3, 5.9, 0.1, 0.7);
+    let got = clip(seg, ten()).expect("enters the window");
+    assert_eq!(got.to, seg.to);
+}

@@ -1,0 +1,547 @@
+//! Task 2: Sutherland-Hodgman, a polygon against one plane and against all
+//! six planes of the clip volume.
+
+mod common;
+
+use canvas::{Rgba, Vec2, Vec4};
+use clipping::sutherland_hodgman::{clip_against_plane, clip_polygon};
+use clipping::{ClipError, ClipPlane, ClipVertex};
+use common::{VOLUME_PLANES, cv, excess, flat, is_on_edge, outline_distance, shoelace};
+use proptest::prelude::*;
+
+/// The plane `x ≤ w`.
+const RIGHT: ClipPlane = VOLUME_PLANES[0];
+/// Positions of order 1..10 in `f32`: rounding stays far below this.
+const TOLERANCE: f32 = 1e-5;
+
+fn clip(polygon: &[ClipVertex]) -> Vec<ClipVertex> {
+    clip_polygon(polygon, &VOLUME_PLANES).expect("valid input")
+}
+
+fn assert_close(got: &[ClipVertex], expected: &[ClipVertex]) {
+    assert_eq!(got.len(), expected.len(), "vertex count: got {got:#?}");
+    for (i, (g, e)) in got.iter().zip(expected).enumerate() {
+        assert!(
+            g.position.distance(e.position) <= TOLERANCE && g.colour.approx_eq(e.colour, TOLERANCE),
+            "vertex {i}: expected {e:?}, got {g:?}"
+        );
+    }
+}
+
+#[test]
+fn triangle_across_the_right_plane_becomes_a_quadrilateral() {
+    //  y                        clipped at x = w = 1; the closing edge
+    //  3 C                      C → A comes first, then A → B, B → C:
+    //  2 |  ╲ ●  I₂ (1, 2)
+    //  1 |   ┃  ╲               output: A, I₁, I₂, C
+    //  0 A───●───────B          I₁ = A + (1/3 − ε)(B − A)
+    //    0   1       3          I₂ = B + (2/3 + ε)(C − B)
+    let (a, b, c) = (
+        flat(0.0, 0.0, Rgba::RED),
+        flat(3.0, 0.0, Rgba::GREEN),
+        flat(0.0, 3.0, Rgba::BLUE),
+    );
+    let eps = clipping::CLIP_NUDGE;
+    let i1 = ClipVertex {
+        position: Vec4::new(3.0 * (1.0 / 3.0 - eps), 0.0, 0.0, 1.0),
+        colour: Rgba::RED.lerp(Rgba::GREEN, 1.0 / 3.0 - eps),
+    };
+    let i2 = ClipVertex {
+        position: Vec4::new(
+            3.0 - 3.0 * (2.0 / 3.0 + eps),
+            3.0 * (2.0 / 3.0 + eps),
+            0.0,
+            1.0,
+        ),
+        colour: Rgba::GREEN.lerp(Rgba::BLUE, 2.0 / 3.0 + eps),
+    };
+    let got = clip_against_plane(&[a, b, c], RIGHT).expect("valid input");
+    assert_close(&got, &[a, i1, i2, c]);
+    // The new vertices lie just inside, by the nudge.
+    assert!(got[1].position.x < 1.0 && got[2].position.x < 1.0);
+}
+
+#[test]
+fn the_closing_edge_is_clipped_too() {
+    // Only the closing edge C → A leaves the volume; forgetting it loses
+    // the two crossings on it.
+    //
+    //   A (0, 0) → B (0, 0.5) → C (3, 0.25) → back to A
+    let polygon = [
+        flat(0.0, 0.0, Rgba::WHITE),
+        flat(0.0, 0.5, Rgba::WHITE),
+        flat(3.0, 0.25, Rgba::WHITE),
+    ];
+    let got = clip_against_plane(&polygon, RIGHT).expect("valid input");
+    assert_eq!(got.len(), 4, "{got:#?}");
+    // Both new vertices on x ≈ 1: one on B → C (y ≈ 5/12), one on C → A
+    // (y ≈ 1/12).
+    let ys: Vec<f32> = got
+        .iter()
+        .filter(|v| (v.position.x - 1.0).abs() < 1e-4)
+        .map(|v| v.position.y)
+        .collect();
+    assert_eq!(ys.len(), 2, "{got:#?}");
+    assert!(ys.iter().any(|y| (y - 5.0 / 12.0).abs() < 1e-4), "{ys:?}");
+    assert!(ys.iter().any(|y| (y - 1.0 / 12.0).abs() < 1e-4), "{ys:?}");
+}
+
+#[test]
+fn polygon_inside_comes_back_unchanged() {
+    // A face of the cube lies on the far plane: on-plane vertices are inside.
+    let face = [
+        cv(-1.0, -1.0, 1.0, 1.0, Rgba::RED),
+        cv(1.0, -1.0, 1.0, 1.0, Rgba::GREEN),
+        cv(1.0, 1.0, 1.0, 1.0, Rgba::BLUE),
+        cv(-1.0, 1.0, 1.0, 1.0, Rgba::WHITE),
+    ];
+    assert_eq!(clip(&face), face);
+    // Homogeneous: w = 4 makes the cube 4 times larger before the division.
+    let pentagon: Vec<ClipVertex> = (0..5)
+        .map(|k| {
+            let a = k as f32 * std::f32::consts::TAU / 5.0;
+            cv(
+                3.0 * a.cos(),
+                3.0 * a.sin(),
+                0.5,
+                4.0,
+                Rgba::grey(k as f32 / 5.0),
+            )
+        })
+        .collect();
+    assert_eq!(clip(&pentagon), pentagon);
+}
+
+#[test]
+fn polygon_outside_vanishes() {
+    let beyond_right = [
+        flat(1.5, 0.0, Rgba::WHITE),
+        flat(4.0, -3.0, Rgba::WHITE),
+        flat(4.0, 3.0, Rgba::WHITE),
+    ];
+    assert!(clip(&beyond_right).is_empty());
+    // Behind the eye (w < 0): outside although x/w, y/w, z/w look fine.
+    let behind = [
+        cv(-0.1, 0.0, -0.1, -1.0, Rgba::WHITE),
+        cv(0.1, 0.0, -0.1, -1.0, Rgba::WHITE),
+        cv(0.0, 0.1, -0.1, -1.0, Rgba::WHITE),
+    ];
+    assert!(clip(&behind).is_empty());
+    // A large triangle passing a corner of the square: no vertex beyond a
+    // common plane, yet nothing of it is inside.
+    //
+    //   ╲   ┌───┐
+    //    ╲  │   │   edge x + y = −2.5 runs below the corner (−1, −1)
+    //     ╲ └───┘
+    let passing = [
+        flat(-2.5, 0.0, Rgba::WHITE),
+        flat(0.0, -2.5, Rgba::WHITE),
+        flat(-9.0, -9.0, Rgba::WHITE),
+    ];
+    assert!(clip(&passing).is_empty());
+}
+
+#[test]
+fn triangle_covering_the_square_is_cut_to_the_square() {
+    //   ●               the triangle covers [−1, 1]² entirely: what is
+    //   │ ╲             left is the square itself, corners included
+    //   │┌──╲──┐        (corners come from the boundary edges that an
+    //   ││   ╲ │        earlier pass created)
+    //   │└─────╲
+    //   ●────────●
+    let polygon = [
+        flat(-3.0, -3.0, Rgba::WHITE),
+        flat(9.0, -3.0, Rgba::WHITE),
+        flat(-3.0, 9.0, Rgba::WHITE),
+    ];
+    let got = clip(&polygon);
+    assert_eq!(got.len(), 4, "{got:#?}");
+    for corner in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        let c = Vec2::new(corner.0, corner.1);
+        assert!(
+            got.iter()
+                .any(|v| v.position.truncate().truncate().distance(c) < 1e-4),
+            "corner {c} missing: {got:#?}"
+        );
+    }
+    assert!((shoelace(&got) - 4.0).abs() < 1e-4);
+}
+
+#[test]
+fn depth_and_colour_are_interpolated_at_the_near_plane() {
+    // An edge from z/w = 0 to z = −3, w = 1 (in front of the near plane),
+    // clipped at z = −w: the new vertex has z/w = −1 and the colour a third
+    // of the way... t = l_a / (l_a − l_b) with l = −z − w: l_a = −1,
+    // l_b = 2, so t = 1/3 from the inside vertex.
+    let polygon = [
+        cv(0.0, 0.0, 0.0, 1.0, Rgba::BLACK),
+        cv(0.0, 0.5, -3.0, 1.0, Rgba::WHITE),
+        cv(0.5, 0.0, 0.0, 1.0, Rgba::BLACK),
+    ];
+    let got = clip(&polygon);
+    let new: Vec<&ClipVertex> = got.iter().filter(|v| !polygon.contains(v)).collect();
+    assert_eq!(new.len(), 2, "{got:#?}");
+    for v in new {
+        let depth = v.position.z / v.position.w;
+        assert!((depth + 1.0).abs() < 1e-4, "depth {depth}");
+        assert!((v.colour.r - 1.0 / 3.0).abs() < 1e-4, "{:?}", v.colour);
+    }
+}
+
+#[test]
+fn degenerate_polygons_are_clipped_like_any_other() {
+    assert_eq!(clip(&[]), vec![]);
+    let point = [flat(0.5, 0.5, Rgba::WHITE)];
+    assert_eq!(clip(&point), point);
+    assert!(clip(&[flat(5.0, 0.5, Rgba::WHITE)]).is_empty());
+    // A "polygon" of two vertices is an edge there and back: its part
+    // inside, end to end.
+    let got = clip(&[flat(0.0, 0.0, Rgba::WHITE), flat(4.0, 0.0, Rgba::WHITE)]);
+    assert_eq!(got.len(), 3, "{got:#?}");
+    assert!(got.iter().all(|v| excess(v.position) <= 0.0));
+    assert_eq!(
+        clip_polygon(&point, &[]).expect("no planes: nothing to do"),
+        point
+    );
+}
+
+#[test]
+fn bad_input_is_an_error_not_a_panic() {
+    let good = flat(0.0, 0.0, Rgba::WHITE);
+    for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+        let polygon = [good, good, cv(0.0, bad, 0.0, 1.0, Rgba::WHITE)];
+        assert_eq!(
+            clip_polygon(&polygon, &VOLUME_PLANES),
+            Err(ClipError::NonFinite { index: 2 })
+        );
+        assert_eq!(
+            clip_against_plane(&polygon, RIGHT),
+            Err(ClipError::NonFinite { index: 2 })
+        );
+        let plane = ClipPlane::new(Vec4::new(bad, 0.0, 0.0, -1.0));
+        assert_eq!(
+            clip_polygon(&[good], &[RIGHT, plane]),
+            Err(ClipError::InvalidPlane { index: 1 })
+        );
+        assert_eq!(
+            clip_against_plane(&[good], plane),
+            Err(ClipError::InvalidPlane { index: 0 })
+        );
+    }
+    let huge = [good, cv(1e30, 0.0, 0.0, 1.0, Rgba::WHITE), good];
+    assert_eq!(
+        clip_polygon(&huge, &VOLUME_PLANES),
+        Err(ClipError::OutOfRange { index: 1 })
+    );
+    assert_eq!(
+        clip_against_plane(&huge, RIGHT),
+        Err(ClipError::OutOfRange { index: 1 })
+    );
+}
+
+#[test]
+fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
+    // The sheet's nudge is 1e-6 of the *edge*: on edges 2e17 long it moves
+    // a vertex by 2e11, so what is left may be anything down to nothing;
+    // it must still be finite and inside.
+    let polygon = [
+        cv(-1e17, -1e17, 0.0, 1.0, Rgba::WHITE),
+        cv(1e17, -1e17, 0.0, 1.0, Rgba::BLACK),
+        cv(0.0, 1e17, 0.0, 1.0, Rgba::WHITE),
+    ];
+    let got = clip(&polygon);
+    assert!(
+        got.iter()
+            .all(|v| v.position.is_finite() && excess(v.position) < 1e-3),
+        "{got:#?}"
+    );
+}
+
+// ---------------------------------------------------------------------------
+// Pictures: the sheet's `clipped_` meshes through the course pipeline.
+
+/// The size of each of the four panels of a picture.
+const PANEL: u32 = 256;
+
+/// Renders `mesh` four times into one canvas, the course pipeline around
+/// your clipping:
+///
+/// ```text
+///   +-------------------+-------------------+
+///   | wireframe,        | wireframe,        |
+///   | without clipping  | with clipping     |
+///   +-------------------+-------------------+
+///   | filled,           | filled,           |
+///   | without clipping  | with clipping     |
+///   +-------------------+-------------------+
+/// ```
+///
+/// Without clipping, vertices behind the eye are divided by a negative `w`
+/// and land mirrored: the long stray edges and smeared triangles there are
+/// what clipping removes.
+fn four_panels(mesh_name: &str) -> canvas::Canvas {
+    use scene::{Mode, Pipeline};
+    let mesh = scene::ply::load(scene::data::path(mesh_name)).expect("a shipped mesh");
+    let pipeline = Pipeline::for_mesh(&mesh, PANEL, PANEL);
+    let polygons = pipeline.clip_space(&mesh);
+    let clipped: Vec<Vec<ClipVertex>> = polygons.iter().map(|p| clip(p)).collect();
+    let mut picture = canvas::Canvas::new(2 * PANEL, 2 * PANEL);
+    for (column, input) in [&polygons, &clipped].into_iter().enumerate() {
+        // y points up: the wireframe row is the upper one.
+        for (row, mode) in [(1, Mode::Line), (0, Mode::Fill)] {
+            let mut panel = canvas::Canvas::new(PANEL, PANEL);
+            panel.clear(Rgba::BLACK);
+            pipeline.render(input, mode, &mut panel);
+            for (p, colour) in panel.enumerate() {
+                let at = canvas::Pixel::new(
+                    p.x + (column as u32 * PANEL) as i32,
+                    p.y + (row * PANEL) as i32,
+                );
+                picture.set(at, colour);
+            }
+        }
+    }
+    picture
+}
+
+/// Rounding in your arithmetic may move an edge by a pixel where it meets
+/// the border; nothing else may differ.
+const PICTURE_TOLERANCE: testkit::image::Tolerance = testkit::image::Tolerance {
+    channel: 4.0 / 255.0,
+    mismatched_fraction: 0.002,
+};
+
+#[test]
+fn clipped_star_matches_the_reference_image() {
+    let picture = four_panels("clipped_star.ply");
+    testkit::image::assert_image_matches(
+        "clipping_clipped_star",
+        &picture,
+        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/clipped_star.png"),
+        PICTURE_TOLERANCE,
+    );
+}
+
+#[test]
+fn clipped_torus_matches_the_reference_image() {
+    let picture = four_panels("clipped_torus.ply");
+    testkit::image::assert_image_matches(
+        "clipping_clipped_torus",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/clipped_torus.png"
+        ),
+        PICTURE_TOLERANCE,
+    );
+}
+
+#[test]
+fn clipped_meshes_keep_everything_inside_and_lose_what_is_outside() {
+    for name in ["clipped_star.ply", "clipped_torus.ply"] {
+        let mesh = scene::ply::load(scene::data::path(name)).expect("a shipped mesh");
+        let pipeline = scene::Pipeline::for_mesh(&mesh, PANEL, PANEL);
+        let polygons = pipeline.clip_space(&mesh);
+        let (mut cut, mut dropped) = (0, 0);
+        for polygon in &polygons {
+            let got = clip(polygon);
+            if polygon.iter().all(|v| excess(v.position) <= 0.0) {
+                assert_eq!(&got, polygon, "{name}: a face inside changed");
+            } else if got.is_empty() {
+                dropped += 1;
+            } else {
+                cut += 1;
+            }
+            assert!(
+                got.iter().all(|v| excess(v.position) <= 1e-5),
+                "{name}: {got:?}"
+            );
+        }
+        // The sheet's point of these meshes: some faces cross the border.
+        assert!(cut > 0, "{name}: {cut} cut, {dropped} dropped");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Properties.
+
+fn colour() -> impl Strategy<Value = Rgba> {
+    testkit::strategies::colour()
+}
+
+/// A clip-space vertex with coordinates in `±4`, `w` in `[−1, 4]`.
+fn any_vertex() -> impl Strategy<Value = ClipVertex> {
+    (
+        -4.0f32..4.0,
+        -4.0f32..4.0,
+        -4.0f32..4.0,
+        -1.0f32..4.0,
+        colour(),
+    )
+        .prop_map(|(x, y, z, w, c)| cv(x, y, z, w, c))
+}
+
+/// Polygons of 0 to 9 arbitrary clip-space vertices (any shape).
+fn any_polygon() -> impl Strategy<Value = Vec<ClipVertex>> {
+    prop::collection::vec(any_vertex(), 0..10)
+}
+
+/// Convex polygons in the plane `z = 0, w = 1`: points on a circle at
+/// sorted angles, around a centre in `±2`, radius up to 3.
+fn convex_flat_polygon() -> impl Strategy<Value = Vec<Vec2>> {
+    (
+        testkit::strategies::point(2.0),
+        0.1f32..3.0,
+        prop::collection::vec(0.0f32..std::f32::consts::TAU, 3..9),
+    )
+        .prop_map(|(centre, r, mut angles)| {
+            angles.sort_by(f32::total_cmp);
+            angles
+                .into_iter()
+                .map(|a| centre + r * Vec2::new(a.cos(), a.sin()))
+                .collect()
+        })
+}
+
+/// Star-shaped (often concave), simple polygons in the plane `z = 0,
+/// w = 1`: one vertex per sector of the circle around a centre in `±1.5`,
+/// so the angles increase and no gap reaches π.
+fn star_flat_polygon() -> impl Strategy<Value = Vec<ClipVertex>> {
+    (
+        testkit::strategies::point(1.5),
+        prop::collection::vec((0.0f32..1.0, 0.1f32..3.0, colour()), 3..12),
+    )
+        .prop_map(|(centre, spokes)| {
+            let sector = std::f32::consts::TAU / spokes.len() as f32;
+            spokes
+                .into_iter()
+                .enumerate()
+                .map(|(k, (jitter, r, c))| {
+                    let a = (k as f32 + jitter) * sector;
+                    let p = centre + r * Vec2::new(a.cos(), a.sin());
+                    flat(p.x, p.y, c)
+                })
+                .collect()
+        })
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn every_output_vertex_lies_inside_the_volume(polygon in any_polygon()) {
+        for v in clip(&polygon) {
+            prop_assert!(excess(v.position) <= 1e-5, "{:?} outside by {}", v, excess(v.position));
+        }
+    }
+
+    #[test]
+    fn polygons_inside_are_unchanged(
+        polygon in prop::collection::vec(
+            (-1.0f32..=1.0, -1.0f32..=1.0, -1.0f32..=1.0, 0.01f32..4.0, colour())
+                .prop_map(|(x, y, z, w, c)| cv(x * w, y * w, z * w, w, c)),
+            0..10,
+        ),
+    ) {
+        // Keep only vertices that are inside in f32 too (x·w may round out).
+        let polygon: Vec<ClipVertex> =
+            polygon.into_iter().filter(|v| excess(v.position) <= 0.0).collect();
+        prop_assert_eq!(clip(&polygon), polygon);
+    }
+
+    #[test]
+    fn polygons_beyond_one_plane_vanish(
+        polygon in prop::collection::vec(any_vertex(), 1..10),
+        k in 0usize..6,
+    ) {
+        // Move every vertex beyond plane k: x > w (say) by at least 0.5.
+        let n = VOLUME_PLANES[k].vector;
+        let moved: Vec<ClipVertex> = polygon
+            .into_iter()
+            .map(|mut v| {
+                let l = v.position.dot(n);
+                if l < 0.5 {
+                    // Along the normal's xyz part, which raises l by its length (1).
+                    v.position += (0.5 - l + 0.25) * n.truncate().extend(0.0);
+                }
+                v
+            })
+            .collect();
+        prop_assert!(clip(&moved).is_empty());
+    }
+
+    #[test]
+    fn clipping_twice_changes_nothing(polygon in any_polygon()) {
+        let once = clip(&polygon);
+        let twice = clip(&once);
+        // A vertex that rounding left a hair outside may be cut off again,
+        // by a crossing anywhere on an edge that runs along the plane; the
+        // outline moves no further than that hair.
+        prop_assert!(outline_distance(&once, &twice) <= 1e-4, "{:#?}\nvs\n{:#?}", once, twice);
+    }
+
+    #[test]
+    fn new_vertices_of_one_pass_are_mixes_of_their_edge(
+        polygon in any_polygon(),
+        k in 0usize..6,
+    ) {
+        let plane = VOLUME_PLANES[k];
+        let got = clip_against_plane(&polygon, plane).expect("valid input");
+        let n = polygon.len();
+        for v in got.iter().filter(|v| !polygon.contains(v)) {
+            let on_an_edge = (0..n).any(|i| {
+                let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                plane.inside(a.position) != plane.inside(b.position)
+                    && is_on_edge(*v, a, b, 1e-4)
+            });
+            prop_assert!(on_an_edge, "{:?} lies on no crossing edge", v);
+            prop_assert!(v.position.dot(plane.vector) <= 0.0, "{:?} outside", v);
+        }
+        // Inside vertices are kept, in order; outside ones are dropped.
+        let kept: Vec<ClipVertex> = got.iter().copied().filter(|v| polygon.contains(v)).collect();
+        let inside: Vec<ClipVertex> =
+            polygon.iter().copied().filter(|v| plane.inside(v.position)).collect();
+        prop_assert_eq!(kept, inside);
+    }
+
+    #[test]
+    fn all_vertices_are_mixes_of_the_polygon(polygon in any_polygon()) {
+        // Convex combinations of the input stay in its bounding box, in
+        // every coordinate and every colour channel.
+        let lo = polygon.iter().fold([f32::INFINITY; 8], |m, v| {
+            let c = [v.position.x, v.position.y, v.position.z, v.position.w,
+                     v.colour.r, v.colour.g, v.colour.b, v.colour.a];
+            std::array::from_fn(|i| m[i].min(c[i]))
+        });
+        let hi = polygon.iter().fold([f32::NEG_INFINITY; 8], |m, v| {
+            let c = [v.position.x, v.position.y, v.position.z, v.position.w,
+                     v.colour.r, v.colour.g, v.colour.b, v.colour.a];
+            std::array::from_fn(|i| m[i].max(c[i]))
+        });
+        for v in clip(&polygon) {
+            let c = [v.position.x, v.position.y, v.position.z, v.position.w,
+                     v.colour.r, v.colour.g, v.colour.b, v.colour.a];
+            for i in 0..8 {
+                prop_assert!(lo[i] - 1e-5 <= c[i] && c[i] <= hi[i] + 1e-5, "{:?}", v);
+            }
+        }
+    }
+
+    #[test]
+    fn convex_polygon_keeps_exactly_its_area_inside_the_square(polygon in convex_flat_polygon()) {
+        let vertices: Vec<ClipVertex> = polygon.iter().map(|p| flat(p.x, p.y, Rgba::WHITE)).collect();
+        let got = clip(&vertices);
+        let expected = common::convex_area_in_square(&polygon);
+        prop_assert!((shoelace(&got).abs() - expected).abs() <= 1e-4,
+            "area {} vs {} (by the hull of the crossings)", shoelace(&got), expected);
+    }
+
+    #[test]
+    fn clipping_never_adds_area(polygon in star_flat_polygon()) {
+        let got = clip(&polygon);
+        let (before, after) = (shoelace(&polygon), shoelace(&got));
+        prop_assert!(after.abs() <= before.abs() + 1e-5, "{} → {}", before, after);
+        // Nor does it change the winding.
+        prop_assert!(after * before >= -1e-9);
+    }
+}
