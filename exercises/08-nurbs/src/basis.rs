@@ -39,9 +39,10 @@ use crate::knots::{KnotVector, NurbsError};
 /// any `i` with `i + p + 1 ≤ m`; `0` for other `i` and for `u` outside
 /// `[u_0, u_m]` or NaN.
 ///
-/// The degree-0 step is `[u_i, u_{i+1})`, except that the span of the
-/// domain's end, `[u_n, u_{n+1}]` with `n = m − p_U − 1` for the vector's
-/// degree `p_U`, is closed. Quotients with a zero denominator count as `0`.
+/// The degree-0 step is `[u_i, u_{i+1})`, except at the domain's end
+/// `u = u_{n+1}` (`n = m − p_U − 1` for the vector's degree `p_U`): there
+/// only step `n` is 1, the limit from the left, so that the basis sums to 1
+/// on the whole closed domain. Quotients with a zero denominator count as `0`.
 ///
 /// Exponential in `p` (two calls per level): it is the definition, the
 /// oracle for the fast [`basis_funs`], not for production.

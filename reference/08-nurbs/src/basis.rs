@@ -39,9 +39,10 @@ use crate::knots::{KnotVector, NurbsError};
 /// any `i` with `i + p + 1 ≤ m`; `0` for other `i` and for `u` outside
 /// `[u_0, u_m]` or NaN.
 ///
-/// The degree-0 step is `[u_i, u_{i+1})`, except that the span of the
-/// domain's end, `[u_n, u_{n+1}]` with `n = m − p_U − 1` for the vector's
-/// degree `p_U`, is closed. Quotients with a zero denominator count as `0`.
+/// The degree-0 step is `[u_i, u_{i+1})`, except at the domain's end
+/// `u = u_{n+1}` (`n = m − p_U − 1` for the vector's degree `p_U`): there
+/// only step `n` is 1, the limit from the left, so that the basis sums to 1
+/// on the whole closed domain. Quotients with a zero denominator count as `0`.
 ///
 /// Exponential in `p` (two calls per level): it is the definition, the
 /// oracle for the fast [`basis_funs`], not for production.
@@ -53,10 +54,14 @@ pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
         return 0.0;
     }
     if p == 0 {
-        let last = knots.last_index();
-        let inside = k[i] <= u && u < k[i + 1];
-        let at_domain_end = i == last && u == k[i + 1];
-        return if inside || at_domain_end { 1.0 } else { 0.0 };
+        // At the domain's end u_{n+1} only step n counts (the limit from
+        // the left), not a step beyond the domain that starts there.
+        let on = if u == knots.domain().end {
+            i == knots.last_index()
+        } else {
+            k[i] <= u && u < k[i + 1]
+        };
+        return if on { 1.0 } else { 0.0 };
     }
     // Departure from seed (1.9): N_{i,p−1} here, the seed has N_{i,p}.
     let ratio = |num: f64, den: f64| if den == 0.0 { 0.0 } else { num / den };

@@ -35,11 +35,14 @@ pub fn basis(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
         let end = knots.domain().end;
         // The last non-empty step ending at the domain's end.
         let closing = k.iter().rposition(|&x| x < end).unwrap_or(0);
-        return if (k[i] <= u && u < k[i + 1]) || (i == closing && u == end) {
-            1.0
+        // At the domain's end only that step counts (the limit from the
+        // left); elsewhere the half-open steps.
+        let on = if u == end {
+            i == closing
         } else {
-            0.0
+            k[i] <= u && u < k[i + 1]
         };
+        return if on { 1.0 } else { 0.0 };
     }
     let mut value = 0.0;
     if k[i + p] > k[i] {
@@ -279,9 +282,10 @@ const TILT: f64 = 1.0;
 /// Model → (pixel x, pixel y, depth in [0, 1]).
 pub fn to_screen(p: DVec3) -> DVec3 {
     let (s, c) = TILT.sin_cos();
-    // Rotate about x: y' = c·y − s·z, z' = s·y + c·z; view along −z'.
-    let y = c * p.y - s * p.z;
-    let z = s * p.y + c * p.z;
+    // Rotate about x, the top (+z) towards the viewer and the near side
+    // (−y) down: y' = c·y + s·z, z' = −s·y + c·z; view along −z'.
+    let y = c * p.y + s * p.z;
+    let z = -s * p.y + c * p.z;
     DVec3::new(
         f64::from(WIDTH) / 2.0 + SCALE * p.x,
         f64::from(HEIGHT) / 2.0 + SCALE * y,
@@ -298,7 +302,7 @@ pub fn light() -> DVec3 {
 /// both sides lit, on a warm base colour.
 pub fn shade(n: DVec3) -> Rgba {
     let (s, c) = TILT.sin_cos();
-    let view_normal = DVec3::new(n.x, c * n.y - s * n.z, s * n.y + c * n.z);
+    let view_normal = DVec3::new(n.x, c * n.y + s * n.z, -s * n.y + c * n.z);
     let lambert = view_normal.dot(light()).abs();
     let i = (0.15 + 0.85 * lambert) as f32;
     Rgba::rgb(0.95 * i, 0.75 * i, 0.45 * i)
