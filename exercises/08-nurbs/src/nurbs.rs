@@ -24,8 +24,9 @@
 //!
 //! **Normals** (seed 001, (1.18)): `N = (S_u × S_v) / |S_u × S_v|`.
 //!
-//! Each task stands alone: this file has its own span search and basis
-//! evaluation (task `basis` writes the same algorithms).
+//! Each task stands alone: this file needs its own span search and basis
+//! evaluation as private helpers (task `basis` writes the same
+//! algorithms; copy them, do not call them).
 
 use glam::{DVec3, DVec4};
 
@@ -105,7 +106,11 @@ impl NurbsSurface {
     ///
     /// Errors: fewer than 2 samples along a side, or more than
     /// [`MAX_GRID_POINTS`] in all ([`NurbsError::BadGrid`]).
-    pub fn sample_grid(&self, samples_u: usize, samples_v: usize) -> Result<Vec<DVec3>, NurbsError> {
+    pub fn sample_grid(
+        &self,
+        samples_u: usize,
+        samples_v: usize,
+    ) -> Result<Vec<DVec3>, NurbsError> {
         todo!("nurbs: bases once per uᵢ and vⱼ, the u sums once per row, q + 1 products per point")
     }
 }

@@ -36,7 +36,13 @@ fn book_example_has_the_known_values() {
     for (value, expected) in values.iter().zip([1.0 / 8.0, 6.0 / 8.0, 1.0 / 8.0]) {
         assert_relative_eq!(*value, expected, max_relative = 1e-15);
     }
-    for (i, expected) in [(2, 1.0 / 8.0), (3, 6.0 / 8.0), (4, 1.0 / 8.0), (1, 0.0), (5, 0.0)] {
+    for (i, expected) in [
+        (2, 1.0 / 8.0),
+        (3, 6.0 / 8.0),
+        (4, 1.0 / 8.0),
+        (1, 0.0),
+        (5, 0.0),
+    ] {
         assert_relative_eq!(cox_de_boor(&knots, i, 2, u), expected, max_relative = 1e-15);
     }
     // Lower degrees from the same recursion: N_{4,0}(5/2) = 1,
@@ -130,7 +136,11 @@ fn knot_vectors_are_validated() {
     );
     assert!(matches!(
         KnotVector::try_new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0]),
-        Err(NurbsError::TooFewKnots { needed: 6, got: 5, .. })
+        Err(NurbsError::TooFewKnots {
+            needed: 6,
+            got: 5,
+            ..
+        })
     ));
     assert!(matches!(
         KnotVector::try_new(1, vec![0.0, 0.0, 0.5, 0.4, 1.0, 1.0]),
@@ -142,7 +152,10 @@ fn knot_vectors_are_validated() {
     ));
     assert!(matches!(
         KnotVector::try_new(2, vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0]),
-        Err(NurbsError::MultiplicityTooHigh { multiplicity: 3, .. })
+        Err(NurbsError::MultiplicityTooHigh {
+            multiplicity: 3,
+            ..
+        })
     ));
     assert!(matches!(
         KnotVector::try_new(1, vec![0.0, 0.0, 0.0, 1.0, 1.0]),

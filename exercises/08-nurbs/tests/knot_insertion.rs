@@ -115,7 +115,10 @@ fn invalid_insertions_are_errors() {
     ));
     for u in [0.0, 1.0, -0.5, 2.0, f64::NAN] {
         assert!(
-            matches!(circle.insert_knot(u, 1), Err(NurbsError::OutOfDomain { .. })),
+            matches!(
+                circle.insert_knot(u, 1),
+                Err(NurbsError::OutOfDomain { .. })
+            ),
             "u = {u}"
         );
     }

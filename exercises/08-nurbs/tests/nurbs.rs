@@ -84,7 +84,12 @@ fn bezier_knots_give_the_rational_bezier_curve() {
             num += b * p.truncate();
             den += b * p.w;
         }
-        assert_close(num / den, curve.point(u).unwrap(), 1e-12, &format!("u = {u}"));
+        assert_close(
+            num / den,
+            curve.point(u).unwrap(),
+            1e-12,
+            &format!("u = {u}"),
+        );
     }
 }
 
@@ -180,7 +185,12 @@ fn collapsed_edge_has_no_normal() {
     //         ╲  ╱
     //   P10 ●────● P11          row 1 (u = 1)
     let apex = DVec3::new(0.0, 1.0, 0.0);
-    let points = [apex, apex, DVec3::new(-1.0, 0.0, 0.0), DVec3::new(1.0, 0.0, 0.0)];
+    let points = [
+        apex,
+        apex,
+        DVec3::new(-1.0, 0.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+    ];
     let net = ControlNet::try_new(2, 2, points.map(|p| homogeneous(p, 1.0)).to_vec()).unwrap();
     let knots = KnotVector::bezier(1).unwrap();
     let surface = NurbsSurface::try_new(knots.clone(), knots, net).unwrap();

@@ -35,7 +35,11 @@ fn bernstein_has_the_known_values() {
     assert_relative_eq!(bernstein(2, 1, 0.5), 0.5, max_relative = 1e-15);
     assert_relative_eq!(bernstein(3, 0, 0.25), 27.0 / 64.0, max_relative = 1e-15);
     assert_relative_eq!(bernstein(4, 2, 0.5), 6.0 / 16.0, max_relative = 1e-15);
-    assert_relative_eq!(bernstein(5, 3, 0.3), 10.0 * 0.027 * 0.49, max_relative = 1e-14);
+    assert_relative_eq!(
+        bernstein(5, 3, 0.3),
+        10.0 * 0.027 * 0.49,
+        max_relative = 1e-14
+    );
     // 0⁰ = 1 at the ends; other functions vanish there.
     assert_eq!(bernstein(3, 0, 0.0), 1.0);
     assert_eq!(bernstein(3, 3, 1.0), 1.0);

@@ -18,9 +18,9 @@
 //!   by itself; the definition (and The NURBS Book, (2.5)) has `N_{i,p−1}`.
 //! - (1.8) closes the interval, `u_i ≤ u ≤ u_{i+1}`; then at an interior
 //!   knot two degree-0 functions are 1 and the basis sums to 2 there. The
-//!   interval is half-open; only the last non-empty span of the domain is
-//!   also closed at its right end, so that the basis still sums to 1 at
-//!   `u = u_{m−p}` (A2.1 makes the same choice).
+//!   interval is half-open; at the domain's end `u = u_{n+1}` only the
+//!   step of span `n` counts, so that the basis still sums to 1 there
+//!   (A2.1 makes the same choice).
 //!
 //! **Span.** On `[u_s, u_{s+1})` only `N_{s−p,p} … N_{s,p}` are non-zero
 //! (local support), so evaluating a B-spline means: find `s`, compute those
@@ -54,8 +54,9 @@ pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
         return 0.0;
     }
     if p == 0 {
-        // At the domain's end u_{n+1} only step n counts (the limit from
-        // the left), not a step beyond the domain that starts there.
+        // Departure from seed (1.8), which closes every step: half-open,
+        // and at the domain's end u_{n+1} only step n counts (the limit
+        // from the left), not a step beyond the domain that starts there.
         let on = if u == knots.domain().end {
             i == knots.last_index()
         } else {
@@ -212,7 +213,11 @@ pub fn ders_basis_funs(
                 d = a[s2][0] * ndu[rk as usize][pk];
             }
             let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
-            let j2 = if r as isize - 1 <= pk as isize { kk - 1 } else { p - r };
+            let j2 = if r as isize - 1 <= pk as isize {
+                kk - 1
+            } else {
+                p - r
+            };
             for j in j1..=j2 {
                 let index = (rk + j as isize) as usize;
                 a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][index];

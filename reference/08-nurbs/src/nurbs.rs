@@ -24,8 +24,9 @@
 //!
 //! **Normals** (seed 001, (1.18)): `N = (S_u × S_v) / |S_u × S_v|`.
 //!
-//! Each task stands alone: this file has its own span search and basis
-//! evaluation (task `basis` writes the same algorithms).
+//! Each task stands alone: this file needs its own span search and basis
+//! evaluation as private helpers (task `basis` writes the same
+//! algorithms; copy them, do not call them).
 
 use glam::{DVec3, DVec4};
 
@@ -55,7 +56,7 @@ impl NurbsCurve {
         let cw: DVec4 = basis
             .iter()
             .zip(&self.points()[start..])
-            .map(|(&n, &p)| p * n)
+            .map(|(&n, &pw)| pw * n)
             .sum();
         Ok(project(cw))
         // END SOLUTION
@@ -76,9 +77,9 @@ impl NurbsCurve {
         let start = span - knots.degree();
         let mut cw = DVec4::ZERO;
         let mut cw_u = DVec4::ZERO;
-        for ((&n, &dn), &p) in basis.iter().zip(&derivative).zip(&self.points()[start..]) {
-            cw += p * n;
-            cw_u += p * dn;
+        for ((&n, &dn), &pw) in basis.iter().zip(&derivative).zip(&self.points()[start..]) {
+            cw += pw * n;
+            cw_u += pw * dn;
         }
         let point = project(cw);
         let tangent = (cw_u.truncate() - cw_u.w * point) / cw.w;
@@ -104,7 +105,7 @@ impl NurbsSurface {
         let mut sw = DVec4::ZERO;
         for (a, &nu_a) in nu.iter().enumerate() {
             let row = &self.net().row(i0 + a)[j0..];
-            let along_v: DVec4 = nv.iter().zip(row).map(|(&n, &p)| p * n).sum();
+            let along_v: DVec4 = nv.iter().zip(row).map(|(&n, &pw)| pw * n).sum();
             sw += along_v * nu_a;
         }
         Ok(project(sw))
@@ -126,9 +127,9 @@ impl NurbsSurface {
         for a in 0..nu.len() {
             let row = &self.net().row(i0 + a)[j0..];
             let (mut along_v, mut along_v_dv) = (DVec4::ZERO, DVec4::ZERO);
-            for ((&n, &dn), &p) in nv.iter().zip(&dnv).zip(row) {
-                along_v += p * n;
-                along_v_dv += p * dn;
+            for ((&n, &dn), &pw) in nv.iter().zip(&dnv).zip(row) {
+                along_v += pw * n;
+                along_v_dv += pw * dn;
             }
             sw += along_v * nu[a];
             sw_u += along_v * dnu[a];
@@ -156,7 +157,9 @@ impl NurbsSurface {
         let cross = d.du.cross(d.dv);
         let scale = d.du.length() * d.dv.length();
         let length = cross.length();
-        if !(length > PARALLEL_TOLERANCE * scale) || !length.is_finite() {
+        // Written so that NaN (from infinite tangents) is refused too.
+        let parallel = length.is_nan() || length <= PARALLEL_TOLERANCE * scale;
+        if parallel || !length.is_finite() {
             return Err(NurbsError::DegenerateNormal { u, v });
         }
         Ok(cross / length)
@@ -175,9 +178,15 @@ impl NurbsSurface {
     ///
     /// Errors: fewer than 2 samples along a side, or more than
     /// [`MAX_GRID_POINTS`] in all ([`NurbsError::BadGrid`]).
-    pub fn sample_grid(&self, samples_u: usize, samples_v: usize) -> Result<Vec<DVec3>, NurbsError> {
+    pub fn sample_grid(
+        &self,
+        samples_u: usize,
+        samples_v: usize,
+    ) -> Result<Vec<DVec3>, NurbsError> {
         // BEGIN SOLUTION nurbs: bases once per uᵢ and vⱼ, the u sums once per row, q + 1 products per point
-        let too_many = samples_u.checked_mul(samples_v).is_none_or(|n| n > MAX_GRID_POINTS);
+        let too_many = samples_u
+            .checked_mul(samples_v)
+            .is_none_or(|n| n > MAX_GRID_POINTS);
         if samples_u < 2 || samples_v < 2 || too_many {
             return Err(NurbsError::BadGrid {
                 samples_u,
@@ -201,7 +210,7 @@ impl NurbsSurface {
             }
             for (t, nv) in &bases_v {
                 let curve = &row_curve[t - q..];
-                let sw: DVec4 = nv.iter().zip(curve).map(|(&n, &p)| p * n).sum();
+                let sw: DVec4 = nv.iter().zip(curve).map(|(&n, &pw)| pw * n).sum();
                 points.push(project(sw));
             }
         }

@@ -124,7 +124,9 @@ pub fn quarter_circle() -> [DVec4; 3] {
 pub fn circle_knots() -> KnotVector {
     KnotVector::try_new(
         2,
-        vec![0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0],
+        vec![
+            0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+        ],
     )
     .expect("valid")
 }
