@@ -128,8 +128,8 @@ fn unclamped_uniform_knots_give_the_uniform_cubic_b_spline() {
 }
 
 #[test]
-fn knot_vectors_are_validated() {
-    // Given code: the errors every task relies on.
+fn invalid_knots_parameters_and_spans_are_errors() {
+    // The knot vector checks (given code) that every task relies on.
     assert_eq!(
         KnotVector::try_new(0, vec![0.0, 1.0]),
         Err(NurbsError::DegreeZero)
@@ -172,10 +172,7 @@ fn knot_vectors_are_validated() {
     );
     assert!(clamped.is_clamped());
     assert!(!KnotVector::uniform(2, 5).unwrap().is_clamped());
-}
-
-#[test]
-fn bad_parameters_and_spans_are_errors() {
+    // Parameters and spans (your code).
     let knots = book_knots();
     for u in [-0.1, 5.0 + 1e-9, f64::NAN, f64::NEG_INFINITY] {
         assert!(
