@@ -75,12 +75,11 @@ pub struct NewtonRoot {
 ///
 /// Each step computes `h = f(x)/f'(x)` and `x ← x − h`; the method returns
 /// right after the first step with `|h| < epsilon` (`converged`), or after
-/// `max_iterations` steps with the last `x`. (The seed's GLSL function
-/// falls off its end without a `return` in that case, which is undefined
-/// behaviour; here the last approximation is returned, so too few
-/// iterations give the seed's visible artefacts and nothing worse.)
-/// Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is not
-/// applicable", §3.2) it stops at `x` without converging. Never panics.
+/// `max_iterations` steps with the last `x` and `converged = false`. (The
+/// seed's GLSL function falls off its end without a `return` in that case,
+/// which is undefined behaviour; here the caller learns that no root was
+/// found.) Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is
+/// not applicable", §3.2) it stops at `x` without converging. Never panics.
 #[must_use]
 pub fn newton(
     f: impl Fn(f64) -> f64,
@@ -97,15 +96,21 @@ pub fn newton(
 /// with the quadratic or cubic curve `curve` that Newton finds from `t = 1`
 /// and from `t = 0` (steps 1–3 above).
 ///
-/// Inside means: both roots in `[0, 1]` and `x₁ = C_u(t₁) − u`,
-/// `x₂ = C_u(t₂) − u` of opposite signs. The seed's §3.2.1 lists both sign
+/// Inside means: both Newton runs converged, both roots in `[0, 1]`, and
+/// `x₁ = C_u(t₁) − u`, `x₂ = C_u(t₂) − u` of opposite signs. A run that
+/// does not converge finds no crossing: in the seed's shader it returns
+/// nothing (undefined in GLSL); above the apex of an arch, where the
+/// v-equation has no real root, its wandering `t` would otherwise often
+/// land in `[0, 1]` and trim points far outside the region. Too few
+/// iterations therefore leave points near the apex untrimmed — the
+/// notches of the seed's Fig. 30. The seed's §3.2.1 lists both sign
 /// cases (3 and 4); its shader (Listing 11) tests only `x₁ > 0 ∧ x₂ < 0`.
 /// `curve` must hold 3 or 4 finite points (not checked here: the trims
 /// below check it); a NaN `uv` is never inside.
 #[must_use]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
     todo!(
-        "trim: Newton on C_v(t) − v from 1 and from 0; both t in [0, 1] and x₁, x₂ of opposite signs"
+        "trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs"
     )
 }
 
