@@ -120,7 +120,10 @@ impl ControlNet {
     /// If `i ≥ n_u` or `j ≥ n_v` (a programming error, like slice indexing).
     #[must_use]
     pub fn point(&self, i: usize, j: usize) -> DVec3 {
-        assert!(i < self.n_u && j < self.n_v, "P[{i}][{j}] is outside the net");
+        assert!(
+            i < self.n_u && j < self.n_v,
+            "P[{i}][{j}] is outside the net"
+        );
         self.points[i * self.n_v + j]
     }
 
@@ -153,6 +156,10 @@ impl ControlNet {
     /// # Errors
     /// [`BezierError::NonFinitePoint`] if `f` produces a NaN or infinity.
     pub fn map(&self, f: impl Fn(DVec3) -> DVec3) -> Result<Self, BezierError> {
-        Self::new(self.n_u, self.n_v, self.points.iter().map(|&p| f(p)).collect())
+        Self::new(
+            self.n_u,
+            self.n_v,
+            self.points.iter().map(|&p| f(p)).collect(),
+        )
     }
 }

@@ -115,18 +115,21 @@ pub fn rasterize_triangle(
         return;
     }
     let min = a.min(b).min(c).ceil().max(DVec2::ZERO);
-    let max = a
-        .max(b)
-        .max(c)
-        .floor()
-        .min(DVec2::new(f64::from(canvas.width()) - 1.0, f64::from(canvas.height()) - 1.0));
+    let max = a.max(b).max(c).floor().min(DVec2::new(
+        f64::from(canvas.width()) - 1.0,
+        f64::from(canvas.height()) - 1.0,
+    ));
     if !(min.x <= max.x && min.y <= max.y) {
         return;
     }
     for y in min.y as i32..=max.y as i32 {
         for x in min.x as i32..=max.x as i32 {
             let p = DVec2::new(f64::from(x), f64::from(y));
-            let w = [edge(b, c, p) / area, edge(c, a, p) / area, edge(a, b, p) / area];
+            let w = [
+                edge(b, c, p) / area,
+                edge(c, a, p) / area,
+                edge(a, b, p) / area,
+            ];
             if w.iter().any(|&w| w < 0.0) {
                 continue;
             }

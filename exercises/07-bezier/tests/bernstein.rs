@@ -12,7 +12,11 @@ use proptest::prelude::*;
 fn binomial_matches_pascals_triangle_up_to_the_degree_limit() {
     for n in 0..=MAX_DEGREE {
         for i in 0..=n {
-            assert_eq!(binomial(n, i), Ok(common::pascal(n, i) as f64), "C({n}, {i})");
+            assert_eq!(
+                binomial(n, i),
+                Ok(common::pascal(n, i) as f64),
+                "C({n}, {i})"
+            );
         }
     }
 }
@@ -64,9 +68,15 @@ fn quadratic_and_cubic_curves_follow_seed_equations_1_and_2() {
         let t = f64::from(k) / 8.0;
         let s = 1.0 - t;
         let quadratic = p[0] * (s * s) + p[1] * (2.0 * t * s) + p[2] * (t * t);
-        let cubic =
-            p[0] * (s * s * s) + p[1] * (3.0 * t * s * s) + p[2] * (3.0 * t * t * s) + p[3] * (t * t * t);
-        assert!(bernstein_curve(&p[..3], t).unwrap().abs_diff_eq(quadratic, 1e-14));
+        let cubic = p[0] * (s * s * s)
+            + p[1] * (3.0 * t * s * s)
+            + p[2] * (3.0 * t * t * s)
+            + p[3] * (t * t * t);
+        assert!(
+            bernstein_curve(&p[..3], t)
+                .unwrap()
+                .abs_diff_eq(quadratic, 1e-14)
+        );
         assert!(bernstein_curve(&p, t).unwrap().abs_diff_eq(cubic, 1e-14));
     }
     // The curve passes through its end points exactly.
@@ -88,25 +98,46 @@ fn scalar_curves_work_too() {
 #[test]
 fn invalid_input_is_a_clear_error() {
     let too_high = MAX_DEGREE + 1;
-    assert_eq!(binomial(3, 4), Err(BezierError::IndexAboveDegree { i: 4, n: 3 }));
+    assert_eq!(
+        binomial(3, 4),
+        Err(BezierError::IndexAboveDegree { i: 4, n: 3 })
+    );
     assert_eq!(
         binomial(too_high, 1),
-        Err(BezierError::DegreeTooHigh { degree: too_high, max: MAX_DEGREE })
+        Err(BezierError::DegreeTooHigh {
+            degree: too_high,
+            max: MAX_DEGREE
+        })
     );
-    assert!(matches!(bernstein(4, 3, 0.5), Err(BezierError::IndexAboveDegree { .. })));
-    assert!(matches!(bernstein(0, too_high, 0.5), Err(BezierError::DegreeTooHigh { .. })));
+    assert!(matches!(
+        bernstein(4, 3, 0.5),
+        Err(BezierError::IndexAboveDegree { .. })
+    ));
+    assert!(matches!(
+        bernstein(0, too_high, 0.5),
+        Err(BezierError::DegreeTooHigh { .. })
+    ));
     for t in [f64::NAN, -0.1, 1.1, f64::INFINITY, f64::NEG_INFINITY] {
         assert!(
-            matches!(bernstein(1, 3, t), Err(BezierError::ParameterOutOfRange { name: "t", .. })),
+            matches!(
+                bernstein(1, 3, t),
+                Err(BezierError::ParameterOutOfRange { name: "t", .. })
+            ),
             "t = {t}"
         );
         assert!(bernstein_basis(3, t).is_err(), "t = {t}");
     }
     assert_eq!(bernstein_curve::<DVec2>(&[], 0.5), Err(BezierError::Empty));
     let nan = [DVec3::ZERO, DVec3::new(0.0, f64::NAN, 0.0)];
-    assert_eq!(bernstein_curve(&nan, 0.5), Err(BezierError::NonFinitePoint { index: 1 }));
+    assert_eq!(
+        bernstein_curve(&nan, 0.5),
+        Err(BezierError::NonFinitePoint { index: 1 })
+    );
     let long = vec![DVec2::ONE; MAX_DEGREE + 2];
-    assert!(matches!(bernstein_curve(&long, 0.5), Err(BezierError::DegreeTooHigh { .. })));
+    assert!(matches!(
+        bernstein_curve(&long, 0.5),
+        Err(BezierError::DegreeTooHigh { .. })
+    ));
 }
 
 proptest! {

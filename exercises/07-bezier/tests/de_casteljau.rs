@@ -36,23 +36,41 @@ fn seed_figure_6_at_one_half() {
 
 #[test]
 fn ends_and_end_tangents_are_exact() {
-    let p = [p2(1.0, 1.0), p2(2.0, 5.0), p2(6.0, 4.0), p2(7.0, -1.0), p2(9.0, 0.5)];
+    let p = [
+        p2(1.0, 1.0),
+        p2(2.0, 5.0),
+        p2(6.0, 4.0),
+        p2(7.0, -1.0),
+        p2(9.0, 0.5),
+    ];
     let n = 4.0;
     assert_eq!(de_casteljau(&p, 0.0), Ok(p[0]));
     assert_eq!(de_casteljau(&p, 1.0), Ok(p[4]));
     // The end tangents point at the neighbouring control points (seed §2.2).
-    assert_eq!(point_and_derivative(&p, 0.0).unwrap().derivative, (p[1] - p[0]) * n);
-    assert_eq!(point_and_derivative(&p, 1.0).unwrap().derivative, (p[4] - p[3]) * n);
+    assert_eq!(
+        point_and_derivative(&p, 0.0).unwrap().derivative,
+        (p[1] - p[0]) * n
+    );
+    assert_eq!(
+        point_and_derivative(&p, 1.0).unwrap().derivative,
+        (p[4] - p[3]) * n
+    );
 }
 
 #[test]
 fn degree_zero_and_one() {
     let single = [p2(3.0, 4.0)];
     assert_eq!(de_casteljau(&single, 0.7), Ok(single[0]));
-    assert_eq!(point_and_derivative(&single, 0.7).unwrap().derivative, DVec2::ZERO);
+    assert_eq!(
+        point_and_derivative(&single, 0.7).unwrap().derivative,
+        DVec2::ZERO
+    );
     let line = [p2(0.0, 0.0), p2(4.0, 8.0)];
     assert_eq!(de_casteljau(&line, 0.25), Ok(p2(1.0, 2.0)));
-    assert_eq!(point_and_derivative(&line, 0.25).unwrap().derivative, p2(4.0, 8.0));
+    assert_eq!(
+        point_and_derivative(&line, 0.25).unwrap().derivative,
+        p2(4.0, 8.0)
+    );
     let s = split(&line, 0.25).unwrap();
     assert_eq!(s.left, vec![p2(0.0, 0.0), p2(1.0, 2.0)]);
     assert_eq!(s.right, vec![p2(1.0, 2.0), p2(4.0, 8.0)]);
@@ -81,7 +99,10 @@ fn high_degree_works_and_too_high_is_an_error() {
     over.push(0.0);
     assert_eq!(
         de_casteljau(&over, 0.5),
-        Err(BezierError::DegreeTooHigh { degree: MAX_DEGREE + 1, max: MAX_DEGREE })
+        Err(BezierError::DegreeTooHigh {
+            degree: MAX_DEGREE + 1,
+            max: MAX_DEGREE
+        })
     );
 }
 
@@ -92,7 +113,10 @@ fn invalid_input_is_a_clear_error() {
     assert!(split::<DVec3>(&[], 0.5).is_err());
     assert!(point_and_derivative::<f64>(&[], 0.5).is_err());
     for t in [f64::NAN, -1e-9, 1.0 + 1e-9, f64::INFINITY] {
-        let err = Err(BezierError::ParameterOutOfRange { name: "t", value: t });
+        let err = Err(BezierError::ParameterOutOfRange {
+            name: "t",
+            value: t,
+        });
         if !t.is_nan() {
             assert_eq!(de_casteljau(&p, t), err);
         }
@@ -101,13 +125,17 @@ fn invalid_input_is_a_clear_error() {
         assert!(point_and_derivative(&p, t).is_err());
     }
     let bad = [p2(0.0, 0.0), p2(f64::INFINITY, 1.0), p2(f64::NAN, 0.0)];
-    assert_eq!(de_casteljau(&bad, 0.5), Err(BezierError::NonFinitePoint { index: 1 }));
+    assert_eq!(
+        de_casteljau(&bad, 0.5),
+        Err(BezierError::NonFinitePoint { index: 1 })
+    );
     assert!(split(&bad, 0.5).is_err());
 }
 
 fn points3(max_len: usize) -> impl Strategy<Value = Vec<DVec3>> {
     prop::collection::vec(
-        (-50.0..50.0_f64, -50.0..50.0_f64, -50.0..50.0_f64).prop_map(|(x, y, z)| DVec3::new(x, y, z)),
+        (-50.0..50.0_f64, -50.0..50.0_f64, -50.0..50.0_f64)
+            .prop_map(|(x, y, z)| DVec3::new(x, y, z)),
         1..=max_len,
     )
 }

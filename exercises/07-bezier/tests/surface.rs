@@ -30,12 +30,28 @@ fn a_plane_grid_reproduces_its_parameters() {
     let net = plane_net();
     for (u, v) in [(0.0, 0.0), (0.25, 0.5), (1.0, 0.75), (0.5, 1.0)] {
         let expected = DVec3::new(2.0 * u, 2.0 * v, 0.0);
-        assert!(evaluate_u_then_v(&net, uv(u, v)).unwrap().abs_diff_eq(expected, 1e-15));
-        assert!(evaluate_v_then_u(&net, uv(u, v)).unwrap().abs_diff_eq(expected, 1e-15));
+        assert!(
+            evaluate_u_then_v(&net, uv(u, v))
+                .unwrap()
+                .abs_diff_eq(expected, 1e-15)
+        );
+        assert!(
+            evaluate_v_then_u(&net, uv(u, v))
+                .unwrap()
+                .abs_diff_eq(expected, 1e-15)
+        );
         let p = partial_derivatives(&net, uv(u, v)).unwrap();
         assert!(p.position.abs_diff_eq(expected, 1e-15));
-        assert!(p.du.abs_diff_eq(DVec3::new(2.0, 0.0, 0.0), 1e-15), "{}", p.du);
-        assert!(p.dv.abs_diff_eq(DVec3::new(0.0, 2.0, 0.0), 1e-15), "{}", p.dv);
+        assert!(
+            p.du.abs_diff_eq(DVec3::new(2.0, 0.0, 0.0), 1e-15),
+            "{}",
+            p.du
+        );
+        assert!(
+            p.dv.abs_diff_eq(DVec3::new(0.0, 2.0, 0.0), 1e-15),
+            "{}",
+            p.dv
+        );
         assert!(normal(&net, uv(u, v)).unwrap().abs_diff_eq(DVec3::Z, 1e-15));
     }
 }
@@ -43,7 +59,12 @@ fn a_plane_grid_reproduces_its_parameters() {
 #[test]
 fn corners_are_the_corner_control_points() {
     let net = ControlNet::seed_hill();
-    for (u, v, i, j) in [(0.0, 0.0, 0, 0), (1.0, 0.0, 3, 0), (0.0, 1.0, 0, 3), (1.0, 1.0, 3, 3)] {
+    for (u, v, i, j) in [
+        (0.0, 0.0, 0, 0),
+        (1.0, 0.0, 3, 0),
+        (0.0, 1.0, 0, 3),
+        (1.0, 1.0, 3, 3),
+    ] {
         assert_eq!(evaluate_u_then_v(&net, uv(u, v)), Ok(net.point(i, j)));
         assert_eq!(evaluate_v_then_u(&net, uv(u, v)), Ok(net.point(i, j)));
     }
@@ -54,7 +75,10 @@ fn the_seed_hill_at_its_centre() {
     // Inner points at height ½, the rest at 0: P(½, ½).y = ½ · (B₁₃ + B₂₃)(½)² = ½ · (¾)².
     let net = ControlNet::seed_hill();
     let centre = evaluate_u_then_v(&net, uv(0.5, 0.5)).unwrap();
-    assert!(centre.abs_diff_eq(DVec3::new(0.0, 0.5 * 0.75 * 0.75, 0.0), 1e-15), "{centre}");
+    assert!(
+        centre.abs_diff_eq(DVec3::new(0.0, 0.5 * 0.75 * 0.75, 0.0), 1e-15),
+        "{centre}"
+    );
     // By symmetry the top of the hill is flat and the normal points up.
     let n = normal(&net, uv(0.5, 0.5)).unwrap();
     assert!(n.abs_diff_eq(DVec3::Y, 1e-15), "{n}");
@@ -101,7 +125,12 @@ fn a_net_collapsed_to_a_line_has_no_normal() {
 #[test]
 fn invalid_input_is_a_clear_error() {
     let net = ControlNet::seed_hill();
-    for bad in [uv(f64::NAN, 0.5), uv(0.5, -0.1), uv(1.5, 0.5), uv(0.5, f64::INFINITY)] {
+    for bad in [
+        uv(f64::NAN, 0.5),
+        uv(0.5, -0.1),
+        uv(1.5, 0.5),
+        uv(0.5, f64::INFINITY),
+    ] {
         assert!(matches!(
             evaluate_u_then_v(&net, bad),
             Err(BezierError::ParameterOutOfRange { .. })
@@ -114,7 +143,11 @@ fn invalid_input_is_a_clear_error() {
     assert_eq!(ControlNet::new(0, 3, vec![]), Err(BezierError::Empty));
     assert!(matches!(
         ControlNet::new(2, 2, vec![DVec3::ZERO; 3]),
-        Err(BezierError::NetShape { expected: 4, got: 3, .. })
+        Err(BezierError::NetShape {
+            expected: 4,
+            got: 3,
+            ..
+        })
     ));
     assert!(matches!(
         ControlNet::new(34, 1, vec![DVec3::ZERO; 34]),
@@ -122,7 +155,10 @@ fn invalid_input_is_a_clear_error() {
     ));
     let mut points = vec![DVec3::ZERO; 4];
     points[2].y = f64::NAN;
-    assert_eq!(ControlNet::new(2, 2, points), Err(BezierError::NonFinitePoint { index: 2 }));
+    assert_eq!(
+        ControlNet::new(2, 2, points),
+        Err(BezierError::NonFinitePoint { index: 2 })
+    );
 }
 
 fn nets() -> impl Strategy<Value = ControlNet> {

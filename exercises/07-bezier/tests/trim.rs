@@ -112,8 +112,16 @@ fn misclassified(
 fn interval_includes_its_boundary() {
     let rect = IntervalTrim::new(uv(0.25, 0.5), uv(0.75, 0.625)).unwrap();
     assert!(rect.trims(uv(0.5, 0.55)));
-    for on in [uv(0.25, 0.5), uv(0.75, 0.625), uv(0.25, 0.6), uv(0.5, 0.625)] {
-        assert!(rect.trims(on), "{on} is on the boundary: trimmed (seed: >=, <=)");
+    for on in [
+        uv(0.25, 0.5),
+        uv(0.75, 0.625),
+        uv(0.25, 0.6),
+        uv(0.5, 0.625),
+    ] {
+        assert!(
+            rect.trims(on),
+            "{on} is on the boundary: trimmed (seed: >=, <=)"
+        );
     }
     for off in [uv(0.2499, 0.55), uv(0.5, 0.626), uv(0.9, 0.9)] {
         assert!(!rect.trims(off), "{off}");
@@ -146,10 +154,22 @@ fn ellipse_includes_its_boundary() {
 #[test]
 fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
     let nan = uv(f64::NAN, 0.5);
-    assert!(!IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0)).unwrap().trims(nan));
+    assert!(
+        !IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0))
+            .unwrap()
+            .trims(nan)
+    );
     assert!(!CircleTrim::new(uv(0.5, 0.5), 1.0).unwrap().trims(nan));
-    assert!(!EllipseTrim::new(uv(0.5, 0.5), uv(1.0, 1.0)).unwrap().trims(nan));
-    assert!(!NewtonTrim::quadratic(QUADRATIC).unwrap().trims(uv(0.5, f64::NAN)));
+    assert!(
+        !EllipseTrim::new(uv(0.5, 0.5), uv(1.0, 1.0))
+            .unwrap()
+            .trims(nan)
+    );
+    assert!(
+        !NewtonTrim::quadratic(QUADRATIC)
+            .unwrap()
+            .trims(uv(0.5, f64::NAN))
+    );
     assert!(IntervalTrim::new(uv(0.5, 0.0), uv(0.4, 1.0)).is_err());
     assert!(IntervalTrim::new(uv(f64::NAN, 0.0), uv(0.4, 1.0)).is_err());
     assert!(CircleTrim::new(uv(0.5, 0.5), -0.1).is_err());
@@ -221,7 +241,10 @@ fn newton_finds_the_square_root_of_two() {
     assert_eq!(root.iterations, 4);
     assert!((root.t - 2.0_f64.sqrt()).abs() < 1e-11, "{}", root.t);
     // With ε = 0.1 the second step (0.0833) already stops it at 17/12.
-    let coarse = NewtonSettings { max_iterations: 10, epsilon: 0.1 };
+    let coarse = NewtonSettings {
+        max_iterations: 10,
+        epsilon: 0.1,
+    };
     let root = newton(|x| x * x - 2.0, |x| 2.0 * x, 1.0, coarse);
     assert_eq!(root.iterations, 2);
     assert!((root.t - 17.0 / 12.0).abs() < 1e-15, "{}", root.t);
@@ -233,12 +256,18 @@ fn newton_stops_where_it_cannot_go_on() {
     let flat = newton(|x| x * x + 1.0, |x| 2.0 * x, 0.0, NewtonSettings::default());
     assert_eq!((flat.t, flat.iterations, flat.converged), (0.0, 0, false));
     // No real root: the iteration runs out after max_iterations.
-    let settings = NewtonSettings { max_iterations: 6, epsilon: 0.001 };
+    let settings = NewtonSettings {
+        max_iterations: 6,
+        epsilon: 0.001,
+    };
     let wander = newton(|x| x * x + 1.0, |x| 2.0 * x, 0.5, settings);
     assert_eq!(wander.iterations, 6);
     assert!(!wander.converged);
     // Zero iterations return the start.
-    let none = NewtonSettings { max_iterations: 0, epsilon: 0.001 };
+    let none = NewtonSettings {
+        max_iterations: 0,
+        epsilon: 0.001,
+    };
     let root = newton(|x| x - 3.0, |_| 1.0, 1.0, none);
     assert_eq!((root.t, root.iterations, root.converged), (1.0, 0, false));
 }
@@ -277,7 +306,10 @@ fn nested_newton_trim_keeps_the_inner_region() {
     let inner = NewtonTrim::quadratic(INNER).unwrap();
     let ring = NestedNewtonTrim::new(outer, inner);
     assert!(ring.trims(uv(0.3, 0.5 + 1e-3)));
-    assert!(!ring.trims(uv(0.5, 0.55)), "inside the inner curve the surface is drawn");
+    assert!(
+        !ring.trims(uv(0.5, 0.55)),
+        "inside the inner curve the surface is drawn"
+    );
     assert_eq!(
         misclassified(100, 0.005, &ring, |p| in_quadratic(p) && !in_inner(p)),
         0
@@ -288,9 +320,10 @@ fn nested_newton_trim_keeps_the_inner_region() {
 fn too_few_iterations_or_a_coarse_epsilon_spoil_the_edge() {
     // Seed §5.2: one iteration cannot find the crossings; the default can.
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
-    let one = trim
-        .clone()
-        .with_settings(NewtonSettings { max_iterations: 1, epsilon: 0.001 });
+    let one = trim.clone().with_settings(NewtonSettings {
+        max_iterations: 1,
+        epsilon: 0.001,
+    });
     assert!(misclassified(100, 0.005, &one, in_cubic) > 100);
     assert_eq!(misclassified(100, 0.005, &trim, in_cubic), 0);
 }
@@ -306,7 +339,10 @@ fn iteration_and_epsilon_table() {
     for iterations in [2, 3, 4, 5, 6, 7, 10] {
         table.push_str(&format!("{iterations:>10} |"));
         for epsilon in epsilons {
-            let t = trim.clone().with_settings(NewtonSettings { max_iterations: iterations, epsilon });
+            let t = trim.clone().with_settings(NewtonSettings {
+                max_iterations: iterations,
+                epsilon,
+            });
             let wrong = misclassified(100, 0.0, &t, in_cubic);
             if epsilon == 0.001 {
                 worst_at_default_epsilon.push(wrong);
@@ -317,7 +353,10 @@ fn iteration_and_epsilon_table() {
         table.push('\n');
     }
     // More iterations never hurt at the seed's ε.
-    assert!(worst_at_default_epsilon.windows(2).all(|w| w[1] <= w[0]), "{table}");
+    assert!(
+        worst_at_default_epsilon.windows(2).all(|w| w[1] <= w[0]),
+        "{table}"
+    );
     insta::assert_snapshot!(table);
 }
 
@@ -325,9 +364,10 @@ fn iteration_and_epsilon_table() {
 #[test]
 fn cubic_trim_at_three_and_ten_iterations() {
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
-    let three = trim
-        .clone()
-        .with_settings(NewtonSettings { max_iterations: 3, epsilon: 0.001 });
+    let three = trim.clone().with_settings(NewtonSettings {
+        max_iterations: 3,
+        epsilon: 0.001,
+    });
     let art = format!(
         "3 iterations:\n{}\n10 iterations:\n{}",
         common::ascii_trim(32, |p| three.trims(p)),
@@ -345,7 +385,10 @@ fn check_figure(name: &str, trim: &dyn Trim) {
         name,
         &picture,
         common::image_path(name),
-        testkit::image::Tolerance { channel: 2.0 / 255.0, mismatched_fraction: 0.001 },
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.001,
+        },
     );
 }
 
@@ -356,17 +399,26 @@ fn figure_circle() {
 
 #[test]
 fn figure_rectangle() {
-    check_figure("trim_rectangle", &IntervalTrim::new(uv(0.2, 0.35), uv(0.8, 0.65)).unwrap());
+    check_figure(
+        "trim_rectangle",
+        &IntervalTrim::new(uv(0.2, 0.35), uv(0.8, 0.65)).unwrap(),
+    );
 }
 
 #[test]
 fn figure_ellipse() {
-    check_figure("trim_ellipse", &EllipseTrim::new(uv(0.5, 0.5), uv(0.3, 0.15)).unwrap());
+    check_figure(
+        "trim_ellipse",
+        &EllipseTrim::new(uv(0.5, 0.5), uv(0.3, 0.15)).unwrap(),
+    );
 }
 
 #[test]
 fn figure_quadratic_newton() {
-    check_figure("trim_newton_quadratic", &NewtonTrim::quadratic(QUADRATIC).unwrap());
+    check_figure(
+        "trim_newton_quadratic",
+        &NewtonTrim::quadratic(QUADRATIC).unwrap(),
+    );
 }
 
 #[test]
@@ -380,4 +432,3 @@ fn figure_nested_newton() {
     let inner = NewtonTrim::quadratic(INNER).unwrap();
     check_figure("trim_newton_nested", &NestedNewtonTrim::new(outer, inner));
 }
-

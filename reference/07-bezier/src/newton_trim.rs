@@ -302,7 +302,10 @@ fn bernstein_sum(points: &[DVec2], t: f64) -> DVec2 {
 /// `C'(t) = n Σ B_{i,n−1}(t) (P_{i+1} − P_i)`.
 fn derivative_sum(points: &[DVec2], t: f64) -> DVec2 {
     let n = points.len() - 1;
-    let differences: Vec<DVec2> = points.windows(2).map(|w| (w[1] - w[0]) * n as f64).collect();
+    let differences: Vec<DVec2> = points
+        .windows(2)
+        .map(|w| (w[1] - w[0]) * n as f64)
+        .collect();
     bernstein_sum(&differences, t)
 }
 // END SOLUTION

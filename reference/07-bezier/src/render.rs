@@ -122,7 +122,9 @@ pub fn render_surface(
     // BEGIN SOLUTION render: check the level; sample the grid; project; two triangles per cell; discard trimmed, shade the rest
     let level = settings.tess_level;
     if !(1..=MAX_TESS_LEVEL).contains(&level) {
-        return Err(BezierError::InvalidSetting("tess_level must be in 1 ..= 64"));
+        return Err(BezierError::InvalidSetting(
+            "tess_level must be in 1 ..= 64",
+        ));
     }
     let l = f64::from(level);
     let n = level as usize + 1;
@@ -131,9 +133,10 @@ pub fn render_surface(
         for j in 0..n {
             let uv = DVec2::new(i as f64 / l, j as f64 / l);
             let sample = surface(uv)?;
-            let screen = settings
-                .camera
-                .to_screen(sample.position, canvas.width(), canvas.height());
+            let screen =
+                settings
+                    .camera
+                    .to_screen(sample.position, canvas.width(), canvas.height());
             grid.push(screen.map(|screen| RasterVertex {
                 screen,
                 uv,

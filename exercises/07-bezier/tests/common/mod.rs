@@ -54,7 +54,10 @@ pub fn derivative3(points: &[DVec3], t: f64) -> DVec3 {
     if n == 0 {
         return DVec3::ZERO;
     }
-    let d: Vec<DVec3> = points.windows(2).map(|w| (w[1] - w[0]) * n as f64).collect();
+    let d: Vec<DVec3> = points
+        .windows(2)
+        .map(|w| (w[1] - w[0]) * n as f64)
+        .collect();
     curve3(&d, t)
 }
 
@@ -83,8 +86,16 @@ pub fn surface_partials_def(net: &ControlNet, uv: DVec2) -> [DVec3; 2] {
                 if n == 0 {
                     return 0.0;
                 }
-                let left = if i > 0 { bernstein_def(i - 1, n - 1, t) } else { 0.0 };
-                let right = if i < n { bernstein_def(i, n - 1, t) } else { 0.0 };
+                let left = if i > 0 {
+                    bernstein_def(i - 1, n - 1, t)
+                } else {
+                    0.0
+                };
+                let right = if i < n {
+                    bernstein_def(i, n - 1, t)
+                } else {
+                    0.0
+                };
                 n as f64 * (left - right)
             };
             du += p * db(i, n, uv.x) * bernstein_def(j, m, uv.y);
@@ -164,7 +175,12 @@ pub fn trim_figure(trim: &dyn Trim) -> Canvas {
     let light = DVec3::new(0.3, 1.0, 0.6).normalize();
     for i in 0..LEVEL {
         for j in 0..LEVEL {
-            let c = [vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)];
+            let c = [
+                vertex(i, j),
+                vertex(i + 1, j),
+                vertex(i + 1, j + 1),
+                vertex(i, j + 1),
+            ];
             for [p, q, r] in [[0, 1, 2], [0, 2, 3]] {
                 if let (Some(a), Some(b), Some(c)) = (c[p], c[q], c[r]) {
                     rasterize_triangle(&mut canvas, [a, b, c], |f| {
