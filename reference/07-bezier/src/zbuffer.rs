@@ -51,7 +51,8 @@ impl Camera {
         let s = r.cross(f);
         let d = world - self.eye;
         let z = f.dot(d);
-        if !(z >= Self::NEAR) {
+        // NaN fails this test too.
+        if z.is_nan() || z < Self::NEAR {
             return None;
         }
         let scale = (self.fov_y_degrees.to_radians() * 0.5).tan();
