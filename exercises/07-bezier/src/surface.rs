@@ -13,6 +13,10 @@
 //! in the other direction. The order does not matter (the double sum can
 //! be summed in either order); the seed reduces in u first.
 //!
+//! Every iso-parameter line `u = const` or `v = const` is a Bézier curve
+//! (the seed's §2.4 says "Bézier surfaces" there, a slip), its control
+//! points the reduced points of the first step.
+//!
 //! The penultimate step of the second reduction gives the derivative in
 //! that direction: reducing in v last gives `∂P/∂v`, reducing in u last
 //! gives `∂P/∂u`. The unit normal is `N = (∂P/∂u × ∂P/∂v) / |…|`
@@ -75,6 +79,12 @@ pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 /// ```
 ///
 /// Degree 0 in a direction gives a zero derivative in it.
+///
+/// The seed's Listing 5 takes its second tangent from the first pass,
+/// where each u-curve of the net overwrites it: it ends as the tangent of
+/// the last control row's curve (`gl_in[12..15]`), not `∂P/∂u` at
+/// (u, v), and `tangU`/`tangV` are named the other way round. Hence the
+/// two reductions here.
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].

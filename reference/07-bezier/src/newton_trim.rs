@@ -71,7 +71,8 @@ pub struct NewtonRoot {
 }
 
 /// Newton's method `x_{k+1} = x_k − f(x_k) / f'(x_k)` (seed eq. 15,
-/// Listing 10) from `start`.
+/// Listing 10) from `start`. (The seed's legend calls `x_{n+1}` "the
+/// previous approximation"; it is the next one.)
 ///
 /// Each step computes `h = f(x)/f'(x)` and `x ← x − h`; the method returns
 /// right after the first step with `|h| < epsilon` (`converged`), or after
