@@ -106,8 +106,9 @@ pub fn newton(
 /// iterations therefore leave points near the apex untrimmed — the
 /// notches of the seed's Fig. 30. The seed's §3.2.1 lists both sign
 /// cases (3 and 4); its shader (Listing 11) tests only `x₁ > 0 ∧ x₂ < 0`.
-/// `curve` must hold 3 or 4 finite points (not checked here: the trims
-/// below check it); a NaN `uv` is never inside.
+/// The seed uses quadratic and cubic curves (3 or 4 points, as the trims
+/// below check); any other length is evaluated the same way. An empty
+/// curve, a non-finite point or a non-finite `uv` is never inside.
 #[must_use]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
     todo!(

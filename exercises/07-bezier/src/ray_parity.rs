@@ -127,8 +127,9 @@ impl Trim for TrimRegion {
 /// "above"). For an open curve that is `[start side ≠ end side]` when the
 /// whole curve is right of `a`.
 ///
-/// `points` must be 1 to `MAX_DEGREE + 1` finite points ([`TrimLoop`]
-/// checks that); `a` must be finite.
+/// An empty curve, or a point or `a` that is not finite (or so large
+/// that `p − a` overflows), is never crossed: `false`, so that the
+/// subdivision never runs on NaN.
 #[must_use]
 pub fn crossing_parity(points: &[DVec2], a: DVec2) -> bool {
     todo!(

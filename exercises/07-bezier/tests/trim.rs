@@ -432,3 +432,19 @@ fn figure_nested_newton() {
     let inner = NewtonTrim::quadratic(INNER).unwrap();
     check_figure("trim_newton_nested", &NestedNewtonTrim::new(outer, inner));
 }
+
+#[test]
+fn hostile_curves_are_never_inside() {
+    let s = NewtonSettings::default();
+    assert!(!between_crossings(&[], uv(0.5, 0.5), s));
+    assert!(!between_crossings(&[uv(0.5, 0.5)], uv(0.5, 0.5), s));
+    let nan = [QUADRATIC[0], uv(f64::NAN, 0.9), QUADRATIC[2]];
+    assert!(!between_crossings(&nan, uv(0.5, 0.6), s));
+    let arch = [QUADRATIC[0], QUADRATIC[1], QUADRATIC[2]];
+    assert!(!between_crossings(&arch, uv(f64::INFINITY, 0.6), s));
+    let nan_settings = NewtonSettings {
+        max_iterations: 10,
+        epsilon: f64::NAN,
+    };
+    assert!(!between_crossings(&arch, uv(0.5, 0.6), nan_settings));
+}

@@ -251,3 +251,25 @@ proptest! {
         prop_assert_eq!(region(vec![curves]).contains(map(q)), in_parabola(q));
     }
 }
+
+#[test]
+fn hostile_curves_never_hang_or_panic() {
+    let a = p(0.0, 0.0);
+    assert!(!crossing_parity(&[], a));
+    assert!(!crossing_parity(&[p(f64::NAN, 1.0), p(1.0, -1.0)], a));
+    assert!(!crossing_parity(
+        &[p(1.0, 1.0), p(1.0, -1.0)],
+        p(f64::NAN, 0.0)
+    ));
+    assert!(!crossing_parity(
+        &[p(-f64::MAX, 1.0), p(f64::MAX, -1.0)],
+        p(f64::MAX, 0.0)
+    ));
+    // Huge but finite: halving never overflows.
+    let huge = [
+        p(-f64::MAX, -f64::MAX),
+        p(f64::MAX, f64::MAX),
+        p(f64::MAX, -f64::MAX),
+    ];
+    let _either_way = crossing_parity(&huge, a);
+}

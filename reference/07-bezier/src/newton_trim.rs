@@ -129,11 +129,15 @@ pub fn newton(
 /// iterations therefore leave points near the apex untrimmed — the
 /// notches of the seed's Fig. 30. The seed's §3.2.1 lists both sign
 /// cases (3 and 4); its shader (Listing 11) tests only `x₁ > 0 ∧ x₂ < 0`.
-/// `curve` must hold 3 or 4 finite points (not checked here: the trims
-/// below check it); a NaN `uv` is never inside.
+/// The seed uses quadratic and cubic curves (3 or 4 points, as the trims
+/// below check); any other length is evaluated the same way. An empty
+/// curve, a non-finite point or a non-finite `uv` is never inside.
 #[must_use]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
     // BEGIN SOLUTION trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs
+    if curve.is_empty() || !uv.is_finite() || !curve.iter().all(|p| p.is_finite()) {
+        return false;
+    }
     let v = |t: f64| bernstein_sum(curve, t).y - uv.y;
     let dv = |t: f64| derivative_sum(curve, t).y;
     let r1 = newton(v, dv, 1.0, settings);
@@ -288,7 +292,7 @@ impl Trim for NestedNewtonTrim {
 
 // BEGIN SOLUTION
 /// `C(t) = Σ B_{i,n}(t) P_i` for any real `t` (Newton may step outside
-/// `[0, 1]`); `n ≤ 3` here.
+/// `[0, 1]`); `points` is not empty.
 fn bernstein_sum(points: &[DVec2], t: f64) -> DVec2 {
     let n = points.len() - 1;
     let mut sum = DVec2::ZERO;
@@ -303,6 +307,9 @@ fn bernstein_sum(points: &[DVec2], t: f64) -> DVec2 {
 /// `C'(t) = n Σ B_{i,n−1}(t) (P_{i+1} − P_i)`.
 fn derivative_sum(points: &[DVec2], t: f64) -> DVec2 {
     let n = points.len() - 1;
+    if n == 0 {
+        return DVec2::ZERO;
+    }
     let differences: Vec<DVec2> = points
         .windows(2)
         .map(|w| (w[1] - w[0]) * n as f64)

@@ -133,12 +133,16 @@ impl Trim for TrimRegion {
 /// "above"). For an open curve that is `[start side ≠ end side]` when the
 /// whole curve is right of `a`.
 ///
-/// `points` must be 1 to `MAX_DEGREE + 1` finite points ([`TrimLoop`]
-/// checks that); `a` must be finite.
+/// An empty curve, or a point or `a` that is not finite (or so large
+/// that `p − a` overflows), is never crossed: `false`, so that the
+/// subdivision never runs on NaN.
 #[must_use]
 pub fn crossing_parity(points: &[DVec2], a: DVec2) -> bool {
     // BEGIN SOLUTION trim_loop: shift so a is the origin; classify by the convex hull; split at ½ where undecided
     let shifted: Vec<DVec2> = points.iter().map(|&p| p - a).collect();
+    if shifted.is_empty() || !shifted.iter().all(|p| p.is_finite()) {
+        return false;
+    }
     parity_of_piece(&shifted, 0)
     // END SOLUTION
 }
@@ -178,7 +182,8 @@ fn halves(b: &[DVec2]) -> (Vec<DVec2>, Vec<DVec2>) {
     right.push(work[n]);
     for r in (1..=n).rev() {
         for i in 0..r {
-            work[i] = (work[i] + work[i + 1]) * 0.5;
+            // Halve before adding: finite points stay finite.
+            work[i] = work[i] * 0.5 + work[i + 1] * 0.5;
         }
         left.push(work[0]);
         right.push(work[r - 1]);
