@@ -24,7 +24,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::basics::{BezierError, check_parameter};
+use crate::basics::{BezierError, MAX_DEGREE, check_parameter};
 use crate::control_net::ControlNet;
 
 /// Below this ratio `|∂u × ∂v| / (|∂u| · |∂v|)` (the sine of the angle

@@ -24,7 +24,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::basics::{BezierError, check_parameter};
+use crate::basics::{BezierError, MAX_DEGREE, check_parameter};
 use crate::control_net::ControlNet;
 
 /// Below this ratio `|∂u × ∂v| / (|∂u| · |∂v|)` (the sine of the angle
@@ -59,10 +59,17 @@ pub struct SurfacePoint {
 pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each column at u; de Casteljau the results at v
     check_uv(uv)?;
-    let mut along_v: Vec<DVec3> = (0..net.n_v())
-        .map(|j| reduce(&mut net.column(j), uv.x).point)
-        .collect();
-    Ok(reduce(&mut along_v, uv.y).point)
+    let (n_u, n_v) = (net.n_u(), net.n_v());
+    // Stack buffers: no allocation per surface point.
+    let mut along_v = [DVec3::ZERO; MAX_POINTS];
+    let mut column = [DVec3::ZERO; MAX_POINTS];
+    for (j, q) in along_v[..n_v].iter_mut().enumerate() {
+        for (i, c) in column[..n_u].iter_mut().enumerate() {
+            *c = net.point(i, j);
+        }
+        *q = reduce(&mut column[..n_u], uv.x).point;
+    }
+    Ok(reduce(&mut along_v[..n_v], uv.y).point)
     // END SOLUTION
 }
 
@@ -75,10 +82,9 @@ pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each row at v; de Casteljau the results at u
     check_uv(uv)?;
-    let mut along_u: Vec<DVec3> = (0..net.n_u())
-        .map(|i| reduce(&mut net.row(i).to_vec(), uv.y).point)
-        .collect();
-    Ok(reduce(&mut along_u, uv.x).point)
+    let mut along_u = [DVec3::ZERO; MAX_POINTS];
+    reduce_rows(net, uv.y, &mut along_u);
+    Ok(reduce(&mut along_u[..net.n_u()], uv.x).point)
     // END SOLUTION
 }
 
@@ -103,14 +109,19 @@ pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, BezierError> {
     // BEGIN SOLUTION surface: reduce rows at v then at u (keep n·(r1 − r0)); columns at u then at v (keep m·(q1 − q0))
     check_uv(uv)?;
-    let mut rows: Vec<DVec3> = (0..net.n_u())
-        .map(|i| reduce(&mut net.row(i).to_vec(), uv.y).point)
-        .collect();
-    let in_u = reduce(&mut rows, uv.x);
-    let mut columns: Vec<DVec3> = (0..net.n_v())
-        .map(|j| reduce(&mut net.column(j), uv.x).point)
-        .collect();
-    let in_v = reduce(&mut columns, uv.y);
+    let (n_u, n_v) = (net.n_u(), net.n_v());
+    let mut rows = [DVec3::ZERO; MAX_POINTS];
+    reduce_rows(net, uv.y, &mut rows);
+    let in_u = reduce(&mut rows[..n_u], uv.x);
+    let mut columns = [DVec3::ZERO; MAX_POINTS];
+    let mut column = [DVec3::ZERO; MAX_POINTS];
+    for (j, q) in columns[..n_v].iter_mut().enumerate() {
+        for (i, c) in column[..n_u].iter_mut().enumerate() {
+            *c = net.point(i, j);
+        }
+        *q = reduce(&mut column[..n_u], uv.x).point;
+    }
+    let in_v = reduce(&mut columns[..n_v], uv.y);
     Ok(SurfacePoint {
         position: in_u.point,
         du: in_u.derivative,
@@ -153,6 +164,18 @@ pub fn normal(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
 }
 
 // BEGIN SOLUTION
+/// The most control points in one direction.
+const MAX_POINTS: usize = MAX_DEGREE + 1;
+
+/// Reduces every row (v-curve) of the net at `v` into `out[..n_u]`.
+fn reduce_rows(net: &ControlNet, v: f64, out: &mut [DVec3; MAX_POINTS]) {
+    let mut row = [DVec3::ZERO; MAX_POINTS];
+    for (i, r) in out[..net.n_u()].iter_mut().enumerate() {
+        row[..net.n_v()].copy_from_slice(net.row(i));
+        *r = reduce(&mut row[..net.n_v()], v).point;
+    }
+}
+
 /// One de Casteljau reduction of `b` at `t`, in place, with the derivative
 /// from the penultimate step.
 fn reduce(b: &mut [DVec3], t: f64) -> Reduced {
