@@ -1,0 +1,178 @@
+//! Task 1: Bernstein polynomials, binomial coefficients and the Bernstein
+//! form of a curve (seed 000, §2.2–2.3).
+
+mod common;
+
+use bezier::bernstein::{bernstein, bernstein_basis, bernstein_curve, binomial};
+use bezier::{BezierError, MAX_DEGREE};
+use glam::{DVec2, DVec3};
+use proptest::prelude::*;
+
+#[test]
+fn binomial_matches_pascals_triangle_up_to_the_degree_limit() {
+    for n in 0..=MAX_DEGREE {
+        for i in 0..=n {
+            assert_eq!(
+                binomial(n, i),
+                Ok(common::pascal(n, i) as f64),
+                "C({n}, {i})"
+            );
+        }
+    }
+}
+
+#[test]
+fn cubic_basis_is_the_seeds_weight_functions() {
+    // Seed eq. (2): (1 − t)³, 3t(1 − t)², 3t²(1 − t), t³.
+    for k in 0..=16 {
+        let t = f64::from(k) / 16.0; // dyadic: every product below is exact
+        let s = 1.0 - t;
+        let expected = [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t];
+        assert_eq!(bernstein_basis(3, t).unwrap(), expected, "t = {t}");
+    }
+}
+
+#[test]
+fn known_values_and_the_ends() {
+    assert_eq!(bernstein(1, 2, 0.5), Ok(0.5));
+    assert_eq!(bernstein(0, 3, 0.5), Ok(0.125));
+    assert_eq!(bernstein(2, 4, 0.5), Ok(6.0 / 16.0));
+    assert_eq!(bernstein(0, 0, 0.3), Ok(1.0));
+    for n in 0..=6 {
+        for i in 0..=n {
+            let at_0 = if i == 0 { 1.0 } else { 0.0 };
+            let at_1 = if i == n { 1.0 } else { 0.0 };
+            assert_eq!(bernstein(i, n, 0.0), Ok(at_0), "B_{i},{n}(0)");
+            assert_eq!(bernstein(i, n, 1.0), Ok(at_1), "B_{i},{n}(1)");
+        }
+    }
+}
+
+#[test]
+fn the_seeds_one_minus_i_would_be_wrong() {
+    // Eq. (3) as printed, C(n,i) tⁱ (1 − i)ⁿ⁻ⁱ, gives B_{0,2}(0.5) = 1 and
+    // B_{1,2}(0.5) = 0; the basis with (1 − t) gives ¼ and ½.
+    assert_eq!(bernstein(0, 2, 0.5), Ok(0.25));
+    assert_eq!(bernstein(1, 2, 0.5), Ok(0.5));
+}
+
+#[test]
+fn quadratic_and_cubic_curves_follow_seed_equations_1_and_2() {
+    let p = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 2.0),
+        DVec2::new(3.0, 2.0),
+        DVec2::new(4.0, 0.0),
+    ];
+    for k in 0..=8 {
+        let t = f64::from(k) / 8.0;
+        let s = 1.0 - t;
+        let quadratic = p[0] * (s * s) + p[1] * (2.0 * t * s) + p[2] * (t * t);
+        let cubic = p[0] * (s * s * s)
+            + p[1] * (3.0 * t * s * s)
+            + p[2] * (3.0 * t * t * s)
+            + p[3] * (t * t * t);
+        assert!(
+            bernstein_curve(&p[..3], t)
+                .unwrap()
+                .abs_diff_eq(quadratic, 1e-14)
+        );
+        assert!(bernstein_curve(&p, t).unwrap().abs_diff_eq(cubic, 1e-14));
+    }
+    // The curve passes through its end points exactly.
+    assert_eq!(bernstein_curve(&p, 0.0), Ok(p[0]));
+    assert_eq!(bernstein_curve(&p, 1.0), Ok(p[3]));
+}
+
+#[test]
+fn scalar_curves_work_too() {
+    // Σ B_{i,n}(t) · i/n = t: the Bernstein form reproduces linear functions.
+    let points: Vec<f64> = (0..=7).map(|i| f64::from(i) / 7.0).collect();
+    for k in 0..=10 {
+        let t = f64::from(k) / 10.0;
+        let p = bernstein_curve(&points, t).unwrap();
+        assert!((p - t).abs() < 1e-14, "t = {t}: {p}");
+    }
+}
+
+#[test]
+fn invalid_input_is_a_clear_error() {
+    let too_high = MAX_DEGREE + 1;
+    assert_eq!(
+        binomial(3, 4),
+        Err(BezierError::IndexAboveDegree { i: 4, n: 3 })
+    );
+    assert_eq!(
+        binomial(too_high, 1),
+        Err(BezierError::DegreeTooHigh {
+            degree: too_high,
+            max: MAX_DEGREE
+        })
+    );
+    assert!(matches!(
+        bernstein(4, 3, 0.5),
+        Err(BezierError::IndexAboveDegree { .. })
+    ));
+    assert!(matches!(
+        bernstein(0, too_high, 0.5),
+        Err(BezierError::DegreeTooHigh { .. })
+    ));
+    for t in [f64::NAN, -0.1, 1.1, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(
+            matches!(
+                bernstein(1, 3, t),
+                Err(BezierError::ParameterOutOfRange { name: "t", .. })
+            ),
+            "t = {t}"
+        );
+        assert!(bernstein_basis(3, t).is_err(), "t = {t}");
+    }
+    assert_eq!(bernstein_curve::<DVec2>(&[], 0.5), Err(BezierError::Empty));
+    let nan = [DVec3::ZERO, DVec3::new(0.0, f64::NAN, 0.0)];
+    assert_eq!(
+        bernstein_curve(&nan, 0.5),
+        Err(BezierError::NonFinitePoint { index: 1 })
+    );
+    let long = vec![DVec2::ONE; MAX_DEGREE + 2];
+    assert!(matches!(
+        bernstein_curve(&long, 0.5),
+        Err(BezierError::DegreeTooHigh { .. })
+    ));
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn basis_is_non_negative_and_sums_to_one(n in 0..=MAX_DEGREE, t in 0.0..=1.0_f64) {
+        let basis = bernstein_basis(n, t).unwrap();
+        prop_assert_eq!(basis.len(), n + 1);
+        prop_assert!(basis.iter().all(|&b| b >= 0.0));
+        let sum: f64 = basis.iter().sum();
+        prop_assert!((sum - 1.0).abs() < 1e-12, "sum {}", sum);
+    }
+
+    #[test]
+    fn bernstein_matches_its_definition(n in 0..=MAX_DEGREE, i in 0..=MAX_DEGREE, t in 0.0..=1.0_f64) {
+        prop_assume!(i <= n);
+        let b = bernstein(i, n, t).unwrap();
+        let expected = common::bernstein_def(i, n, t);
+        prop_assert!((b - expected).abs() <= 1e-12 * expected.max(1e-300).max(1.0), "{} vs {}", b, expected);
+    }
+
+    #[test]
+    fn curve_points_lie_in_the_convex_hull(
+        points in prop::collection::vec((-100.0..100.0_f64, -100.0..100.0_f64), 1..12),
+        t in 0.0..=1.0_f64,
+    ) {
+        let points: Vec<DVec2> = points.into_iter().map(|(x, y)| DVec2::new(x, y)).collect();
+        let p = bernstein_curve(&points, t).unwrap();
+        // Support test: no direction sees the point beyond every control point.
+        for k in 0..32 {
+            let a = f64::from(k) * std::f64::consts::TAU / 32.0;
+            let d = DVec2::new(a.cos(), a.sin());
+            let reach = points.iter().map(|q| q.dot(d)).fold(f64::NEG_INFINITY, f64::max);
+            prop_assert!(p.dot(d) <= reach + 1e-9);
+        }
+    }
+}

@@ -1,0 +1,219 @@
+//! What the tests compare with: Bézier curves and surfaces by their
+//! definition (Pascal's triangle and the double Bernstein sum, no de
+//! Casteljau), exact trim regions, and the picture of a trimmed surface
+//! drawn with the given rasterizer — not by the algorithms you write.
+#![allow(dead_code)] // each test file uses a different part
+
+use bezier::render::{SurfaceSample, checker};
+use bezier::zbuffer::{Camera, RasterVertex, rasterize_triangle};
+use bezier::{ControlNet, Trim};
+use canvas::{Canvas, Rgba};
+use glam::{DVec2, DVec3};
+
+/// `C(n, i)` from Pascal's triangle, in integers.
+pub fn pascal(n: usize, i: usize) -> u64 {
+    let mut row = vec![1_u64];
+    for _ in 0..n {
+        let mut next = vec![1_u64; row.len() + 1];
+        for k in 1..row.len() {
+            next[k] = row[k - 1] + row[k];
+        }
+        row = next;
+    }
+    row[i]
+}
+
+/// `B_{i,n}(t)` by its definition, for any real `t`.
+pub fn bernstein_def(i: usize, n: usize, t: f64) -> f64 {
+    pascal(n, i) as f64 * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
+}
+
+/// `Σ B_{i,n}(t) P_i` for 2-D points.
+pub fn curve2(points: &[DVec2], t: f64) -> DVec2 {
+    let n = points.len() - 1;
+    points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| p * bernstein_def(i, n, t))
+        .sum()
+}
+
+/// `Σ B_{i,n}(t) P_i` for 3-D points.
+pub fn curve3(points: &[DVec3], t: f64) -> DVec3 {
+    let n = points.len() - 1;
+    points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| p * bernstein_def(i, n, t))
+        .sum()
+}
+
+/// The hodograph: `P'(t) = n Σ B_{i,n−1}(t) (P_{i+1} − P_i)`.
+pub fn derivative3(points: &[DVec3], t: f64) -> DVec3 {
+    let n = points.len() - 1;
+    if n == 0 {
+        return DVec3::ZERO;
+    }
+    let d: Vec<DVec3> = points
+        .windows(2)
+        .map(|w| (w[1] - w[0]) * n as f64)
+        .collect();
+    curve3(&d, t)
+}
+
+/// Seed eq. (10): `Σ_i Σ_j B_{i,n}(u) B_{j,m}(v) P_{i,j}`.
+pub fn surface_def(net: &ControlNet, uv: DVec2) -> DVec3 {
+    let (n, m) = (net.degree_u(), net.degree_v());
+    let mut sum = DVec3::ZERO;
+    for i in 0..=n {
+        for j in 0..=m {
+            sum += net.point(i, j) * bernstein_def(i, n, uv.x) * bernstein_def(j, m, uv.y);
+        }
+    }
+    sum
+}
+
+/// `∂P/∂u` and `∂P/∂v` by differentiating eq. (10) term by term.
+pub fn surface_partials_def(net: &ControlNet, uv: DVec2) -> [DVec3; 2] {
+    let (n, m) = (net.degree_u(), net.degree_v());
+    let mut du = DVec3::ZERO;
+    let mut dv = DVec3::ZERO;
+    for i in 0..=n {
+        for j in 0..=m {
+            let p = net.point(i, j);
+            // d/dt B_{i,n}(t) = n (B_{i−1,n−1}(t) − B_{i,n−1}(t)).
+            let db = |i: usize, n: usize, t: f64| {
+                if n == 0 {
+                    return 0.0;
+                }
+                let left = if i > 0 {
+                    bernstein_def(i - 1, n - 1, t)
+                } else {
+                    0.0
+                };
+                let right = if i < n {
+                    bernstein_def(i, n - 1, t)
+                } else {
+                    0.0
+                };
+                n as f64 * (left - right)
+            };
+            du += p * db(i, n, uv.x) * bernstein_def(j, m, uv.y);
+            dv += p * bernstein_def(i, n, uv.x) * db(j, m, uv.y);
+        }
+    }
+    [du, dv]
+}
+
+/// The surface sample the render task draws: eq. (10) and the normalised
+/// cross product of the partial derivatives.
+pub fn sample_def(net: &ControlNet, uv: DVec2) -> SurfaceSample {
+    let [du, dv] = surface_partials_def(net, uv);
+    SurfaceSample {
+        position: surface_def(net, uv),
+        normal: du.cross(dv).normalize_or_zero(),
+    }
+}
+
+/// The camera of all pictures: above and in front of the seed's hill.
+pub const FIGURE_CAMERA: Camera = Camera {
+    eye: DVec3::new(0.0, 1.6, 1.3),
+    target: DVec3::new(0.0, 0.1, 0.0),
+    up: DVec3::Y,
+    fov_y_degrees: 40.0,
+};
+
+/// The size of the trim pictures.
+pub const FIGURE_SIZE: [u32; 2] = [200, 150];
+
+/// The background of the pictures.
+pub const BACKGROUND: Rgba = Rgba::rgb(0.15, 0.2, 0.3);
+
+/// Trims nothing.
+pub struct NoTrim;
+
+impl Trim for NoTrim {
+    fn trims(&self, _uv: DVec2) -> bool {
+        false
+    }
+}
+
+/// A test's own disc trim (the render task must not depend on the trim task).
+pub struct Disc {
+    pub centre: DVec2,
+    pub radius: f64,
+}
+
+impl Trim for Disc {
+    fn trims(&self, uv: DVec2) -> bool {
+        uv.distance(self.centre) < self.radius
+    }
+}
+
+/// The seed's hill (Fig. 14) with `trim` cut away, drawn by test code:
+/// a 48 × 48 grid, the given rasterizer, diffuse light from above-front
+/// on the checker texture, so that the trim figures do not depend on the
+/// render task.
+pub fn trim_figure(trim: &dyn Trim) -> Canvas {
+    const LEVEL: usize = 48;
+    let [w, h] = FIGURE_SIZE;
+    let net = ControlNet::seed_hill();
+    let mut canvas = Canvas::new(w, h);
+    canvas.clear(BACKGROUND);
+    let vertex = |i: usize, j: usize| {
+        let uv = DVec2::new(i as f64, j as f64) / LEVEL as f64;
+        let s = sample_def(&net, uv);
+        FIGURE_CAMERA
+            .to_screen(s.position, w, h)
+            .map(|screen| RasterVertex {
+                screen,
+                uv,
+                world: s.position,
+                normal: s.normal,
+            })
+    };
+    let light = DVec3::new(0.3, 1.0, 0.6).normalize();
+    for i in 0..LEVEL {
+        for j in 0..LEVEL {
+            let c = [
+                vertex(i, j),
+                vertex(i + 1, j),
+                vertex(i + 1, j + 1),
+                vertex(i, j + 1),
+            ];
+            for [p, q, r] in [[0, 1, 2], [0, 2, 3]] {
+                if let (Some(a), Some(b), Some(c)) = (c[p], c[q], c[r]) {
+                    rasterize_triangle(&mut canvas, [a, b, c], |f| {
+                        let uv = f.uv.clamp(DVec2::ZERO, DVec2::ONE);
+                        if trim.trims(uv) {
+                            return None;
+                        }
+                        let lambert = f.normal.normalize_or_zero().dot(light).abs();
+                        let colour = checker(uv) * (0.25 + 0.75 * lambert);
+                        Some(Rgba::rgb(colour.x as f32, colour.y as f32, colour.z as f32))
+                    });
+                }
+            }
+        }
+    }
+    canvas
+}
+
+/// The parameter square as ASCII art, `size × size` samples at cell
+/// centres, top row first (v up): `#` trimmed, `.` kept.
+pub fn ascii_trim(size: usize, trimmed: impl Fn(DVec2) -> bool) -> String {
+    let mut out = String::new();
+    for row in (0..size).rev() {
+        for col in 0..size {
+            let uv = DVec2::new(col as f64 + 0.5, row as f64 + 0.5) / size as f64;
+            out.push(if trimmed(uv) { '#' } else { '.' });
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Path of a committed reference picture.
+pub fn image_path(name: &str) -> String {
+    format!("{}/tests/images/{name}.png", env!("CARGO_MANIFEST_DIR"))
+}

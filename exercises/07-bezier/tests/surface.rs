@@ -1,0 +1,233 @@
+//! Task 3: tensor-product Bézier surfaces — de Casteljau in u then v and v
+//! then u, partial derivatives, the unit normal (seed 000, §2.4–2.5,
+//! Listings 4–6).
+
+mod common;
+
+use bezier::surface::{evaluate_u_then_v, evaluate_v_then_u, normal, partial_derivatives};
+use bezier::{BezierError, ControlNet};
+use glam::{DMat3, DVec2, DVec3};
+use proptest::prelude::*;
+
+fn uv(u: f64, v: f64) -> DVec2 {
+    DVec2::new(u, v)
+}
+
+/// A bilinear-in-the-grid 3 × 2 net in the plane z = 0 with P_{i,j} = (i, 2 j, 0).
+fn plane_net() -> ControlNet {
+    let mut points = Vec::new();
+    for i in 0..3 {
+        for j in 0..2 {
+            points.push(DVec3::new(f64::from(i), 2.0 * f64::from(j), 0.0));
+        }
+    }
+    ControlNet::new(3, 2, points).unwrap()
+}
+
+#[test]
+fn a_plane_grid_reproduces_its_parameters() {
+    // P(u, v) = (2u, 2v, 0): Bernstein linear precision in both directions.
+    let net = plane_net();
+    for (u, v) in [(0.0, 0.0), (0.25, 0.5), (1.0, 0.75), (0.5, 1.0)] {
+        let expected = DVec3::new(2.0 * u, 2.0 * v, 0.0);
+        assert!(
+            evaluate_u_then_v(&net, uv(u, v))
+                .unwrap()
+                .abs_diff_eq(expected, 1e-15)
+        );
+        assert!(
+            evaluate_v_then_u(&net, uv(u, v))
+                .unwrap()
+                .abs_diff_eq(expected, 1e-15)
+        );
+        let p = partial_derivatives(&net, uv(u, v)).unwrap();
+        assert!(p.position.abs_diff_eq(expected, 1e-15));
+        assert!(
+            p.du.abs_diff_eq(DVec3::new(2.0, 0.0, 0.0), 1e-15),
+            "{}",
+            p.du
+        );
+        assert!(
+            p.dv.abs_diff_eq(DVec3::new(0.0, 2.0, 0.0), 1e-15),
+            "{}",
+            p.dv
+        );
+        assert!(normal(&net, uv(u, v)).unwrap().abs_diff_eq(DVec3::Z, 1e-15));
+    }
+}
+
+#[test]
+fn corners_are_the_corner_control_points() {
+    let net = ControlNet::seed_hill();
+    for (u, v, i, j) in [
+        (0.0, 0.0, 0, 0),
+        (1.0, 0.0, 3, 0),
+        (0.0, 1.0, 0, 3),
+        (1.0, 1.0, 3, 3),
+    ] {
+        assert_eq!(evaluate_u_then_v(&net, uv(u, v)), Ok(net.point(i, j)));
+        assert_eq!(evaluate_v_then_u(&net, uv(u, v)), Ok(net.point(i, j)));
+    }
+}
+
+#[test]
+fn the_seed_hill_at_its_centre() {
+    // Inner points at height ½, the rest at 0: P(½, ½).y = ½ · (B₁₃ + B₂₃)(½)² = ½ · (¾)².
+    let net = ControlNet::seed_hill();
+    let centre = evaluate_u_then_v(&net, uv(0.5, 0.5)).unwrap();
+    assert!(
+        centre.abs_diff_eq(DVec3::new(0.0, 0.5 * 0.75 * 0.75, 0.0), 1e-15),
+        "{centre}"
+    );
+    // By symmetry the top of the hill is flat and the normal points up.
+    let n = normal(&net, uv(0.5, 0.5)).unwrap();
+    assert!(n.abs_diff_eq(DVec3::Y, 1e-15), "{n}");
+}
+
+/// ```text
+///   v ↑  P03=P13=P23  (the top edge collapsed to the apex (1, 2, 0))
+///     │     /  |  \
+///     │  P00  P10  P20   → u
+/// ```
+fn collapsed_net() -> ControlNet {
+    let apex = DVec3::new(1.0, 2.0, 0.0);
+    let mut points = Vec::new();
+    for i in 0..3 {
+        points.push(DVec3::new(f64::from(i), 0.0, 0.0));
+        points.push(apex);
+    }
+    ControlNet::new(3, 2, points).unwrap()
+}
+
+#[test]
+fn normal_at_a_collapsed_edge_falls_back_to_its_limit() {
+    // The patch is a flat triangle in z = 0, so every normal is +Z; at the
+    // apex ∂P/∂u = 0 and the cross product vanishes.
+    let net = collapsed_net();
+    let p = partial_derivatives(&net, uv(0.0, 1.0)).unwrap();
+    assert_eq!(p.du, DVec3::ZERO);
+    for at in [uv(0.0, 1.0), uv(0.5, 1.0), uv(1.0, 1.0), uv(0.3, 0.2)] {
+        let n = normal(&net, at).unwrap();
+        assert!(n.abs_diff_eq(DVec3::Z, 1e-9), "at {at}: {n}");
+    }
+}
+
+#[test]
+fn a_net_collapsed_to_a_line_has_no_normal() {
+    let points = (0..4).map(|k| DVec3::new(f64::from(k), 0.0, 0.0)).collect();
+    let net = ControlNet::new(2, 2, points).unwrap();
+    assert_eq!(
+        normal(&net, uv(0.5, 0.5)),
+        Err(BezierError::DegenerateNormal { u: 0.5, v: 0.5 })
+    );
+}
+
+#[test]
+fn invalid_input_is_a_clear_error() {
+    let net = ControlNet::seed_hill();
+    for bad in [
+        uv(f64::NAN, 0.5),
+        uv(0.5, -0.1),
+        uv(1.5, 0.5),
+        uv(0.5, f64::INFINITY),
+    ] {
+        assert!(matches!(
+            evaluate_u_then_v(&net, bad),
+            Err(BezierError::ParameterOutOfRange { .. })
+        ));
+        assert!(evaluate_v_then_u(&net, bad).is_err());
+        assert!(partial_derivatives(&net, bad).is_err());
+        assert!(normal(&net, bad).is_err());
+    }
+    // The net checks itself (given code): these nets never reach your functions.
+    assert_eq!(ControlNet::new(0, 3, vec![]), Err(BezierError::Empty));
+    assert!(matches!(
+        ControlNet::new(2, 2, vec![DVec3::ZERO; 3]),
+        Err(BezierError::NetShape {
+            expected: 4,
+            got: 3,
+            ..
+        })
+    ));
+    assert!(matches!(
+        ControlNet::new(34, 1, vec![DVec3::ZERO; 34]),
+        Err(BezierError::DegreeTooHigh { degree: 33, .. })
+    ));
+    let mut points = vec![DVec3::ZERO; 4];
+    points[2].y = f64::NAN;
+    assert_eq!(
+        ControlNet::new(2, 2, points),
+        Err(BezierError::NonFinitePoint { index: 2 })
+    );
+}
+
+fn nets() -> impl Strategy<Value = ControlNet> {
+    (1..=5_usize, 1..=5_usize).prop_flat_map(|(n_u, n_v)| {
+        prop::collection::vec(
+            (-10.0..10.0_f64, -10.0..10.0_f64, -10.0..10.0_f64)
+                .prop_map(|(x, y, z)| DVec3::new(x, y, z)),
+            n_u * n_v,
+        )
+        .prop_map(move |points| ControlNet::new(n_u, n_v, points).unwrap())
+    })
+}
+
+fn unit() -> impl Strategy<Value = f64> {
+    0.0..=1.0_f64
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[test]
+    fn order_does_not_matter_and_both_equal_the_double_sum(net in nets(), u in unit(), v in unit()) {
+        let a = evaluate_u_then_v(&net, uv(u, v)).unwrap();
+        let b = evaluate_v_then_u(&net, uv(u, v)).unwrap();
+        let expected = common::surface_def(&net, uv(u, v));
+        prop_assert!(a.abs_diff_eq(b, 1e-12), "{} vs {}", a, b);
+        prop_assert!(a.abs_diff_eq(expected, 1e-12), "{} vs {}", a, expected);
+    }
+
+    #[test]
+    fn partial_derivatives_equal_the_differentiated_sum(net in nets(), u in unit(), v in unit()) {
+        let p = partial_derivatives(&net, uv(u, v)).unwrap();
+        let [du, dv] = common::surface_partials_def(&net, uv(u, v));
+        prop_assert!(p.position.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12));
+        prop_assert!(p.du.abs_diff_eq(du, 1e-10), "{} vs {}", p.du, du);
+        prop_assert!(p.dv.abs_diff_eq(dv, 1e-10), "{} vs {}", p.dv, dv);
+    }
+
+    #[test]
+    fn normal_is_unit_and_perpendicular_to_both_derivatives(net in nets(), u in unit(), v in unit()) {
+        if let Ok(n) = normal(&net, uv(u, v)) {
+            prop_assert!((n.length() - 1.0).abs() < 1e-12);
+            let [du, dv] = common::surface_partials_def(&net, uv(u, v));
+            let cross = du.cross(dv);
+            if cross.length() > 1e-6 * du.length() * dv.length() {
+                prop_assert!(n.abs_diff_eq(cross.normalize(), 1e-8), "{} vs {}", n, cross.normalize());
+            }
+        }
+    }
+
+    #[test]
+    fn surface_points_lie_in_the_convex_hull(net in nets(), u in unit(), v in unit()) {
+        let p = evaluate_u_then_v(&net, uv(u, v)).unwrap();
+        let lo = net.points().iter().fold(DVec3::INFINITY, |m, &q| m.min(q));
+        let hi = net.points().iter().fold(DVec3::NEG_INFINITY, |m, &q| m.max(q));
+        prop_assert!(p.cmpge(lo - 1e-12).all() && p.cmple(hi + 1e-12).all());
+    }
+
+    #[test]
+    fn affine_maps_commute_with_evaluation(
+        net in nets(), u in unit(), v in unit(),
+        m in prop::array::uniform9(-2.0..2.0_f64),
+        shift in prop::array::uniform3(-50.0..50.0_f64),
+    ) {
+        let a = DMat3::from_cols_array(&m);
+        let b = DVec3::from_array(shift);
+        let mapped = net.map(|p| a * p + b).unwrap();
+        let lhs = evaluate_v_then_u(&mapped, uv(u, v)).unwrap();
+        let rhs = a * evaluate_v_then_u(&net, uv(u, v)).unwrap() + b;
+        prop_assert!(lhs.abs_diff_eq(rhs, 1e-9), "{} vs {}", lhs, rhs);
+    }
+}
