@@ -7,14 +7,14 @@
 //! Conventions: the canvas's (pixel centres at integers, y up). The view
 //! turns the mesh by `yaw` about the z axis, then tilts it by `pitch` about
 //! the x axis, and looks down the −z axis of the result; the mesh is scaled
-//! to fill [`FILL`] of the smaller canvas side.
+//! so that its picture fills [`FILL`] of the smaller canvas side.
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::mesh::Mesh;
 
-/// The part of the canvas the mesh's bounding circle fills.
+/// The part of the canvas the larger side of the turned mesh's bounding rectangle fills.
 pub const FILL: f64 = 0.9;
 /// Light direction in view space (towards the light), normalised at use.
 pub const LIGHT: DVec3 = DVec3::new(-0.4, 0.5, 1.0);
@@ -63,16 +63,19 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     if finite.is_empty() || w == 0 || h == 0 {
         return canvas;
     }
-    let (lo, hi) = finite
+    // Fit the turned mesh's bounding rectangle into the canvas.
+    let turned: Vec<DVec3> = finite.iter().map(|&p| rotation * p).collect();
+    let (lo, hi) = turned
         .iter()
-        .fold((finite[0], finite[0]), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+        .fold((turned[0], turned[0]), |(lo, hi), &p| (lo.min(p), hi.max(p)));
     let centre = (lo + hi) / 2.0;
-    let radius = (hi - lo).length().max(f64::MIN_POSITIVE) / 2.0;
-    let scale = FILL * w.min(h) as f64 / (2.0 * radius);
+    let extent = (hi - lo).truncate().max_element().max(f64::MIN_POSITIVE);
+    let radius = (hi - lo).length() / 2.0;
+    let scale = FILL * w.min(h) as f64 / extent;
     let screen_centre = DVec2::new((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
     // Screen x, y in pixels; z grows towards the viewer.
     let project = |p: DVec3| {
-        let q = rotation * (p - centre);
+        let q = rotation * p - centre;
         DVec3::new(screen_centre.x + scale * q.x, screen_centre.y + scale * q.y, q.z)
     };
     let screen: Vec<DVec3> = mesh.positions.iter().map(|&p| project(p)).collect();
