@@ -134,3 +134,23 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn multi_patch_surface_matches_the_reference_image() {
+    // Every patch of the example grid at the same 8 × 8 cells: neighbours
+    // share their boundary points because they share the resolution.
+    let grid = tessellation::patch_grid::PatchGrid::example();
+    let mut all = tessellation::mesh::Mesh::new();
+    for row in 0..grid.rows() {
+        for col in 0..grid.cols() {
+            let part = tessellate_uniform(grid.patch(row, col), 8, 8).unwrap();
+            let offset = all.vertex_count() as u32;
+            all.positions.extend(&part.positions);
+            all.normals.extend(&part.normals);
+            all.uvs.extend(&part.uvs);
+            all.triangles.extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+        }
+    }
+    let view = tessellation::render::View { yaw: 0.5, pitch: -0.9 };
+    assert_picture("uniform_example", &all, view, Style::ShadedWireframe);
+}
