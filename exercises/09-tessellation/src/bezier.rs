@@ -85,7 +85,11 @@ impl BezierPatch {
     /// [`TessError::Degree`] above [`MAX_DEGREE`], [`TessError::ControlGrid`]
     /// for a wrong number of points, [`TessError::NonFinite`] for a NaN or
     /// infinite coordinate.
-    pub fn try_new(degree_u: usize, degree_v: usize, points: Vec<DVec3>) -> Result<Self, TessError> {
+    pub fn try_new(
+        degree_u: usize,
+        degree_v: usize,
+        points: Vec<DVec3>,
+    ) -> Result<Self, TessError> {
         for degree in [degree_u, degree_v] {
             if degree > MAX_DEGREE {
                 return Err(TessError::Degree(degree));
@@ -158,7 +162,10 @@ impl BezierPatch {
     /// If `i` or `j` is out of range.
     #[must_use]
     pub fn control_point(&self, i: usize, j: usize) -> DVec3 {
-        assert!(i <= self.degree_u && j <= self.degree_v, "control point out of range");
+        assert!(
+            i <= self.degree_u && j <= self.degree_v,
+            "control point out of range"
+        );
         self.points[i * (self.degree_v + 1) + j]
     }
 
@@ -171,13 +178,17 @@ impl BezierPatch {
     /// The control polygon of row `i` (fixed `i`, `j = 0..=q`): a curve in `v`.
     #[must_use]
     pub fn row(&self, i: usize) -> Vec<DVec3> {
-        (0..=self.degree_v).map(|j| self.control_point(i, j)).collect()
+        (0..=self.degree_v)
+            .map(|j| self.control_point(i, j))
+            .collect()
     }
 
     /// The control polygon of column `j` (fixed `j`, `i = 0..=p`): a curve in `u`.
     #[must_use]
     pub fn column(&self, j: usize) -> Vec<DVec3> {
-        (0..=self.degree_u).map(|i| self.control_point(i, j)).collect()
+        (0..=self.degree_u)
+            .map(|i| self.control_point(i, j))
+            .collect()
     }
 
     /// `S(u, v)` and the tangents `S_u`, `S_v`: de Casteljau in `v` along

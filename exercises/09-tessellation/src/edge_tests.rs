@@ -106,7 +106,11 @@ impl EdgeTest {
     /// # Errors
     /// [`TessError::NotPositive`] naming the first bad threshold.
     pub fn validate(&self) -> Result<(), TessError> {
-        match self.thresholds().into_iter().find(|t| !(t.is_finite() && *t > 0.0)) {
+        match self
+            .thresholds()
+            .into_iter()
+            .find(|t| !(t.is_finite() && *t > 0.0))
+        {
             Some(value) => Err(TessError::NotPositive {
                 what: "an edge test threshold",
                 value,

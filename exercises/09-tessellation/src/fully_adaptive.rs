@@ -32,8 +32,6 @@
 
 use std::collections::HashMap;
 
-
-
 use crate::bezier::{BezierPatch, SurfacePoint};
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
@@ -66,6 +64,11 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// [`TessError::NotPositive`] for a bad threshold,
 /// [`TessError::Resolution`] for `max_depth` above [`MAX_DEPTH`], or when
 /// the refinement would exceed [`MAX_TRIANGLES`].
-pub fn refine(patch: &BezierPatch, initial: &Mesh, test: EdgeTest, max_depth: u32) -> Result<Mesh, TessError> {
+pub fn refine(
+    patch: &BezierPatch,
+    initial: &Mesh,
+    test: EdgeTest,
+    max_depth: u32,
+) -> Result<Mesh, TessError> {
     todo!("fully_adaptive: the seed's work list, a generation at a time, edges decided once")
 }

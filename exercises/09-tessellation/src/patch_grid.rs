@@ -67,7 +67,9 @@ impl PatchGrid {
             .max(1.0);
         let same = |a: &[DVec3], b: &[DVec3]| {
             a.len() == b.len()
-                && a.iter().zip(b).all(|(x, y)| x.distance(*y) <= CONTINUITY_TOLERANCE * size)
+                && a.iter()
+                    .zip(b)
+                    .all(|(x, y)| x.distance(*y) <= CONTINUITY_TOLERANCE * size)
         };
         let grid = Self {
             rows,
@@ -78,7 +80,10 @@ impl PatchGrid {
             for col in 0..cols {
                 let patch = grid.patch(row, col);
                 if col + 1 < cols
-                    && !same(&patch.row(patch.degree_u()), &grid.patch(row, col + 1).row(0))
+                    && !same(
+                        &patch.row(patch.degree_u()),
+                        &grid.patch(row, col + 1).row(0),
+                    )
                 {
                     return Err(TessError::NotContinuous {
                         row,
@@ -87,7 +92,10 @@ impl PatchGrid {
                     });
                 }
                 if row + 1 < rows
-                    && !same(&patch.column(patch.degree_v()), &grid.patch(row + 1, col).column(0))
+                    && !same(
+                        &patch.column(patch.degree_v()),
+                        &grid.patch(row + 1, col).column(0),
+                    )
                 {
                     return Err(TessError::NotContinuous {
                         row,
@@ -112,7 +120,10 @@ impl PatchGrid {
             0.1 * x + 0.8 * (-((x - 1.5).powi(2) + (y - 1.5).powi(2)) / 0.15).exp()
         };
         let point = |a: usize, b: usize| {
-            let (x, y) = (2.0 * a as f64 / (LATTICE - 1) as f64, 2.0 * b as f64 / (LATTICE - 1) as f64);
+            let (x, y) = (
+                2.0 * a as f64 / (LATTICE - 1) as f64,
+                2.0 * b as f64 / (LATTICE - 1) as f64,
+            );
             DVec3::new(x, y, height(x, y))
         };
         let mut patches = Vec::new();

@@ -59,15 +59,20 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     canvas.clear(BACKGROUND);
     let (w, h) = (canvas.width() as usize, canvas.height() as usize);
     let rotation = DMat3::from_rotation_x(view.pitch) * DMat3::from_rotation_z(view.yaw);
-    let finite: Vec<DVec3> = mesh.positions.iter().copied().filter(|p| p.is_finite()).collect();
+    let finite: Vec<DVec3> = mesh
+        .positions
+        .iter()
+        .copied()
+        .filter(|p| p.is_finite())
+        .collect();
     if finite.is_empty() || w == 0 || h == 0 {
         return canvas;
     }
     // Fit the turned mesh's bounding rectangle into the canvas.
     let turned: Vec<DVec3> = finite.iter().map(|&p| rotation * p).collect();
-    let (lo, hi) = turned
-        .iter()
-        .fold((turned[0], turned[0]), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    let (lo, hi) = turned.iter().fold((turned[0], turned[0]), |(lo, hi), &p| {
+        (lo.min(p), hi.max(p))
+    });
     let centre = (lo + hi) / 2.0;
     let extent = (hi - lo).truncate().max_element().max(f64::MIN_POSITIVE);
     let radius = (hi - lo).length() / 2.0;
@@ -76,7 +81,11 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     // Screen x, y in pixels; z grows towards the viewer.
     let project = |p: DVec3| {
         let q = rotation * p - centre;
-        DVec3::new(screen_centre.x + scale * q.x, screen_centre.y + scale * q.y, q.z)
+        DVec3::new(
+            screen_centre.x + scale * q.x,
+            screen_centre.y + scale * q.y,
+            q.z,
+        )
     };
     let screen: Vec<DVec3> = mesh.positions.iter().map(|&p| project(p)).collect();
     let normals: Vec<DVec3> = mesh.normals.iter().map(|&n| rotation * n).collect();
@@ -84,7 +93,9 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     let mut depth = vec![f64::NEG_INFINITY; w * h];
     let mut shade = vec![None; w * h];
     for tri in &mesh.triangles {
-        let Some([a, b, c]) = fetch(&screen, *tri) else { continue };
+        let Some([a, b, c]) = fetch(&screen, *tri) else {
+            continue;
+        };
         let [na, nb, nc] = fetch(&normals, *tri).unwrap_or([DVec3::Z; 3]);
         let area = edge(a, b, c);
         if area.abs() < f64::EPSILON {
@@ -100,7 +111,11 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
         for y in y0..=y1 as usize {
             for x in x0..=x1 as usize {
                 let p = DVec3::new(x as f64, y as f64, 0.0);
-                let (wa, wb, wc) = (edge(b, c, p) / area, edge(c, a, p) / area, edge(a, b, p) / area);
+                let (wa, wb, wc) = (
+                    edge(b, c, p) / area,
+                    edge(c, a, p) / area,
+                    edge(a, b, p) / area,
+                );
                 if wa < 0.0 || wb < 0.0 || wc < 0.0 {
                     continue;
                 }
@@ -125,9 +140,18 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     }
     if style != Style::Shaded {
         for tri in &mesh.triangles {
-            let Some(corners) = fetch(&screen, *tri) else { continue };
+            let Some(corners) = fetch(&screen, *tri) else {
+                continue;
+            };
             for e in 0..3 {
-                wire(&mut canvas, &depth, w, WIRE_DEPTH_BIAS * radius, corners[e], corners[(e + 1) % 3]);
+                wire(
+                    &mut canvas,
+                    &depth,
+                    w,
+                    WIRE_DEPTH_BIAS * radius,
+                    corners[e],
+                    corners[(e + 1) % 3],
+                );
             }
         }
     }
@@ -150,7 +174,11 @@ fn wire(canvas: &mut Canvas, depth: &[f64], w: usize, bias: f64, a: DVec3, b: DV
     let h = depth.len() / w;
     let steps = (b.x - a.x).abs().max((b.y - a.y).abs()).ceil().min(1e5) as usize;
     for s in 0..=steps {
-        let t = if steps == 0 { 0.0 } else { s as f64 / steps as f64 };
+        let t = if steps == 0 {
+            0.0
+        } else {
+            s as f64 / steps as f64
+        };
         let p = a.lerp(b, t);
         let (x, y) = (p.x.round(), p.y.round());
         if x < 0.0 || y < 0.0 || x >= w as f64 || y >= h as f64 {

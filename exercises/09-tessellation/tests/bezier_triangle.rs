@@ -63,11 +63,20 @@ fn edges_are_cubic_bezier_curves() {
     let t = lumpy();
     for s in [0.0, 0.2, 0.5, 0.9] {
         let w0 = de_casteljau(&[t.b030, t.b120, t.b210, t.b300], s).0;
-        assert!(evaluate(&t, [s, 1.0 - s, 0.0]).distance(w0) < EXACT, "w = 0 at u = {s}");
+        assert!(
+            evaluate(&t, [s, 1.0 - s, 0.0]).distance(w0) < EXACT,
+            "w = 0 at u = {s}"
+        );
         let u0 = de_casteljau(&[t.b003, t.b012, t.b021, t.b030], s).0;
-        assert!(evaluate(&t, [0.0, s, 1.0 - s]).distance(u0) < EXACT, "u = 0 at v = {s}");
+        assert!(
+            evaluate(&t, [0.0, s, 1.0 - s]).distance(u0) < EXACT,
+            "u = 0 at v = {s}"
+        );
         let v0 = de_casteljau(&[t.b300, t.b201, t.b102, t.b003], s).0;
-        assert!(evaluate(&t, [1.0 - s, 0.0, s]).distance(v0) < EXACT, "v = 0 at w = {s}");
+        assert!(
+            evaluate(&t, [1.0 - s, 0.0, s]).distance(v0) < EXACT,
+            "v = 0 at w = {s}"
+        );
     }
 }
 
@@ -85,7 +94,11 @@ fn centre_weighs_b111_six_twentysevenths() {
 fn flat_triangle_with_face_normals_stays_flat() {
     // Normals equal to the face normal: every w_ij is 0, the edge points
     // are the thirds, E = V and b111 = V: the linear control points.
-    let (p1, p2, p3) = (DVec3::new(0.0, 0.0, 1.0), DVec3::new(3.0, 0.0, 1.0), DVec3::new(1.0, 2.0, 1.0));
+    let (p1, p2, p3) = (
+        DVec3::new(0.0, 0.0, 1.0),
+        DVec3::new(3.0, 0.0, 1.0),
+        DVec3::new(1.0, 2.0, 1.0),
+    );
     let pn = pn_triangle([p1, p2, p3], [DVec3::Z * 5.0; 3]).unwrap();
     let expected = linear(p1, p2, p3);
     for (a, b) in [
@@ -101,19 +114,33 @@ fn flat_triangle_with_face_normals_stays_flat() {
 
 #[test]
 fn pn_triangle_interpolates_vertices_and_normals() {
-    let positions = [DVec3::new(1.0, 0.0, 0.0), DVec3::new(0.0, 1.0, 0.0), DVec3::new(0.0, 0.0, 1.0)];
+    let positions = [
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(0.0, 0.0, 1.0),
+    ];
     let pn = pn_triangle(positions, positions).unwrap();
     let mesh = tessellate_pn(&pn, &lattice_domain(6));
     let domain = lattice_domain(6);
     for (k, b) in domain.points.iter().enumerate() {
         for corner in 0..3 {
             if b[corner] == 1.0 {
-                assert!(mesh.positions[k].distance(positions[corner]) < EXACT, "vertex {corner}");
-                assert!(mesh.normals[k].distance(positions[corner]) < EXACT, "normal {corner}");
+                assert!(
+                    mesh.positions[k].distance(positions[corner]) < EXACT,
+                    "vertex {corner}"
+                );
+                assert!(
+                    mesh.normals[k].distance(positions[corner]) < EXACT,
+                    "normal {corner}"
+                );
             }
         }
-        let expected_normal = (b[0] * positions[0] + b[1] * positions[1] + b[2] * positions[2]).normalize();
-        assert!(mesh.normals[k].distance(expected_normal) < EXACT, "normals are interpolated linearly");
+        let expected_normal =
+            (b[0] * positions[0] + b[1] * positions[1] + b[2] * positions[2]).normalize();
+        assert!(
+            mesh.normals[k].distance(expected_normal) < EXACT,
+            "normals are interpolated linearly"
+        );
         assert_eq!(mesh.uvs[k].to_array(), [b[0], b[1]]);
     }
     assert_eq!(mesh.triangles, domain.triangles);
@@ -131,7 +158,11 @@ fn pn_octant_bulges_towards_the_sphere() {
     let positions = [DVec3::X, DVec3::Y, DVec3::Z];
     let pn = pn_triangle(positions, positions).unwrap();
     let g = pn.geometry;
-    assert!(g.b021.distance(DVec3::new(0.0, 1.0, 1.0 / 3.0)) < EXACT, "{}", g.b021);
+    assert!(
+        g.b021.distance(DVec3::new(0.0, 1.0, 1.0 / 3.0)) < EXACT,
+        "{}",
+        g.b021
+    );
     assert!(g.b111.distance(DVec3::splat(0.5)) < EXACT, "{}", g.b111);
     assert!(evaluate(&g, [0.0, 0.5, 0.5]).distance(DVec3::new(0.0, 0.625, 0.625)) < EXACT);
     assert!(evaluate(&g, [1.0 / 3.0; 3]).distance(DVec3::splat(4.0 / 9.0)) < EXACT);
@@ -140,7 +171,10 @@ fn pn_octant_bulges_towards_the_sphere() {
     let mesh = tessellate_pn(&pn, &domain);
     for (p, b) in mesh.positions.iter().zip(&domain.points) {
         let flat = b[0] * DVec3::X + b[1] * DVec3::Y + b[2] * DVec3::Z;
-        assert!(p.length() >= flat.length() - EXACT && p.length() <= 1.0 + EXACT, "{p} at {b:?}");
+        assert!(
+            p.length() >= flat.length() - EXACT && p.length() <= 1.0 + EXACT,
+            "{p} at {b:?}"
+        );
     }
 }
 
@@ -148,10 +182,19 @@ fn pn_octant_bulges_towards_the_sphere() {
 fn zero_or_non_finite_input_is_an_error() {
     let positions = [DVec3::X, DVec3::Y, DVec3::Z];
     let zero = [DVec3::X, DVec3::ZERO, DVec3::Z];
-    assert!(matches!(pn_triangle(positions, zero), Err(TessError::NonFinite { .. })));
+    assert!(matches!(
+        pn_triangle(positions, zero),
+        Err(TessError::NonFinite { .. })
+    ));
     let nan = [DVec3::X, DVec3::new(f64::NAN, 0.0, 0.0), DVec3::Z];
-    assert!(matches!(pn_triangle(nan, positions), Err(TessError::NonFinite { .. })));
-    assert!(matches!(pn_triangle(positions, nan), Err(TessError::NonFinite { .. })));
+    assert!(matches!(
+        pn_triangle(nan, positions),
+        Err(TessError::NonFinite { .. })
+    ));
+    assert!(matches!(
+        pn_triangle(positions, nan),
+        Err(TessError::NonFinite { .. })
+    ));
 }
 
 #[test]
@@ -163,17 +206,31 @@ fn pn_sphere_matches_the_reference_image() {
     for k in 0..4 {
         for pole in [DVec3::Z, -DVec3::Z] {
             let (a, b) = (axes[k], axes[(k + 1) % 4]);
-            let corners = if pole.z > 0.0 { [a, b, pole] } else { [b, a, pole] };
+            let corners = if pole.z > 0.0 {
+                [a, b, pole]
+            } else {
+                [b, a, pole]
+            };
             let part = tessellate_pn(&pn_triangle(corners, corners).unwrap(), &domain);
             let offset = sphere.vertex_count() as u32;
             sphere.positions.extend(&part.positions);
             sphere.normals.extend(&part.normals);
             sphere.uvs.extend(&part.uvs);
-            sphere.triangles.extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+            sphere
+                .triangles
+                .extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
         }
     }
-    let view = View { yaw: 0.4, pitch: -1.1 };
-    assert_picture("bezier_triangle_pn_sphere", &sphere, view, Style::ShadedWireframe);
+    let view = View {
+        yaw: 0.4,
+        pitch: -1.1,
+    };
+    assert_picture(
+        "bezier_triangle_pn_sphere",
+        &sphere,
+        view,
+        Style::ShadedWireframe,
+    );
 }
 
 fn point() -> impl Strategy<Value = DVec3> {
@@ -181,12 +238,18 @@ fn point() -> impl Strategy<Value = DVec3> {
 }
 
 fn unit() -> impl Strategy<Value = DVec3> {
-    point().prop_filter("non-zero", |p| p.length() > 0.1).prop_map(DVec3::normalize)
+    point()
+        .prop_filter("non-zero", |p| p.length() > 0.1)
+        .prop_map(DVec3::normalize)
 }
 
 fn barycentric() -> impl Strategy<Value = [f64; 3]> {
     (0.0f64..1.0, 0.0f64..1.0).prop_map(|(a, b)| {
-        let (u, v) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+        let (u, v) = if a + b > 1.0 {
+            (1.0 - a, 1.0 - b)
+        } else {
+            (a, b)
+        };
         [u, v, 1.0 - u - v]
     })
 }

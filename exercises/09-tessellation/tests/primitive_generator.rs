@@ -8,15 +8,23 @@ use common::directed_edges;
 use proptest::prelude::*;
 use tessellation::DVec2;
 use tessellation::primitive_generator::{
-    MAX_TESS_GEN_LEVEL, QuadDomain, Spacing, TriangleDomain, clamp_level, embed, quad_domain, subdivide_edge,
-    triangle_domain,
+    MAX_TESS_GEN_LEVEL, QuadDomain, Spacing, TriangleDomain, clamp_level, embed, quad_domain,
+    subdivide_edge, triangle_domain,
 };
 
-const SPACINGS: [Spacing; 3] = [Spacing::Equal, Spacing::FractionalEven, Spacing::FractionalOdd];
+const SPACINGS: [Spacing; 3] = [
+    Spacing::Equal,
+    Spacing::FractionalEven,
+    Spacing::FractionalOdd,
+];
 const EXACT: f64 = 1e-12;
 
 fn assert_close(yours: &[f64], expected: &[f64], what: &str) {
-    assert_eq!(yours.len(), expected.len(), "{what}: {yours:?} vs {expected:?}");
+    assert_eq!(
+        yours.len(),
+        expected.len(),
+        "{what}: {yours:?} vs {expected:?}"
+    );
     for (a, b) in yours.iter().zip(expected) {
         assert!((a - b).abs() < EXACT, "{what}: {yours:?} vs {expected:?}");
     }
@@ -43,23 +51,55 @@ fn levels_are_clamped_and_rounded_per_spacing() {
         (Odd, 64.0, 63.0, 63),
     ];
     for (spacing, level, f, n) in cases {
-        assert_eq!(clamp_level(level, spacing), (f, n), "{spacing:?} level {level}");
+        assert_eq!(
+            clamp_level(level, spacing),
+            (f, n),
+            "{spacing:?} level {level}"
+        );
     }
     assert_eq!(MAX_TESS_GEN_LEVEL, 64.0);
 }
 
 #[test]
 fn edges_are_subdivided_with_two_short_fractional_segments() {
-    assert_close(&subdivide_edge(4.0, Spacing::Equal), &[0.0, 0.25, 0.5, 0.75, 1.0], "equal 4");
-    assert_close(&subdivide_edge(2.5, Spacing::Equal), &[0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0], "equal 2.5");
+    assert_close(
+        &subdivide_edge(4.0, Spacing::Equal),
+        &[0.0, 0.25, 0.5, 0.75, 1.0],
+        "equal 4",
+    );
+    assert_close(
+        &subdivide_edge(2.5, Spacing::Equal),
+        &[0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0],
+        "equal 2.5",
+    );
     // Even, f = 3: n = 4, two segments of 1/3 and two of (3 − 2)/6 = 1/6.
-    assert_close(&subdivide_edge(3.0, Spacing::FractionalEven), &[0.0, 1.0 / 6.0, 0.5, 5.0 / 6.0, 1.0], "even 3");
+    assert_close(
+        &subdivide_edge(3.0, Spacing::FractionalEven),
+        &[0.0, 1.0 / 6.0, 0.5, 5.0 / 6.0, 1.0],
+        "even 3",
+    );
     // Odd, f = 2: n = 3, one segment of 1/2 and two of (2 − 1)/4 = 1/4.
-    assert_close(&subdivide_edge(2.0, Spacing::FractionalOdd), &[0.0, 0.25, 0.75, 1.0], "odd 2");
+    assert_close(
+        &subdivide_edge(2.0, Spacing::FractionalOdd),
+        &[0.0, 0.25, 0.75, 1.0],
+        "odd 2",
+    );
     // At f = n the fractional spacings are equal spacing.
-    assert_close(&subdivide_edge(5.0, Spacing::FractionalOdd), &subdivide_edge(5.0, Spacing::Equal), "odd 5");
-    assert_close(&subdivide_edge(6.0, Spacing::FractionalEven), &subdivide_edge(6.0, Spacing::Equal), "even 6");
-    assert_close(&subdivide_edge(1.0, Spacing::FractionalOdd), &[0.0, 1.0], "odd 1: not subdivided");
+    assert_close(
+        &subdivide_edge(5.0, Spacing::FractionalOdd),
+        &subdivide_edge(5.0, Spacing::Equal),
+        "odd 5",
+    );
+    assert_close(
+        &subdivide_edge(6.0, Spacing::FractionalEven),
+        &subdivide_edge(6.0, Spacing::Equal),
+        "even 6",
+    );
+    assert_close(
+        &subdivide_edge(1.0, Spacing::FractionalOdd),
+        &[0.0, 1.0],
+        "odd 1: not subdivided",
+    );
 }
 
 #[test]
@@ -69,7 +109,10 @@ fn levels_of_one_give_a_single_quad_or_triangle() {
         assert_eq!(quad.points, [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y]);
         assert_eq!(quad.triangles, [[0, 1, 2], [0, 2, 3]]);
         let tri = triangle_domain(1.0, [1.0, 1.0, 0.9], spacing);
-        assert_eq!(tri.points, [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+        assert_eq!(
+            tri.points,
+            [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+        );
         assert_eq!(tri.triangles, [[0, 1, 2]]);
     }
 }
@@ -78,8 +121,14 @@ fn levels_of_one_give_a_single_quad_or_triangle() {
 fn non_positive_or_nan_outer_levels_discard_the_patch() {
     for spacing in SPACINGS {
         for bad in [0.0, -1.0, f64::NAN] {
-            assert_eq!(quad_domain([3.0, 3.0], [3.0, bad, 3.0, 3.0], spacing), QuadDomain::default());
-            assert_eq!(triangle_domain(3.0, [3.0, 3.0, bad], spacing), TriangleDomain::default());
+            assert_eq!(
+                quad_domain([3.0, 3.0], [3.0, bad, 3.0, 3.0], spacing),
+                QuadDomain::default()
+            );
+            assert_eq!(
+                triangle_domain(3.0, [3.0, 3.0, bad], spacing),
+                TriangleDomain::default()
+            );
         }
     }
 }
@@ -92,7 +141,10 @@ fn equal_quads_of_level_three_are_the_regular_grid() {
     for i in 0..4 {
         for j in 0..4 {
             let p = DVec2::new(i as f64 / 3.0, j as f64 / 3.0);
-            assert!(quad.points.iter().any(|q| q.distance(p) < EXACT), "missing {p}");
+            assert!(
+                quad.points.iter().any(|q| q.distance(p) < EXACT),
+                "missing {p}"
+            );
         }
     }
 }
@@ -102,14 +154,21 @@ fn triangle_of_inner_level_two_has_a_centre_point() {
     // ⌊2/2⌋ = 1 concentric triangle, degenerate to the centroid.
     let tri = triangle_domain(2.0, [1.0; 3], Spacing::Equal);
     assert_eq!((tri.points.len(), tri.triangles.len()), (4, 3));
-    assert!(tri.points.iter().any(|p| p.iter().all(|&x| (x - 1.0 / 3.0).abs() < EXACT)));
+    assert!(
+        tri.points
+            .iter()
+            .any(|p| p.iter().all(|&x| (x - 1.0 / 3.0).abs() < EXACT))
+    );
 }
 
 /// The corner of ring `k` by the specification's construction, computed in
 /// the plane: the intersection of the perpendiculars to the two edges at
 /// a corner, through their points at distance `d` from it.
 fn ring_corner(corner: DVec2, towards1: DVec2, towards2: DVec2, d: f64) -> DVec2 {
-    let (e1, e2) = ((towards1 - corner).normalize(), (towards2 - corner).normalize());
+    let (e1, e2) = (
+        (towards1 - corner).normalize(),
+        (towards2 - corner).normalize(),
+    );
     let side = (towards1 - corner).length();
     // Solve x·e1 = d·side, x·e2 = d·side for x (relative to the corner).
     let det = e1.x * e2.y - e1.y * e2.x;
@@ -123,11 +182,18 @@ fn inner_triangles_follow_the_perpendicular_construction() {
     // d = 2/5 (1 segment: the innermost triangle).
     let tri = triangle_domain(5.0, [5.0; 3], Spacing::Equal);
     let plane: Vec<DVec2> = tri.points.iter().map(|&b| embed(b)).collect();
-    let (a, b, c) = (embed([0.0, 0.0, 1.0]), embed([1.0, 0.0, 0.0]), embed([0.0, 1.0, 0.0]));
+    let (a, b, c) = (
+        embed([0.0, 0.0, 1.0]),
+        embed([1.0, 0.0, 0.0]),
+        embed([0.0, 1.0, 0.0]),
+    );
     for d in [0.2, 0.4] {
         for (corner, p, q) in [(a, b, c), (b, c, a), (c, a, b)] {
             let expected = ring_corner(corner, p, q, d);
-            assert!(plane.iter().any(|x| x.distance(expected) < 1e-12), "no ring corner at {expected} (d = {d})");
+            assert!(
+                plane.iter().any(|x| x.distance(expected) < 1e-12),
+                "no ring corner at {expected} (d = {d})"
+            );
         }
     }
     // 15 outer points, 3·3 on ring 1, 3 on ring 2: 27 points; by Euler's
@@ -143,7 +209,9 @@ fn inner_level_three_makes_corners_at_five_ninths() {
         let mut expected = [2.0 / 9.0; 3];
         expected[k] = 5.0 / 9.0;
         assert!(
-            tri.points.iter().any(|p| p.iter().zip(&expected).all(|(a, b)| (a - b).abs() < EXACT)),
+            tri.points
+                .iter()
+                .any(|p| p.iter().zip(&expected).all(|(a, b)| (a - b).abs() < EXACT)),
             "missing {expected:?}"
         );
     }
@@ -155,8 +223,16 @@ fn fractional_odd_inner_level_one_puts_inner_corners_on_the_edges() {
     // whose two short ones have length ε/2 — the inner corners lie on the
     // outer corners, as the specification warns.
     let tri = triangle_domain(1.0, [2.0, 1.0, 1.0], Spacing::FractionalOdd);
-    let inner_corners = tri.points.iter().filter(|p| p.iter().filter(|&&x| x < 1e-9).count() == 2).count();
-    assert_eq!(inner_corners, 6, "3 outer and 3 inner corners at the triangle's corners: {:?}", tri.points);
+    let inner_corners = tri
+        .points
+        .iter()
+        .filter(|p| p.iter().filter(|&&x| x < 1e-9).count() == 2)
+        .count();
+    assert_eq!(
+        inner_corners, 6,
+        "3 outer and 3 inner corners at the triangle's corners: {:?}",
+        tri.points
+    );
 }
 
 /// Checks that a domain tiles its shape: every triangle counter-clockwise
@@ -180,14 +256,20 @@ fn assert_tiles(
         assert!(signed > -1e-15, "triangle {:?} is clockwise", [a, b, c]);
         total += signed;
     }
-    assert!((total - area).abs() < 1e-9, "areas sum to {total}, not {area}");
+    assert!(
+        (total - area).abs() < 1e-9,
+        "areas sum to {total}, not {area}"
+    );
     let edges = directed_edges(triangles);
     let mut outer = 0;
     for (&(a, b), &n) in &edges {
         assert_eq!(n, 1, "edge {a}→{b} twice in one direction");
         if !edges.contains_key(&(b, a)) {
             let (pa, pb) = (points[a as usize], points[b as usize]);
-            assert!(on_boundary(pa) && on_boundary(pb) && on_boundary((pa + pb) / 2.0), "open edge {pa}–{pb} inside");
+            assert!(
+                on_boundary(pa) && on_boundary(pb) && on_boundary((pa + pb) / 2.0),
+                "open edge {pa}–{pb} inside"
+            );
             outer += 1;
         }
     }
@@ -197,9 +279,14 @@ fn assert_tiles(
     }
     let mut seen: HashMap<(i64, i64), usize> = HashMap::new();
     for p in points {
-        *seen.entry(((p.x * 1e12).round() as i64, (p.y * 1e12).round() as i64)).or_default() += 1;
+        *seen
+            .entry(((p.x * 1e12).round() as i64, (p.y * 1e12).round() as i64))
+            .or_default() += 1;
     }
-    assert!(seen.values().all(|&n| n == 1), "a domain point occurs twice");
+    assert!(
+        seen.values().all(|&n| n == 1),
+        "a domain point occurs twice"
+    );
 }
 
 fn level() -> impl Strategy<Value = f64> {
@@ -207,7 +294,11 @@ fn level() -> impl Strategy<Value = f64> {
 }
 
 fn spacing() -> impl Strategy<Value = Spacing> {
-    prop_oneof![Just(Spacing::Equal), Just(Spacing::FractionalEven), Just(Spacing::FractionalOdd)]
+    prop_oneof![
+        Just(Spacing::Equal),
+        Just(Spacing::FractionalEven),
+        Just(Spacing::FractionalOdd)
+    ]
 }
 
 proptest! {

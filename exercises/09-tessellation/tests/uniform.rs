@@ -3,7 +3,8 @@
 mod common;
 
 use common::{
-    POSITION_TOLERANCE, SEED_VIEW, assert_picture, assert_tiles_rectangle, bernstein_surface, patch_from, unit_plane,
+    POSITION_TOLERANCE, SEED_VIEW, assert_picture, assert_tiles_rectangle, bernstein_surface,
+    patch_from, unit_plane,
 };
 use proptest::prelude::*;
 use tessellation::bezier::{BezierPatch, MAX_RESOLUTION};
@@ -23,7 +24,11 @@ fn grid_of_three_by_two_cells_is_numbered_row_by_row() {
         for i in 0..=3 {
             let uv = DVec2::new(i as f64 / 3.0, j as f64 / 2.0);
             assert_eq!(mesh.uvs[j * 4 + i], uv, "vertex ({i}, {j})");
-            assert_eq!(mesh.positions[j * 4 + i], uv.extend(0.0), "vertex ({i}, {j}) on the plane");
+            assert_eq!(
+                mesh.positions[j * 4 + i],
+                uv.extend(0.0),
+                "vertex ({i}, {j}) on the plane"
+            );
             assert_eq!(mesh.normals[j * 4 + i], DVec3::Z, "normal of the plane");
         }
     }
@@ -46,17 +51,31 @@ fn every_vertex_lies_on_the_surface_with_the_surface_normal() {
     for k in 0..mesh.vertex_count() {
         let uv = mesh.uvs[k];
         let exact = bernstein_surface(&patch, uv);
-        assert!(mesh.positions[k].distance(exact) < POSITION_TOLERANCE, "vertex {k} at {uv}");
+        assert!(
+            mesh.positions[k].distance(exact) < POSITION_TOLERANCE,
+            "vertex {k} at {uv}"
+        );
         // The normal is a unit vector perpendicular to both tangents
         // (central differences, away from the degenerate corner (0, 0)).
         let n = mesh.normals[k];
-        assert!((n.length() - 1.0).abs() < 1e-9, "normal {k} is not a unit vector");
+        assert!(
+            (n.length() - 1.0).abs() < 1e-9,
+            "normal {k} is not a unit vector"
+        );
         if uv.length() > 0.2 {
             let h = 1e-5;
-            let du = bernstein_surface(&patch, uv + DVec2::new(h, 0.0)) - bernstein_surface(&patch, uv - DVec2::new(h, 0.0));
-            let dv = bernstein_surface(&patch, uv + DVec2::new(0.0, h)) - bernstein_surface(&patch, uv - DVec2::new(0.0, h));
-            assert!(n.dot(du.normalize()).abs() < 1e-6 && n.dot(dv.normalize()).abs() < 1e-6, "normal {k} at {uv}");
-            assert!(n.dot(du.cross(dv)) > 0.0, "normal {k} points along S_u × S_v");
+            let du = bernstein_surface(&patch, uv + DVec2::new(h, 0.0))
+                - bernstein_surface(&patch, uv - DVec2::new(h, 0.0));
+            let dv = bernstein_surface(&patch, uv + DVec2::new(0.0, h))
+                - bernstein_surface(&patch, uv - DVec2::new(0.0, h));
+            assert!(
+                n.dot(du.normalize()).abs() < 1e-6 && n.dot(dv.normalize()).abs() < 1e-6,
+                "normal {k} at {uv}"
+            );
+            assert!(
+                n.dot(du.cross(dv)) > 0.0,
+                "normal {k} points along S_u × S_v"
+            );
         }
     }
 }
@@ -64,12 +83,20 @@ fn every_vertex_lies_on_the_surface_with_the_surface_normal() {
 #[test]
 fn bilinear_patch_is_reproduced_exactly() {
     // A twisted bilinear patch: S(u, v) = (1−u)(1−v) P00 + u(1−v) P10 + (1−u)v P01 + uv P11.
-    let corners = [DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.0, 2.0, 1.0), DVec3::new(3.0, 0.0, 1.0), DVec3::new(3.0, 2.0, 0.0)];
+    let corners = [
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(0.0, 2.0, 1.0),
+        DVec3::new(3.0, 0.0, 1.0),
+        DVec3::new(3.0, 2.0, 0.0),
+    ];
     let patch = BezierPatch::try_new(1, 1, corners.to_vec()).unwrap();
     let mesh = tessellate_uniform(&patch, 4, 4).unwrap();
     for (uv, p) in mesh.uvs.iter().zip(&mesh.positions) {
         let (u, v) = (uv.x, uv.y);
-        let exact = (1.0 - u) * (1.0 - v) * corners[0] + (1.0 - u) * v * corners[1] + u * (1.0 - v) * corners[2] + u * v * corners[3];
+        let exact = (1.0 - u) * (1.0 - v) * corners[0]
+            + (1.0 - u) * v * corners[1]
+            + u * (1.0 - v) * corners[2]
+            + u * v * corners[3];
         assert!(p.distance(exact) < 1e-12, "{uv}");
     }
 }
@@ -81,14 +108,23 @@ fn one_cell_is_two_triangles() {
     let mut obj = Vec::new();
     mesh.write_obj(&mut obj).unwrap();
     let obj = String::from_utf8(obj).unwrap();
-    assert!(obj.contains("v 1 1 0\n") && obj.contains("f 1/1/1 2/2/2 4/4/4\n"), "{obj}");
+    assert!(
+        obj.contains("v 1 1 0\n") && obj.contains("f 1/1/1 2/2/2 4/4/4\n"),
+        "{obj}"
+    );
 }
 
 #[test]
 fn zero_and_huge_resolutions_are_errors() {
     let patch = unit_plane();
-    assert_eq!(tessellate_uniform(&patch, 0, 3), Err(TessError::Resolution(0)));
-    assert_eq!(tessellate_uniform(&patch, 3, 0), Err(TessError::Resolution(0)));
+    assert_eq!(
+        tessellate_uniform(&patch, 0, 3),
+        Err(TessError::Resolution(0))
+    );
+    assert_eq!(
+        tessellate_uniform(&patch, 3, 0),
+        Err(TessError::Resolution(0))
+    );
     assert_eq!(
         tessellate_uniform(&patch, MAX_RESOLUTION + 1, 1),
         Err(TessError::Resolution(MAX_RESOLUTION + 1))
@@ -110,7 +146,11 @@ fn seed_surface_wireframe_matches_the_reference_image() {
 /// Random patches of degree 1..=4 × 1..=4 with coordinates in [−5, 5].
 fn any_patch() -> impl Strategy<Value = BezierPatch> {
     (1usize..=4, 1usize..=4).prop_flat_map(|(p, q)| {
-        prop::collection::vec((-5.0f64..5.0, -5.0f64..5.0, -5.0f64..5.0), (p + 1) * (q + 1)).prop_map(move |c| {
+        prop::collection::vec(
+            (-5.0f64..5.0, -5.0f64..5.0, -5.0f64..5.0),
+            (p + 1) * (q + 1),
+        )
+        .prop_map(move |c| {
             patch_from(p, q, |i, j| {
                 let (x, y, z) = c[i * (q + 1) + j];
                 DVec3::new(x, y, z)
@@ -148,9 +188,13 @@ fn multi_patch_surface_matches_the_reference_image() {
             all.positions.extend(&part.positions);
             all.normals.extend(&part.normals);
             all.uvs.extend(&part.uvs);
-            all.triangles.extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+            all.triangles
+                .extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
         }
     }
-    let view = tessellation::render::View { yaw: 0.5, pitch: -0.9 };
+    let view = tessellation::render::View {
+        yaw: 0.5,
+        pitch: -0.9,
+    };
     assert_picture("uniform_example", &all, view, Style::ShadedWireframe);
 }

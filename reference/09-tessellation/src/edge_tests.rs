@@ -106,7 +106,11 @@ impl EdgeTest {
     /// # Errors
     /// [`TessError::NotPositive`] naming the first bad threshold.
     pub fn validate(&self) -> Result<(), TessError> {
-        match self.thresholds().into_iter().find(|t| !(t.is_finite() && *t > 0.0)) {
+        match self
+            .thresholds()
+            .into_iter()
+            .find(|t| !(t.is_finite() && *t > 0.0))
+        {
             Some(value) => Err(TessError::NotPositive {
                 what: "an edge test threshold",
                 value,
@@ -157,7 +161,8 @@ pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
 #[must_use]
 pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: mean of the end and opposite normals against N12
-    let sum = edge.v1.normal + edge.v2.normal + edge.opposite.iter().map(|p| p.normal).sum::<DVec3>();
+    let sum =
+        edge.v1.normal + edge.v2.normal + edge.opposite.iter().map(|p| p.normal).sum::<DVec3>();
     let mean = sum / (2 + edge.opposite.len()) as f64;
     (edge.mid.normal - mean).length() > t3
     // END SOLUTION
@@ -191,7 +196,9 @@ pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
 pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: angle of each sub-chord against the chord
     let (p1, p2, m) = (edge.v1.position, edge.v2.position, edge.mid.position);
-    let Some(chord) = (p2 - p1).try_normalize() else { return false };
+    let Some(chord) = (p2 - p1).try_normalize() else {
+        return false;
+    };
     let deviates = |v: DVec3| v.try_normalize().is_some_and(|v| 1.0 - chord.dot(v) > t1);
     deviates(m - p1) || deviates(p2 - m)
     // END SOLUTION
@@ -208,7 +215,9 @@ pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
 #[must_use]
 pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: the unit edge against both end normals
-    let Some(u) = (edge.v1.position - edge.v2.position).try_normalize() else { return false };
+    let Some(u) = (edge.v1.position - edge.v2.position).try_normalize() else {
+        return false;
+    };
     u.dot(edge.v1.normal).abs() > t1 || u.dot(edge.v2.normal).abs() > t1
     // END SOLUTION
 }

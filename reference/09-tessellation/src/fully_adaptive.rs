@@ -32,8 +32,6 @@
 
 use std::collections::HashMap;
 
-
-
 use crate::bezier::{BezierPatch, SurfacePoint};
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
@@ -66,7 +64,12 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// [`TessError::NotPositive`] for a bad threshold,
 /// [`TessError::Resolution`] for `max_depth` above [`MAX_DEPTH`], or when
 /// the refinement would exceed [`MAX_TRIANGLES`].
-pub fn refine(patch: &BezierPatch, initial: &Mesh, test: EdgeTest, max_depth: u32) -> Result<Mesh, TessError> {
+pub fn refine(
+    patch: &BezierPatch,
+    initial: &Mesh,
+    test: EdgeTest,
+    max_depth: u32,
+) -> Result<Mesh, TessError> {
     // BEGIN SOLUTION fully_adaptive: the seed's work list, a generation at a time, edges decided once
     initial.validate()?;
     test.validate()?;
@@ -101,7 +104,8 @@ pub fn refine(patch: &BezierPatch, initial: &Mesh, test: EdgeTest, max_depth: u3
                 }
                 let level = levels.get(&k).copied().unwrap_or(0);
                 let mid = patch.sample((mesh.uvs[a as usize] + mesh.uvs[b as usize]) / 2.0);
-                let split = level < max_depth && adjacency.context(&mesh, a, b, mid, |edge| test.must_split(edge));
+                let split = level < max_depth
+                    && adjacency.context(&mesh, a, b, mid, |edge| test.must_split(edge));
                 this_round.insert(k, split);
                 if split {
                     new_vertices.push((k, mid));
@@ -124,7 +128,12 @@ pub fn refine(patch: &BezierPatch, initial: &Mesh, test: EdgeTest, max_depth: u3
                 done.push(tri);
                 continue;
             }
-            let level = edges(tri).map(|(a, b)| levels[&key(a, b)]).into_iter().max().unwrap_or(0) + 1;
+            let level = edges(tri)
+                .map(|(a, b)| levels[&key(a, b)])
+                .into_iter()
+                .max()
+                .unwrap_or(0)
+                + 1;
             let children = subdivide(&mesh, tri, splits);
             for child in &children {
                 for (a, b) in edges(*child) {
@@ -167,8 +176,16 @@ fn subdivide(mesh: &Mesh, tri: [u32; 3], splits: [Option<u32>; 3]) -> Vec<[u32; 
             _ => true,
         })
         .unwrap_or(0);
-    let [a, b, c] = [tri[rotation], tri[(rotation + 1) % 3], tri[(rotation + 2) % 3]];
-    let m = [splits[rotation], splits[(rotation + 1) % 3], splits[(rotation + 2) % 3]];
+    let [a, b, c] = [
+        tri[rotation],
+        tri[(rotation + 1) % 3],
+        tri[(rotation + 2) % 3],
+    ];
+    let m = [
+        splits[rotation],
+        splits[(rotation + 1) % 3],
+        splits[(rotation + 2) % 3],
+    ];
     match (count, m) {
         (1, [Some(m0), _, _]) => vec![[a, m0, c], [m0, b, c]],
         (2, [Some(m0), Some(m1), None]) => {
@@ -217,7 +234,14 @@ impl Adjacency {
     }
 
     /// Builds the context of edge `(a, b)` and hands it to `decide`.
-    fn context(&self, mesh: &Mesh, a: u32, b: u32, mid: SurfacePoint, decide: impl Fn(&EdgeContext) -> bool) -> bool {
+    fn context(
+        &self,
+        mesh: &Mesh,
+        a: u32,
+        b: u32,
+        mid: SurfacePoint,
+        decide: impl Fn(&EdgeContext) -> bool,
+    ) -> bool {
         let points = |ids: &[u32]| ids.iter().map(|&i| mesh.vertex(i)).collect::<Vec<_>>();
         let empty = Vec::new();
         let opposite = points(self.opposite.get(&key(a, b)).unwrap_or(&empty));

@@ -88,7 +88,12 @@ impl Mesh {
     /// # Errors
     /// Whatever `out` returns.
     pub fn write_obj(&self, mut out: impl Write) -> io::Result<()> {
-        writeln!(out, "# {} vertices, {} triangles", self.vertex_count(), self.triangle_count())?;
+        writeln!(
+            out,
+            "# {} vertices, {} triangles",
+            self.vertex_count(),
+            self.triangle_count()
+        )?;
         for p in &self.positions {
             writeln!(out, "v {} {} {}", p.x, p.y, p.z)?;
         }
@@ -119,7 +124,11 @@ impl Mesh {
         writeln!(out, "element face {}", self.triangle_count())?;
         writeln!(out, "property list uchar uint vertex_indices\nend_header")?;
         for ((p, n), t) in self.positions.iter().zip(&self.normals).zip(&self.uvs) {
-            writeln!(out, "{} {} {} {} {} {} {} {}", p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y)?;
+            writeln!(
+                out,
+                "{} {} {} {} {} {} {} {}",
+                p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y
+            )?;
         }
         for [a, b, c] in &self.triangles {
             writeln!(out, "3 {a} {b} {c}")?;

@@ -145,7 +145,9 @@ fn sample(grid: &PatchGrid, row: usize, col: usize, local: DVec2) -> SurfacePoin
 
 /// `0, 1/k, …, 1` without rounding drift at the end.
 fn steps(k: usize) -> Vec<f64> {
-    (0..=k).map(|s| if s == k { 1.0 } else { s as f64 / k as f64 }).collect()
+    (0..=k)
+        .map(|s| if s == k { 1.0 } else { s as f64 / k as f64 })
+        .collect()
 }
 // END SOLUTION
 
@@ -223,7 +225,12 @@ pub fn tessellate_patch_grid(grid: &PatchGrid, tolerance: f64) -> Result<Mesh, T
             let inner = |i: usize, j: usize| first + ((j - 1) * (n_u - 1) + (i - 1)) as u32;
             for j in 1..n_v - 1 {
                 for i in 1..n_u - 1 {
-                    let (a, b, cc, d) = (inner(i, j), inner(i + 1, j), inner(i + 1, j + 1), inner(i, j + 1));
+                    let (a, b, cc, d) = (
+                        inner(i, j),
+                        inner(i + 1, j),
+                        inner(i + 1, j + 1),
+                        inner(i, j + 1),
+                    );
                     mesh.triangles.push([a, b, cc]);
                     mesh.triangles.push([a, cc, d]);
                 }
@@ -270,7 +277,13 @@ pub fn tessellate_patch_grid(grid: &PatchGrid, tolerance: f64) -> Result<Mesh, T
                 ),
             ];
             for (outer, outer_keys, inner_ids, inner_keys) in &sides {
-                stitch(outer, outer_keys, inner_ids, inner_keys, &mut mesh.triangles);
+                stitch(
+                    outer,
+                    outer_keys,
+                    inner_ids,
+                    inner_keys,
+                    &mut mesh.triangles,
+                );
             }
         }
     }

@@ -101,7 +101,11 @@ pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
         Spacing::FractionalEven => (2.0, MAX_TESS_GEN_LEVEL),
         Spacing::FractionalOdd => (1.0, MAX_TESS_GEN_LEVEL - 1.0),
     };
-    let f = if level.is_nan() { low } else { level.clamp(low, high) };
+    let f = if level.is_nan() {
+        low
+    } else {
+        level.clamp(low, high)
+    };
     let up = f.ceil() as usize;
     let n = match spacing {
         Spacing::Equal => up,
@@ -123,8 +127,8 @@ pub fn subdivide_edge(level: f64, spacing: Spacing) -> Vec<f64> {
     let mut d: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).collect();
     if spacing != Spacing::Equal && n >= 2 {
         let short = (f - (n - 2) as f64) / (2.0 * f);
-        for i in 1..n {
-            d[i] = short + (i - 1) as f64 / f;
+        for (i, x) in d.iter_mut().enumerate().take(n).skip(1) {
+            *x = short + (i - 1) as f64 / f;
         }
     }
     for i in n / 2 + 1..n {
@@ -160,18 +164,32 @@ pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDo
     }
     let corners = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
     domain.points.extend(corners);
-    let all_one = inner.iter().chain(&outer).all(|&l| clamp_level(l, spacing).1 == 1);
+    let all_one = inner
+        .iter()
+        .chain(&outer)
+        .all(|&l| clamp_level(l, spacing).1 == 1);
     if all_one {
         domain.triangles = vec![[0, 1, 2], [0, 2, 3]];
         return domain;
     }
-    let raise = |l: f64| if clamp_level(l, spacing).1 == 1 { ONE_PLUS_EPSILON } else { l };
+    let raise = |l: f64| {
+        if clamp_level(l, spacing).1 == 1 {
+            ONE_PLUS_EPSILON
+        } else {
+            l
+        }
+    };
     let us = subdivide_edge(raise(inner[0]), spacing);
     let vs = subdivide_edge(raise(inner[1]), spacing);
     let (m_u, m_v) = (us.len() - 1, vs.len() - 1);
     // Outer edges, counter-clockwise: v = 0 (outer[1]), u = 1 (outer[2]),
     // v = 1 (outer[3]), u = 0 (outer[0]); keys run along each side.
-    let sides = [(0, 1, outer[1]), (1, 2, outer[2]), (2, 3, outer[3]), (3, 0, outer[0])];
+    let sides = [
+        (0, 1, outer[1]),
+        (1, 2, outer[2]),
+        (2, 3, outer[3]),
+        (3, 0, outer[0]),
+    ];
     let mut outer_paths = Vec::new();
     for (from, to, level) in sides {
         let d = subdivide_edge(level, spacing);
@@ -203,11 +221,23 @@ pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDo
     let inner_paths = [
         ((1..m_u).map(|i| at(i, 1)).collect::<Vec<_>>(), row.clone()),
         ((1..m_v).map(|j| at(m_u - 1, j)).collect(), column.clone()),
-        ((1..m_u).rev().map(|i| at(i, m_v - 1)).collect(), flip(&row).into_iter().rev().collect()),
-        ((1..m_v).rev().map(|j| at(1, j)).collect(), flip(&column).into_iter().rev().collect()),
+        (
+            (1..m_u).rev().map(|i| at(i, m_v - 1)).collect(),
+            flip(&row).into_iter().rev().collect(),
+        ),
+        (
+            (1..m_v).rev().map(|j| at(1, j)).collect(),
+            flip(&column).into_iter().rev().collect(),
+        ),
     ];
     for ((outer_ids, outer_keys), (inner_ids, inner_keys)) in outer_paths.iter().zip(&inner_paths) {
-        stitch(outer_ids, outer_keys, inner_ids, inner_keys, &mut domain.triangles);
+        stitch(
+            outer_ids,
+            outer_keys,
+            inner_ids,
+            inner_keys,
+            &mut domain.triangles,
+        );
     }
     domain
     // END SOLUTION
@@ -235,13 +265,19 @@ pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> Triangl
     }
     // Corners counter-clockwise: bottom left, bottom right, top.
     let corners = [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-    let all_one = std::iter::once(&inner).chain(&outer).all(|&l| clamp_level(l, spacing).1 == 1);
+    let all_one = std::iter::once(&inner)
+        .chain(&outer)
+        .all(|&l| clamp_level(l, spacing).1 == 1);
     if all_one {
         domain.points.extend(corners);
         domain.triangles.push([0, 1, 2]);
         return domain;
     }
-    let inner = if clamp_level(inner, spacing).1 == 1 { ONE_PLUS_EPSILON } else { inner };
+    let inner = if clamp_level(inner, spacing).1 == 1 {
+        ONE_PLUS_EPSILON
+    } else {
+        inner
+    };
     let d = subdivide_edge(inner, spacing);
     let n = d.len() - 1;
     // Sides counter-clockwise: v = 0 (outer[1]), w = 0 (outer[2]), u = 0 (outer[0]).
@@ -273,7 +309,10 @@ pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> Triangl
             let positions: Vec<f64> = if k == 0 {
                 subdivide_edge(side_levels[s], spacing)
             } else {
-                d[k..=n - k].iter().map(|&x| (x - d[k]) / (1.0 - 2.0 * d[k])).collect()
+                d[k..=n - k]
+                    .iter()
+                    .map(|&x| (x - d[k]) / (1.0 - 2.0 * d[k]))
+                    .collect()
             };
             let mut ids = vec![corner_ids[s]];
             for &t in &positions[1..positions.len() - 1] {
@@ -284,7 +323,9 @@ pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> Triangl
             sides.push((ids, Vec::new()));
         }
         if segments == 1 {
-            domain.triangles.push([corner_ids[0], corner_ids[1], corner_ids[2]]);
+            domain
+                .triangles
+                .push([corner_ids[0], corner_ids[1], corner_ids[2]]);
         }
         rings.push(sides);
     }
@@ -293,11 +334,21 @@ pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> Triangl
         for s in 0..3 {
             let (start, end) = (embed(corners[s]), embed(corners[(s + 1) % 3]));
             let direction = (end - start).normalize();
-            let keys = |ids: &[u32]| ids.iter().map(|&i| (embed(domain.points[i as usize]) - start).dot(direction)).collect::<Vec<_>>();
+            let keys = |ids: &[u32]| {
+                ids.iter()
+                    .map(|&i| (embed(domain.points[i as usize]) - start).dot(direction))
+                    .collect::<Vec<_>>()
+            };
             let (outer_ids, _) = &rings[pair][s];
             let (inner_ids, _) = &rings[pair + 1][s];
             let (outer_keys, inner_keys) = (keys(outer_ids), keys(inner_ids));
-            stitch(outer_ids, &outer_keys, inner_ids, &inner_keys, &mut domain.triangles);
+            stitch(
+                outer_ids,
+                &outer_keys,
+                inner_ids,
+                &inner_keys,
+                &mut domain.triangles,
+            );
         }
     }
     domain

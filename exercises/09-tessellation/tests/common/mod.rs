@@ -37,7 +37,10 @@ pub fn bernstein_surface(patch: &BezierPatch, uv: DVec2) -> DVec3 {
 
 /// A patch from a function of the control-point indices.
 pub fn patch_from(p: usize, q: usize, point: impl Fn(usize, usize) -> DVec3) -> BezierPatch {
-    let points = (0..=p).flat_map(|i| (0..=q).map(move |j| (i, j))).map(|(i, j)| point(i, j)).collect();
+    let points = (0..=p)
+        .flat_map(|i| (0..=q).map(move |j| (i, j)))
+        .map(|(i, j)| point(i, j))
+        .collect();
     BezierPatch::try_new(p, q, points).expect("a valid patch")
 }
 
@@ -61,7 +64,12 @@ pub fn sample_grid(patch: &BezierPatch, samples: usize) -> Mesh {
     }
     for i in 0..n {
         for j in 0..n {
-            let (a, b, c, d) = (id[&(i, j)], id[&(i + 1, j)], id[&(i + 1, j + 1)], id[&(i, j + 1)]);
+            let (a, b, c, d) = (
+                id[&(i, j)],
+                id[&(i + 1, j)],
+                id[&(i + 1, j + 1)],
+                id[&(i, j + 1)],
+            );
             mesh.triangles.push([a, b, d]);
             mesh.triangles.push([b, c, d]);
         }
@@ -71,7 +79,11 @@ pub fn sample_grid(patch: &BezierPatch, samples: usize) -> Mesh {
 
 /// Twice the signed area of a triangle in the parameter plane.
 pub fn uv_area2(mesh: &Mesh, [a, b, c]: [u32; 3]) -> f64 {
-    let (pa, pb, pc) = (mesh.uvs[a as usize], mesh.uvs[b as usize], mesh.uvs[c as usize]);
+    let (pa, pb, pc) = (
+        mesh.uvs[a as usize],
+        mesh.uvs[b as usize],
+        mesh.uvs[c as usize],
+    );
     (pb - pa).perp_dot(pc - pa)
 }
 
@@ -102,7 +114,10 @@ pub fn assert_tiles_rectangle(mesh: &Mesh, width: f64, height: f64, what: &str) 
     let mut total = 0.0;
     for &t in &mesh.triangles {
         let a = uv_area2(mesh, t);
-        assert!(a > 0.0, "{what}: triangle {t:?} is not counter-clockwise in (u, v) (2·area {a})");
+        assert!(
+            a > 0.0,
+            "{what}: triangle {t:?} is not counter-clockwise in (u, v) (2·area {a})"
+        );
         total += a / 2.0;
     }
     assert!(
@@ -112,11 +127,17 @@ pub fn assert_tiles_rectangle(mesh: &Mesh, width: f64, height: f64, what: &str) 
     );
     let edges = directed_edges(&mesh.triangles);
     let on_boundary = |p: DVec2| {
-        p.x.abs() < 1e-12 || p.y.abs() < 1e-12 || (p.x - width).abs() < 1e-12 || (p.y - height).abs() < 1e-12
+        p.x.abs() < 1e-12
+            || p.y.abs() < 1e-12
+            || (p.x - width).abs() < 1e-12
+            || (p.y - height).abs() < 1e-12
     };
     let mut boundary = 0;
     for (&(a, b), &n) in &edges {
-        assert_eq!(n, 1, "{what}: edge {a}→{b} occurs {n} times in the same direction");
+        assert_eq!(
+            n, 1,
+            "{what}: edge {a}→{b} occurs {n} times in the same direction"
+        );
         if !edges.contains_key(&(b, a)) {
             let (pa, pb) = (mesh.uvs[a as usize], mesh.uvs[b as usize]);
             let along_one_side = on_boundary(pa)
@@ -195,9 +216,13 @@ pub fn lattice_domain(n: usize) -> tessellation::primitive_generator::TriangleDo
     }
     for i in 0..n {
         for j in 0..n - i {
-            domain.triangles.push([id[&(i, j)], id[&(i + 1, j)], id[&(i, j + 1)]]);
+            domain
+                .triangles
+                .push([id[&(i, j)], id[&(i + 1, j)], id[&(i, j + 1)]]);
             if i + j + 2 <= n {
-                domain.triangles.push([id[&(i + 1, j)], id[&(i + 1, j + 1)], id[&(i, j + 1)]]);
+                domain
+                    .triangles
+                    .push([id[&(i + 1, j)], id[&(i + 1, j + 1)], id[&(i, j + 1)]]);
             }
         }
     }
