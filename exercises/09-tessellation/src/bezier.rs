@@ -47,7 +47,9 @@ pub struct SurfacePoint {
 
 /// De Casteljau's algorithm for a Bézier curve of degree `n = points.len() − 1`:
 /// returns `C(t)` and the derivative `C'(t)`, which is `n` times the
-/// difference of the two points of the penultimate step.
+/// difference of the two points of the penultimate step. The curve
+/// interpolates its end points: `C(0) = P_0`, `C(1) = P_n` (the seed's
+/// Example 1.1.2 writes `P_1 = C(1)` for its quadratic; it is `P_2`).
 ///
 /// An empty slice gives zeros; a single point is a constant curve.
 #[must_use]

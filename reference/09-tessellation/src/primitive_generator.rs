@@ -31,7 +31,9 @@
 //! ```
 //!
 //! and ring `k`'s edges carry the perpendicular projections of the points
-//! `d_k … d_(n−k)`: `n − 2k` segments. The outer triangle's edges are
+//! `d_k … d_(n−k)`: `n − 2k` segments. (The seed's Figure 3.4 is captioned
+//! "Inner Tess = 3" where its text speaks of an inner level of 2; with 2
+//! the only inner triangle is the centre point, with 3 it is a triangle.) The outer triangle's edges are
 //! subdivided by the outer levels instead (`outer[0]`: `u = 0`, left;
 //! `outer[1]`: `v = 0`, bottom; `outer[2]`: `w = 0`, right).
 //!
