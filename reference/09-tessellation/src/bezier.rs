@@ -55,20 +55,32 @@ pub struct SurfacePoint {
 #[must_use]
 pub fn de_casteljau(points: &[DVec3], t: f64) -> (DVec3, DVec3) {
     let n = points.len();
-    if n == 0 {
-        return (DVec3::ZERO, DVec3::ZERO);
+    if n <= MAX_DEGREE + 1 {
+        // The common case works in a buffer on the stack: no allocation.
+        let mut work = [DVec3::ZERO; MAX_DEGREE + 1];
+        work[..n].copy_from_slice(points);
+        de_casteljau_in_place(&mut work[..n], t)
+    } else {
+        de_casteljau_in_place(&mut points.to_vec(), t)
     }
-    let mut work: Vec<DVec3> = points.to_vec();
-    for level in 1..n {
-        if level == n - 1 {
-            let derivative = (n - 1) as f64 * (work[1] - work[0]);
-            return (work[0].lerp(work[1], t), derivative);
-        }
+}
+
+/// [`de_casteljau`] on a scratch copy of the control points.
+fn de_casteljau_in_place(work: &mut [DVec3], t: f64) -> (DVec3, DVec3) {
+    let n = work.len();
+    match n {
+        0 => return (DVec3::ZERO, DVec3::ZERO),
+        1 => return (work[0], DVec3::ZERO),
+        _ => {}
+    }
+    // Levels 1 ..= n − 2 leave two points: the penultimate step.
+    for level in 1..n - 1 {
         for k in 0..n - level {
             work[k] = work[k].lerp(work[k + 1], t);
         }
     }
-    (work[0], DVec3::ZERO)
+    let derivative = (n - 1) as f64 * (work[1] - work[0]);
+    (work[0].lerp(work[1], t), derivative)
 }
 
 /// A tensor-product Bézier patch (non-rational: all weights 1).
@@ -197,16 +209,18 @@ impl BezierPatch {
     /// every row, then in `u` across the results (and their `v`-derivatives).
     #[must_use]
     pub fn derivatives(&self, uv: DVec2) -> [DVec3; 3] {
-        let mut across = Vec::with_capacity(self.degree_u + 1);
-        let mut across_dv = Vec::with_capacity(self.degree_u + 1);
+        let mut across = [DVec3::ZERO; MAX_DEGREE + 1];
+        let mut across_dv = [DVec3::ZERO; MAX_DEGREE + 1];
+        let row = self.degree_v + 1;
         for i in 0..=self.degree_u {
-            let start = i * (self.degree_v + 1);
-            let (point, dv) = de_casteljau(&self.points[start..=start + self.degree_v], uv.y);
-            across.push(point);
-            across_dv.push(dv);
+            let start = i * row;
+            let (point, dv) = de_casteljau(&self.points[start..start + row], uv.y);
+            across[i] = point;
+            across_dv[i] = dv;
         }
-        let (position, du) = de_casteljau(&across, uv.x);
-        let (dv, _) = de_casteljau(&across_dv, uv.x);
+        let columns = self.degree_u + 1;
+        let (position, du) = de_casteljau(&across[..columns], uv.x);
+        let (dv, _) = de_casteljau(&across_dv[..columns], uv.x);
         [position, du, dv]
     }
 
@@ -223,6 +237,11 @@ impl BezierPatch {
     #[must_use]
     pub fn normal(&self, uv: DVec2) -> DVec3 {
         let [_, du, dv] = self.derivatives(uv);
+        self.normal_from(uv, du, dv)
+    }
+
+    /// The normal from the tangents at `uv`, with the fallback of [`Self::normal`].
+    fn normal_from(&self, uv: DVec2, du: DVec3, dv: DVec3) -> DVec3 {
         let n = du.cross(dv);
         if n.length() > DEGENERATE_NORMAL {
             return n.normalize();
@@ -235,10 +254,11 @@ impl BezierPatch {
     /// Position and normal at `(u, v)`.
     #[must_use]
     pub fn sample(&self, uv: DVec2) -> SurfacePoint {
+        let [position, du, dv] = self.derivatives(uv);
         SurfacePoint {
             uv,
-            position: self.position(uv),
-            normal: self.normal(uv),
+            position,
+            normal: self.normal_from(uv, du, dv),
         }
     }
 }
