@@ -4,7 +4,7 @@
 //! "Tessellator Spacing", "Triangle Tessellation", "Quad Tessellation").
 //!
 //! **Levels and spacing.** A level `f` is clamped and rounded to a segment
-//! count `n` (maximum level [`MAX_TESS_GEN_LEVEL`] = 64):
+//! count `n` (maximum level [`MAX_TESS_GEN_LEVEL`](crate::primitive_generator::MAX_TESS_GEN_LEVEL) = 64):
 //!
 //! | spacing            | clamp to | round up to        | segments                          |
 //! |--------------------|----------|--------------------|-----------------------------------|

@@ -7,7 +7,7 @@
 //! Conventions: the canvas's (pixel centres at integers, y up). The view
 //! turns the mesh by `yaw` about the z axis, then tilts it by `pitch` about
 //! the x axis, and looks down the −z axis of the result; the mesh is scaled
-//! so that its picture fills [`FILL`] of the smaller canvas side.
+//! so that its picture fills [`FILL`](crate::render::FILL) of the smaller canvas side.
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DMat3, DVec2, DVec3};
