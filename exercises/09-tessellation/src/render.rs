@@ -1,0 +1,192 @@
+//! A small CPU renderer for looking at meshes: orthographic view, z-buffer,
+//! Gouraud-free per-pixel Lambert shading of the interpolated normal, and a
+//! wireframe drawn with hidden lines removed. It is course code for the
+//! pictures of this topic, not a task; the rasterization topics teach how
+//! each of its steps is done properly.
+//!
+//! Conventions: the canvas's (pixel centres at integers, y up). The view
+//! turns the mesh by `yaw` about the z axis, then tilts it by `pitch` about
+//! the x axis, and looks down the −z axis of the result; the mesh is scaled
+//! so that its picture fills [`FILL`](crate::render::FILL) of the smaller canvas side.
+
+use canvas::{Canvas, Pixel, Rgba};
+use glam::{DMat3, DVec2, DVec3};
+
+use crate::mesh::Mesh;
+
+/// The part of the canvas the larger side of the turned mesh's bounding rectangle fills.
+pub const FILL: f64 = 0.9;
+/// Light direction in view space (towards the light), normalised at use.
+pub const LIGHT: DVec3 = DVec3::new(-0.4, 0.5, 1.0);
+/// Ambient light, added to the diffuse term.
+pub const AMBIENT: f64 = 0.15;
+/// Wire pixels are drawn unless they lie further than this (a fraction of
+/// the mesh's bounding radius) behind the surface: hides lines behind the
+/// surface, keeps those on it.
+pub const WIRE_DEPTH_BIAS: f64 = 1e-2;
+/// The surface colour.
+pub const SURFACE: Rgba = Rgba::rgb(0.55, 0.7, 0.95);
+/// The wire colour.
+pub const WIRE: Rgba = Rgba::rgb(0.1, 0.1, 0.2);
+/// The background colour.
+pub const BACKGROUND: Rgba = Rgba::WHITE;
+
+/// What to draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// Lambert-shaded surface.
+    Shaded,
+    /// Visible edges only, on the background.
+    Wireframe,
+    /// Shaded surface with its visible edges on top.
+    ShadedWireframe,
+}
+
+/// Where the mesh is seen from (radians).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// Turn about the z axis.
+    pub yaw: f64,
+    /// Tilt about the x axis after the turn.
+    pub pitch: f64,
+}
+
+/// Renders `mesh` into a new `width × height` canvas. Triangles with a
+/// non-finite vertex are skipped; an empty mesh gives the background.
+#[must_use]
+pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) -> Canvas {
+    let mut canvas = Canvas::new(width, height);
+    canvas.clear(BACKGROUND);
+    let (w, h) = (canvas.width() as usize, canvas.height() as usize);
+    let rotation = DMat3::from_rotation_x(view.pitch) * DMat3::from_rotation_z(view.yaw);
+    let finite: Vec<DVec3> = mesh
+        .positions
+        .iter()
+        .copied()
+        .filter(|p| p.is_finite())
+        .collect();
+    if finite.is_empty() || w == 0 || h == 0 {
+        return canvas;
+    }
+    // Fit the turned mesh's bounding rectangle into the canvas.
+    let turned: Vec<DVec3> = finite.iter().map(|&p| rotation * p).collect();
+    let (lo, hi) = turned.iter().fold((turned[0], turned[0]), |(lo, hi), &p| {
+        (lo.min(p), hi.max(p))
+    });
+    let centre = (lo + hi) / 2.0;
+    let extent = (hi - lo).truncate().max_element().max(f64::MIN_POSITIVE);
+    let radius = (hi - lo).length() / 2.0;
+    let scale = FILL * w.min(h) as f64 / extent;
+    let screen_centre = DVec2::new((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
+    // Screen x, y in pixels; z grows towards the viewer.
+    let project = |p: DVec3| {
+        let q = rotation * p - centre;
+        DVec3::new(
+            screen_centre.x + scale * q.x,
+            screen_centre.y + scale * q.y,
+            q.z,
+        )
+    };
+    let screen: Vec<DVec3> = mesh.positions.iter().map(|&p| project(p)).collect();
+    let normals: Vec<DVec3> = mesh.normals.iter().map(|&n| rotation * n).collect();
+    let light = LIGHT.normalize();
+    let mut depth = vec![f64::NEG_INFINITY; w * h];
+    let mut shade = vec![None; w * h];
+    for tri in &mesh.triangles {
+        let Some([a, b, c]) = fetch(&screen, *tri) else {
+            continue;
+        };
+        let [na, nb, nc] = fetch(&normals, *tri).unwrap_or([DVec3::Z; 3]);
+        let area = edge(a, b, c);
+        if area.abs() < f64::EPSILON {
+            continue;
+        }
+        let x0 = a.x.min(b.x).min(c.x).ceil().max(0.0) as usize;
+        let x1 = a.x.max(b.x).max(c.x).floor().min(w as f64 - 1.0);
+        let y0 = a.y.min(b.y).min(c.y).ceil().max(0.0) as usize;
+        let y1 = a.y.max(b.y).max(c.y).floor().min(h as f64 - 1.0);
+        if x1 < 0.0 || y1 < 0.0 {
+            continue;
+        }
+        for y in y0..=y1 as usize {
+            for x in x0..=x1 as usize {
+                let p = DVec3::new(x as f64, y as f64, 0.0);
+                let (wa, wb, wc) = (
+                    edge(b, c, p) / area,
+                    edge(c, a, p) / area,
+                    edge(a, b, p) / area,
+                );
+                if wa < 0.0 || wb < 0.0 || wc < 0.0 {
+                    continue;
+                }
+                let z = wa * a.z + wb * b.z + wc * c.z;
+                let k = y * w + x;
+                if z > depth[k] {
+                    depth[k] = z;
+                    let n = (wa * na + wb * nb + wc * nc).normalize_or_zero();
+                    shade[k] = Some(AMBIENT + (1.0 - AMBIENT) * n.dot(light).abs());
+                }
+            }
+        }
+    }
+    if style != Style::Wireframe {
+        for (k, s) in shade.iter().enumerate() {
+            if let Some(s) = s {
+                let s = *s as f32;
+                let colour = Rgba::rgb(SURFACE.r * s, SURFACE.g * s, SURFACE.b * s);
+                canvas.set(Pixel::new((k % w) as i32, (k / w) as i32), colour);
+            }
+        }
+    }
+    if style != Style::Shaded {
+        for tri in &mesh.triangles {
+            let Some(corners) = fetch(&screen, *tri) else {
+                continue;
+            };
+            for e in 0..3 {
+                wire(
+                    &mut canvas,
+                    &depth,
+                    w,
+                    WIRE_DEPTH_BIAS * radius,
+                    corners[e],
+                    corners[(e + 1) % 3],
+                );
+            }
+        }
+    }
+    canvas
+}
+
+/// Twice the signed area of `(a, b, p)` in the screen plane.
+fn edge(a: DVec3, b: DVec3, p: DVec3) -> f64 {
+    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
+}
+
+/// The three entries of `list` a triangle names, if all exist and are finite.
+fn fetch(list: &[DVec3], tri: [u32; 3]) -> Option<[DVec3; 3]> {
+    let get = |i: u32| list.get(i as usize).copied().filter(|p| p.is_finite());
+    Some([get(tri[0])?, get(tri[1])?, get(tri[2])?])
+}
+
+/// A DDA line from `a` to `b`, drawn where it is not behind the surface.
+fn wire(canvas: &mut Canvas, depth: &[f64], w: usize, bias: f64, a: DVec3, b: DVec3) {
+    let h = depth.len() / w;
+    let steps = (b.x - a.x).abs().max((b.y - a.y).abs()).ceil().min(1e5) as usize;
+    for s in 0..=steps {
+        let t = if steps == 0 {
+            0.0
+        } else {
+            s as f64 / steps as f64
+        };
+        let p = a.lerp(b, t);
+        let (x, y) = (p.x.round(), p.y.round());
+        if x < 0.0 || y < 0.0 || x >= w as f64 || y >= h as f64 {
+            continue;
+        }
+        let k = y as usize * w + x as usize;
+        if p.z + bias >= depth[k] {
+            canvas.set(Pixel::new(x as i32, y as i32), WIRE);
+        }
+    }
+}

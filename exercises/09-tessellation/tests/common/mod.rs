@@ -1,0 +1,230 @@
+//! What the tests compare with: surfaces evaluated by the explicit
+//! Bernstein sums (not by de Casteljau), meshes checked edge by edge, and
+//! parameter-plane areas, all written independently of the tasks.
+#![allow(dead_code)] // each test file uses a different part
+
+use std::collections::HashMap;
+
+use tessellation::bezier::BezierPatch;
+use tessellation::mesh::Mesh;
+use tessellation::render::{Style, View, render};
+use tessellation::{DVec2, DVec3};
+
+/// Positions computed two ways agree to this (coordinates of order 10).
+pub const POSITION_TOLERANCE: f64 = 1e-9;
+
+/// `n choose k` as a float.
+pub fn binomial(n: usize, k: usize) -> f64 {
+    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+}
+
+/// The Bernstein polynomial `B_i,n(t)` (seed 001, equation (1.2)).
+pub fn bernstein(i: usize, n: usize, t: f64) -> f64 {
+    binomial(n, i) * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
+}
+
+/// `S(u, v)` by the double Bernstein sum of Definition 1.1.4.
+pub fn bernstein_surface(patch: &BezierPatch, uv: DVec2) -> DVec3 {
+    let (p, q) = (patch.degree_u(), patch.degree_v());
+    let mut sum = DVec3::ZERO;
+    for i in 0..=p {
+        for j in 0..=q {
+            sum += bernstein(i, p, uv.x) * bernstein(j, q, uv.y) * patch.control_point(i, j);
+        }
+    }
+    sum
+}
+
+/// A patch from a function of the control-point indices.
+pub fn patch_from(p: usize, q: usize, point: impl Fn(usize, usize) -> DVec3) -> BezierPatch {
+    let points = (0..=p)
+        .flat_map(|i| (0..=q).map(move |j| (i, j)))
+        .map(|(i, j)| point(i, j))
+        .collect();
+    BezierPatch::try_new(p, q, points).expect("a valid patch")
+}
+
+/// The plane z = 0 over `[0, 1]²` as a bilinear patch: `S(u, v) = (u, v, 0)`.
+pub fn unit_plane() -> BezierPatch {
+    patch_from(1, 1, |i, j| DVec3::new(i as f64, j as f64, 0.0))
+}
+
+/// The initial mesh of the fully adaptive tessellation, built here
+/// independently: `samples × samples` points, two triangles per cell
+/// (the cell's diagonal from `(i, j + 1)` to `(i + 1, j)`).
+pub fn sample_grid(patch: &BezierPatch, samples: usize) -> Mesh {
+    let n = samples - 1;
+    let mut mesh = Mesh::new();
+    let mut id = HashMap::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            let uv = DVec2::new(i as f64 / n as f64, j as f64 / n as f64);
+            id.insert((i, j), mesh.push_vertex(patch.sample(uv)));
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            let (a, b, c, d) = (
+                id[&(i, j)],
+                id[&(i + 1, j)],
+                id[&(i + 1, j + 1)],
+                id[&(i, j + 1)],
+            );
+            mesh.triangles.push([a, b, d]);
+            mesh.triangles.push([b, c, d]);
+        }
+    }
+    mesh
+}
+
+/// Twice the signed area of a triangle in the parameter plane.
+pub fn uv_area2(mesh: &Mesh, [a, b, c]: [u32; 3]) -> f64 {
+    let (pa, pb, pc) = (
+        mesh.uvs[a as usize],
+        mesh.uvs[b as usize],
+        mesh.uvs[c as usize],
+    );
+    (pb - pa).perp_dot(pc - pa)
+}
+
+/// How often each directed edge occurs.
+pub fn directed_edges(triangles: &[[u32; 3]]) -> HashMap<(u32, u32), usize> {
+    let mut count = HashMap::new();
+    for &[a, b, c] in triangles {
+        for e in [(a, b), (b, c), (c, a)] {
+            *count.entry(e).or_insert(0) += 1;
+        }
+    }
+    count
+}
+
+/// Checks that the mesh tiles the parameter rectangle `[0, width] ×
+/// [0, height]` without gaps, overlaps or T-junctions:
+/// - every triangle is counter-clockwise with positive area in `(u, v)`;
+/// - the areas add up to `width · height`;
+/// - no directed edge occurs twice (consistent orientation), and an edge
+///   whose reverse is missing lies on the rectangle's boundary.
+///
+/// Positive areas that add up to the rectangle's area mean no overlaps;
+/// every inner edge having a partner means no cracks and no T-junction
+/// (a vertex in the middle of a neighbour's edge leaves that edge alone).
+/// Returns the number of boundary edges.
+pub fn assert_tiles_rectangle(mesh: &Mesh, width: f64, height: f64, what: &str) -> usize {
+    mesh.validate().unwrap_or_else(|e| panic!("{what}: {e}"));
+    let mut total = 0.0;
+    for &t in &mesh.triangles {
+        let a = uv_area2(mesh, t);
+        assert!(
+            a > 0.0,
+            "{what}: triangle {t:?} is not counter-clockwise in (u, v) (2·area {a})"
+        );
+        total += a / 2.0;
+    }
+    assert!(
+        (total - width * height).abs() < 1e-9 * width * height,
+        "{what}: the triangles cover an area of {total}, not {}",
+        width * height
+    );
+    let edges = directed_edges(&mesh.triangles);
+    let on_boundary = |p: DVec2| {
+        p.x.abs() < 1e-12
+            || p.y.abs() < 1e-12
+            || (p.x - width).abs() < 1e-12
+            || (p.y - height).abs() < 1e-12
+    };
+    let mut boundary = 0;
+    for (&(a, b), &n) in &edges {
+        assert_eq!(
+            n, 1,
+            "{what}: edge {a}→{b} occurs {n} times in the same direction"
+        );
+        if !edges.contains_key(&(b, a)) {
+            let (pa, pb) = (mesh.uvs[a as usize], mesh.uvs[b as usize]);
+            let along_one_side = on_boundary(pa)
+                && on_boundary(pb)
+                && ((pa.x - pb.x).abs() < 1e-12 || (pa.y - pb.y).abs() < 1e-12)
+                && on_boundary((pa + pb) / 2.0);
+            assert!(
+                along_one_side,
+                "{what}: edge {a}→{b} ({pa} → {pb}) has no neighbour but is not on the boundary (a crack or T-junction)"
+            );
+            boundary += 1;
+        }
+    }
+    boundary
+}
+
+/// The largest distance between the surface and the mesh, sampled at the
+/// centroid and the edge midpoints of every triangle: the point of the
+/// flat triangle against the surface point at the same interpolated
+/// parameters.
+pub fn max_deviation(mesh: &Mesh, surface: impl Fn(DVec2) -> DVec3) -> f64 {
+    const WEIGHTS: [[f64; 3]; 4] = [
+        [1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0],
+        [0.5, 0.5, 0.0],
+        [0.0, 0.5, 0.5],
+        [0.5, 0.0, 0.5],
+    ];
+    let mut worst: f64 = 0.0;
+    for &[a, b, c] in &mesh.triangles {
+        let ids = [a as usize, b as usize, c as usize];
+        for w in WEIGHTS {
+            let uv: DVec2 = ids.iter().zip(w).map(|(&i, w)| w * mesh.uvs[i]).sum();
+            let flat: DVec3 = ids.iter().zip(w).map(|(&i, w)| w * mesh.positions[i]).sum();
+            worst = worst.max(surface(uv).distance(flat));
+        }
+    }
+    worst
+}
+
+/// Renders a mesh and compares it with `tests/images/<name>.png`.
+pub fn assert_picture(name: &str, mesh: &Mesh, view: View, style: Style) {
+    let canvas = render(mesh, view, style, PICTURE_SIDE, PICTURE_SIDE);
+    let reference = format!("{}/tests/images/{name}.png", env!("CARGO_MANIFEST_DIR"));
+    testkit::image::assert_image_matches(name, &canvas, reference, PICTURE_TOLERANCE);
+}
+
+/// Side of the test pictures in pixels.
+pub const PICTURE_SIDE: u32 = 240;
+
+/// Pictures may differ in a few silhouette and wire pixels (float
+/// rounding in another evaluation order), never in shading.
+pub const PICTURE_TOLERANCE: testkit::image::Tolerance = testkit::image::Tolerance {
+    channel: 3.0 / 255.0,
+    mismatched_fraction: 0.002,
+};
+
+/// The view the seed's surface is drawn from.
+pub const SEED_VIEW: View = View {
+    yaw: 2.4,
+    pitch: -1.0,
+};
+
+/// A regular triangle domain of level `n`, built here independently of
+/// the primitive generator: the barycentric lattice `(i, j, n − i − j)/n`
+/// with its up and down triangles, counter-clockwise in the embedding
+/// `u·(1, 0) + v·(½, √3/2)`.
+pub fn lattice_domain(n: usize) -> tessellation::primitive_generator::TriangleDomain {
+    let mut domain = tessellation::primitive_generator::TriangleDomain::default();
+    let mut id = HashMap::new();
+    for i in 0..=n {
+        for j in 0..=n - i {
+            id.insert((i, j), domain.points.len() as u32);
+            let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
+            domain.points.push([u, v, 1.0 - u - v]);
+        }
+    }
+    for i in 0..n {
+        for j in 0..n - i {
+            domain
+                .triangles
+                .push([id[&(i, j)], id[&(i + 1, j)], id[&(i, j + 1)]]);
+            if i + j + 2 <= n {
+                domain
+                    .triangles
+                    .push([id[&(i + 1, j)], id[&(i + 1, j + 1)], id[&(i, j + 1)]]);
+            }
+        }
+    }
+    domain
+}

@@ -1,0 +1,152 @@
+//! Cubic Bézier triangles and their construction from a flat triangle's
+//! vertices and normals: curved point-normal (PN) triangles (seed 001
+//! §4.1, equation (4.1), Figure 4.2; Vlachos, Peters, Boyd, Mitchell,
+//! "Curved PN Triangles", I3D 2001).
+//!
+//! ```text
+//!                 b030                  B(u, v, w) = Σ_{i+j+k=3} 3!/(i! j! k!) uⁱ vʲ wᵏ b_ijk
+//!               ╱      ╲                  = b300 u³ + b030 v³ + b003 w³
+//!           b021        b120              + 3 b210 u²v + 3 b201 u²w + 3 b120 v²u
+//!          ╱     b111      ╲              + 3 b021 v²w + 3 b102 w²u + 3 b012 w²v
+//!      b012                b210           + 6 b111 uvw,      u + v + w = 1
+//!      ╱                      ╲
+//!  b003 ─── b102 ──── b201 ─── b300
+//! ```
+//!
+//! (The seed's evaluation shader, listing 4.6, multiplies `b300` by `w³`
+//! and `b030` by `u³`: it names the barycentric coordinates in another
+//! order than (4.1). This module follows (4.1): `u` belongs to `b300`.)
+//!
+//! **PN construction.** The corners are the vertices `P1, P2, P3`. Each
+//! edge gets two points at its thirds, each moved onto the tangent plane of
+//! the nearer vertex (`w_ij = (P_j − P_i) · N_i`):
+//!
+//! ```text
+//!   b210 = (2 P1 + P2 − w12 N1) / 3      b120 = (2 P2 + P1 − w21 N2) / 3
+//!   b021 = (2 P2 + P3 − w23 N2) / 3      b012 = (2 P3 + P2 − w32 N3) / 3
+//!   b102 = (2 P3 + P1 − w31 N3) / 3      b201 = (2 P1 + P3 − w13 N1) / 3
+//!   E = (b210 + b120 + b021 + b012 + b102 + b201) / 6,   V = (P1 + P2 + P3) / 3
+//!   b111 = E + (E − V) / 2
+//! ```
+//!
+//! Normals are interpolated linearly and normalised, as the seed's
+//! evaluation shader does (`interpolate3D`); the PN paper's quadratic
+//! normal patch is a refinement left out here.
+
+use glam::{DVec2, DVec3};
+
+use crate::bezier::SurfacePoint;
+use crate::error::TessError;
+use crate::mesh::Mesh;
+use crate::primitive_generator::TriangleDomain;
+
+/// A cubic Bézier triangle: ten control points named by their exponents.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[allow(missing_docs)] // the names are the documentation: b_ijk goes with uⁱ vʲ wᵏ
+pub struct CubicBezierTriangle {
+    pub b300: DVec3,
+    pub b030: DVec3,
+    pub b003: DVec3,
+    pub b210: DVec3,
+    pub b201: DVec3,
+    pub b120: DVec3,
+    pub b021: DVec3,
+    pub b102: DVec3,
+    pub b012: DVec3,
+    pub b111: DVec3,
+}
+
+/// A PN triangle: its cubic geometry and the unit normals at its corners.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PnTriangle {
+    /// The geometry.
+    pub geometry: CubicBezierTriangle,
+    /// Unit normals at `P1` (`u = 1`), `P2` (`v = 1`), `P3` (`w = 1`).
+    pub normals: [DVec3; 3],
+}
+
+/// `B(u, v, w)` by equation (4.1). The coordinates are used as given (the
+/// caller keeps `u + v + w = 1`; other values extrapolate the polynomial).
+#[must_use]
+pub fn evaluate(t: &CubicBezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
+    // BEGIN SOLUTION bezier_triangle: the ten Bernstein terms of (4.1)
+    t.b300 * (u * u * u)
+        + t.b030 * (v * v * v)
+        + t.b003 * (w * w * w)
+        + t.b210 * (3.0 * u * u * v)
+        + t.b201 * (3.0 * u * u * w)
+        + t.b120 * (3.0 * v * v * u)
+        + t.b021 * (3.0 * v * v * w)
+        + t.b102 * (3.0 * w * w * u)
+        + t.b012 * (3.0 * w * w * v)
+        + t.b111 * (6.0 * u * v * w)
+    // END SOLUTION
+}
+
+/// The PN triangle of the flat triangle `P1, P2, P3` with vertex normals
+/// `N1, N2, N3` (normalised here), by the construction in the module
+/// documentation. It passes through the three vertices, and its tangent
+/// plane at each vertex is perpendicular to that vertex's normal.
+///
+/// # Errors
+/// [`TessError::NonFinite`] for a non-finite position or normal, and for a
+/// normal that cannot be normalised (zero).
+pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTriangle, TessError> {
+    // BEGIN SOLUTION bezier_triangle: corners, edge thirds projected onto the tangent planes, then b111
+    if !positions.iter().all(|p| p.is_finite()) {
+        return Err(TessError::NonFinite { what: "a vertex" });
+    }
+    let mut unit = [DVec3::ZERO; 3];
+    for (u, n) in unit.iter_mut().zip(normals) {
+        *u = n.try_normalize().ok_or(TessError::NonFinite {
+            what: "a vertex normal (zero, NaN or infinite)",
+        })?;
+    }
+    let [p1, p2, p3] = positions;
+    let [n1, n2, n3] = unit;
+    // The third of edge i→j next to i, moved onto the tangent plane at i.
+    let third = |pi: DVec3, pj: DVec3, ni: DVec3| (2.0 * pi + pj - (pj - pi).dot(ni) * ni) / 3.0;
+    let (b210, b120) = (third(p1, p2, n1), third(p2, p1, n2));
+    let (b021, b012) = (third(p2, p3, n2), third(p3, p2, n3));
+    let (b102, b201) = (third(p3, p1, n3), third(p1, p3, n1));
+    let e = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0;
+    let v = (p1 + p2 + p3) / 3.0;
+    Ok(PnTriangle {
+        geometry: CubicBezierTriangle {
+            b300: p1,
+            b030: p2,
+            b003: p3,
+            b210,
+            b201,
+            b120,
+            b021,
+            b102,
+            b012,
+            b111: e + (e - v) / 2.0,
+        },
+        normals: unit,
+    })
+    // END SOLUTION
+}
+
+/// Tessellates a PN triangle over a triangle domain (e.g. the primitive
+/// generator's): one vertex per domain point `[u, v, w]` at
+/// `B(u, v, w)`, with the normal `normalize(u N1 + v N2 + w N3)` and the
+/// parameters `(u, v)`; the domain's triangles unchanged (so a
+/// counter-clockwise `P1, P2, P3` gives counter-clockwise triangles).
+#[must_use]
+pub fn tessellate_pn(pn: &PnTriangle, domain: &TriangleDomain) -> Mesh {
+    // BEGIN SOLUTION bezier_triangle: evaluate every domain point, interpolate the normals, keep the triangles
+    let mut mesh = Mesh::new();
+    let [n1, n2, n3] = pn.normals;
+    for &b in &domain.points {
+        mesh.push_vertex(SurfacePoint {
+            uv: DVec2::new(b[0], b[1]),
+            position: evaluate(&pn.geometry, b),
+            normal: (b[0] * n1 + b[1] * n2 + b[2] * n3).normalize_or_zero(),
+        });
+    }
+    mesh.triangles.clone_from(&domain.triangles);
+    mesh
+    // END SOLUTION
+}
