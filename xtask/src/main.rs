@@ -6,6 +6,7 @@
 mod bench;
 mod cargo;
 mod grade;
+mod setup;
 mod stubs;
 mod test;
 mod topics;

@@ -17,13 +17,18 @@ use anyhow::{Context, Result, bail, ensure};
 
 use crate::cargo::{self, cargo};
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
-use crate::{stubs, topics};
+use crate::{setup, stubs, topics};
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
 
 /// Runs the four steps and prints a summary; fails if any step failed.
 pub fn run(root: &Path) -> Result<()> {
+    // GPU topics need a Vulkan driver; an error in the topics themselves
+    // is reported by the steps below.
+    if topics::discover(root).is_ok_and(|topics| topics.iter().any(|t| t.sheet.gpu)) {
+        setup::ensure_vulkan();
+    }
     type Step<'a> = (&'a str, Box<dyn Fn() -> Result<String> + 'a>);
     let steps: Vec<Step<'_>> = vec![
         (

@@ -8,6 +8,7 @@
 //! +++
 //! time_limit_s = 20          # optional: per-test wall-clock limit (default 20)
 //! memory_limit_mib = 4096    # optional: per-test address-space limit (0 = none)
+//! gpu = false                # optional: the topic needs a GPU adapter (see `setup`)
 //! [[tasks]]
 //! id = "dda"
 //! title = "DDA with colour and depth interpolation"
@@ -55,6 +56,11 @@ pub struct TaskSheet {
     /// Per-test address-space limit in MiB (`0` switches it off).
     #[serde(default = "default_memory_limit")]
     pub memory_limit_mib: u64,
+    /// The topic runs on the GPU: grading and testing it first make sure a
+    /// Vulkan driver is installed (see `setup`), and its tests treat a
+    /// missing adapter as a failure when graded.
+    #[serde(default)]
+    pub gpu: bool,
     /// The tasks, in the order of the sheet.
     pub tasks: Vec<Task>,
 }

@@ -98,6 +98,9 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
         );
     }
     fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
+    if topics.iter().any(|topic| topic.sheet.gpu) {
+        crate::setup::ensure_vulkan();
+    }
     let edition = if options.reference {
         Edition::Reference
     } else {
@@ -318,6 +321,8 @@ fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsS
         ("INSTA_WORKSPACE_ROOT".into(), root.into()),
         ("TESTKIT_OUTPUT_DIR".into(), images_dir.into()),
         ("PROPTEST_DISABLE_FAILURE_PERSISTENCE".into(), "1".into()),
+        // A GPU test without an adapter fails instead of skipping.
+        (crate::setup::GPU_REQUIRED_VAR.into(), "1".into()),
         // What `cargo test` sets for a test process.
         ("CARGO_MANIFEST_DIR".into(), topic.dir.clone().into()),
         ("CARGO_PKG_NAME".into(), topic.package.clone().into()),

@@ -1,0 +1,122 @@
+//! The set-up the commands do themselves: Mesa's software Vulkan driver
+//! (lavapipe) for topics whose task sheet says `gpu = true`.
+//!
+//! wgpu needs a Vulkan (or GL) driver at run time, not at build time. A
+//! machine with a GPU has one; a machine without (CI, many laptops in a
+//! container) gets lavapipe, which renders on the CPU. Before grading or
+//! testing a GPU topic on Linux, the commands check for a Vulkan loader
+//! and an installable client driver, and install both with `apt-get` when
+//! they are missing and the machine allows it (root, or `sudo` without a
+//! password). Anything else is a message saying what to install, never a
+//! failure here: the GPU tests then fail with their own clear reason.
+
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+/// The variable the `gpu` crate reads: `1` makes a missing adapter a test
+/// failure instead of a skip. Grading sets it, so that a machine without a
+/// driver never earns the points of a skipped test.
+pub const GPU_REQUIRED_VAR: &str = "GPU_REQUIRED";
+
+/// The Debian/Ubuntu packages: the Vulkan loader and Mesa's drivers,
+/// lavapipe among them.
+pub const VULKAN_PACKAGES: [&str; 2] = ["libvulkan1", "mesa-vulkan-drivers"];
+
+/// Where Vulkan's installable client drivers register (`*.json`).
+const ICD_DIRS: [&str; 3] = [
+    "/usr/share/vulkan/icd.d",
+    "/etc/vulkan/icd.d",
+    "/usr/local/share/vulkan/icd.d",
+];
+
+/// Where the Vulkan loader lives on common Linux distributions.
+const LOADER_PATHS: [&str; 5] = [
+    "/usr/lib/x86_64-linux-gnu/libvulkan.so.1",
+    "/usr/lib/aarch64-linux-gnu/libvulkan.so.1",
+    "/usr/lib64/libvulkan.so.1",
+    "/usr/lib/libvulkan.so.1",
+    "/lib/x86_64-linux-gnu/libvulkan.so.1",
+];
+
+/// Whether a Vulkan loader and at least one driver are installed.
+#[must_use]
+pub fn vulkan_present() -> bool {
+    let loader = LOADER_PATHS.iter().any(|p| Path::new(p).exists());
+    let driver = ICD_DIRS.iter().any(|dir| {
+        std::fs::read_dir(dir).is_ok_and(|entries| {
+            entries
+                .flatten()
+                .any(|e| e.path().extension().is_some_and(|x| x == "json"))
+        })
+    });
+    loader && driver
+}
+
+/// Makes sure a GPU topic can find a Vulkan driver (see the module
+/// documentation); prints what it does and never fails.
+pub fn ensure_vulkan() {
+    if !cfg!(target_os = "linux") || vulkan_present() {
+        return;
+    }
+    let manual = format!(
+        "apt-get install -y --no-install-recommends {}",
+        VULKAN_PACKAGES.join(" ")
+    );
+    if !succeeds(Command::new("apt-get").arg("--version")) {
+        println!(
+            "note: the GPU topics need a Vulkan driver and this machine has none; install \
+             Mesa's lavapipe (Debian/Ubuntu: `{manual}`), or the GPU tests will fail"
+        );
+        return;
+    }
+    let root = Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|out| String::from_utf8_lossy(&out.stdout).trim() == "0");
+    let sudo = !root && succeeds(Command::new("sudo").args(["-n", "true"]));
+    if !root && !sudo {
+        println!(
+            "note: the GPU topics need a Vulkan driver and this machine has none; run \
+             `sudo {manual}`, or the GPU tests will fail"
+        );
+        return;
+    }
+    println!("==> installing Mesa's software Vulkan driver for the GPU topics: {manual}");
+    let apt = |args: &[&str]| {
+        let mut command = if sudo {
+            let mut c = Command::new("sudo");
+            c.args(["-n", "apt-get"]);
+            c
+        } else {
+            Command::new("apt-get")
+        };
+        command
+            .args(args)
+            .env("DEBIAN_FRONTEND", "noninteractive")
+            .stdout(Stdio::null());
+        succeeds(&mut command)
+    };
+    let install: Vec<&str> = ["install", "-y", "-q", "--no-install-recommends"]
+        .into_iter()
+        .chain(VULKAN_PACKAGES)
+        .collect();
+    // The package lists may be missing or stale on a fresh machine.
+    let installed = apt(&install) || (apt(&["update", "-q"]) && apt(&install));
+    if installed && vulkan_present() {
+        println!("==> installed: {}", VULKAN_PACKAGES.join(", "));
+    } else {
+        println!(
+            "note: installing {} failed; the GPU tests will fail until a Vulkan driver is \
+             installed (`{manual}`)",
+            VULKAN_PACKAGES.join(", ")
+        );
+    }
+}
+
+fn succeeds(command: &mut Command) -> bool {
+    command
+        .stdin(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|status| status.success())
+}
