@@ -196,7 +196,11 @@ fn inner_count(level: f32, spacing: Spacing) -> (f64, u32) {
     };
     match clamped_level(level, spacing) {
         Some((_, 1)) => {
-            let n = if spacing == Spacing::FractionalOdd { 3 } else { 2 };
+            let n = if spacing == Spacing::FractionalOdd {
+                3
+            } else {
+                2
+            };
             // `1 + ε` clamped: cut like a level of exactly `1 + ε`, which for
             // fractional spacing gives two near-empty short segments.
             let f = 1.0 + f64::from(f32::EPSILON);
@@ -322,7 +326,10 @@ pub fn quad_domain(levels: QuadLevels, spacing: Spacing) -> Domain {
             line.push(add_point(&mut domain, p));
         }
         line.push(to);
-        let inner: Vec<u32> = inner_cells.iter().map(|&(r, c)| grid[r * cols + c]).collect();
+        let inner: Vec<u32> = inner_cells
+            .iter()
+            .map(|&(r, c)| grid[r * cols + c])
+            .collect();
         let t_inner: Vec<f32> = inner_cells
             .iter()
             .map(|&(r, c)| if along_u { us[c + 1] } else { vs[r + 1] })
@@ -374,10 +381,7 @@ pub fn triangle_domain(levels: TriangleLevels, spacing: Spacing) -> Domain {
     // Points of ring k on side s: from its start corner to its end corner
     // (both included) with their parameters along the side; ring 0 uses
     // the outer levels.
-    let corner_ids: Vec<u32> = CORNERS
-        .iter()
-        .map(|&c| add_point(&mut domain, c))
-        .collect();
+    let corner_ids: Vec<u32> = CORNERS.iter().map(|&c| add_point(&mut domain, c)).collect();
     let mut previous: Vec<(Vec<u32>, Vec<f32>)> = SIDES
         .iter()
         .map(|&(a, b, level)| {
@@ -433,7 +437,11 @@ mod tests {
 
     use super::*;
 
-    const SPACINGS: [Spacing; 3] = [Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven];
+    const SPACINGS: [Spacing; 3] = [
+        Spacing::Equal,
+        Spacing::FractionalOdd,
+        Spacing::FractionalEven,
+    ];
 
     /// Twice the signed area of a triangle in the domain's plane.
     fn area2(points: [DVec2; 3]) -> f64 {
@@ -483,7 +491,10 @@ mod tests {
 
     #[test]
     fn equal_spacing_cuts_edges_evenly() {
-        assert_eq!(edge_cuts(4.0, Spacing::Equal).unwrap(), [0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(
+            edge_cuts(4.0, Spacing::Equal).unwrap(),
+            [0.0, 0.25, 0.5, 0.75, 1.0]
+        );
         assert_eq!(edge_cuts(2.3, Spacing::Equal).unwrap().len(), 4);
         assert_eq!(segment_count(0.2, Spacing::Equal), Some(1));
         assert_eq!(segment_count(1000.0, Spacing::Equal), Some(64));
@@ -495,11 +506,17 @@ mod tests {
         // f = 2.5, odd: n = 3, one long segment of 1/2.5 = 0.4 and two of 0.3.
         let t = edge_cuts(2.5, Spacing::FractionalOdd).unwrap();
         let expected = [0.0, 0.3, 0.7, 1.0];
-        assert!(t.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-6), "{t:?}");
+        assert!(
+            t.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-6),
+            "{t:?}"
+        );
         // f = 5, even: n = 6, four segments of 0.2, two of 0.1 at the centre.
         let t = edge_cuts(5.0, Spacing::FractionalEven).unwrap();
         let expected = [0.0, 0.2, 0.4, 0.5, 0.6, 0.8, 1.0];
-        assert!(t.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-6), "{t:?}");
+        assert!(
+            t.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-6),
+            "{t:?}"
+        );
         assert_eq!(segment_count(1.0, Spacing::FractionalEven), Some(2));
         assert_eq!(segment_count(64.0, Spacing::FractionalOdd), Some(63));
     }
@@ -553,7 +570,11 @@ mod tests {
     #[test]
     fn quads_tile_the_square_with_outer_edges_cut_as_asked() {
         for spacing in SPACINGS {
-            for outer in [[1.0, 2.0, 3.0, 4.0], [7.5, 1.0, 2.2, 13.0], [64.0, 3.0, 64.0, 1.0]] {
+            for outer in [
+                [1.0, 2.0, 3.0, 4.0],
+                [7.5, 1.0, 2.2, 13.0],
+                [64.0, 3.0, 64.0, 1.0],
+            ] {
                 for inner in [[1.0, 1.0], [3.0, 5.5], [9.0, 2.0]] {
                     let levels = QuadLevels { outer, inner };
                     let d = quad_domain(levels, spacing);

@@ -124,12 +124,7 @@ fn bind(
     })?)
 }
 
-fn dispatch(
-    gpu: &Gpu,
-    pipeline: &wgpu::ComputePipeline,
-    group: &wgpu::BindGroup,
-    size: [u32; 2],
-) {
+fn dispatch(gpu: &Gpu, pipeline: &wgpu::ComputePipeline, group: &wgpu::BindGroup, size: [u32; 2]) {
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     {
         let mut pass = encoder.begin_compute_pass(&Default::default());
@@ -299,12 +294,7 @@ pub fn run_evaluation(
         });
         max_points = max_points.max(domain.points.len() as u32);
         points.extend(domain.points.iter().map(|p: &Vec3| p.extend(0.0)));
-        triangles.extend(
-            domain
-                .triangles
-                .iter()
-                .map(|t| t.map(|k| k + offset)),
-        );
+        triangles.extend(domain.triangles.iter().map(|t| t.map(|k| k + offset)));
     }
     let vertex_count = points.len() as u32;
     let zeros = vec![GpuVertex::default(); points.len()];

@@ -144,7 +144,8 @@ impl BezierPatch {
         // ∂P/∂u needs the last-but-one points of every row, carried along v.
         let (mut row_a, mut row_b) = ([DVec3::ZERO; 4], [DVec3::ZERO; 4]);
         for j in 0..4 {
-            let (q, a, b) = de_casteljau_cubic([p(4 * j), p(4 * j + 1), p(4 * j + 2), p(4 * j + 3)], uv.x);
+            let (q, a, b) =
+                de_casteljau_cubic([p(4 * j), p(4 * j + 1), p(4 * j + 2), p(4 * j + 3)], uv.x);
             on_rows[j] = q;
             row_a[j] = a;
             row_b[j] = b;

@@ -54,7 +54,9 @@ impl Scene {
     #[must_use]
     pub fn orthographic(lo: Vec2, hi: Vec2, depth: f32) -> Self {
         Self {
-            view_proj: glam::camera::rh::proj::directx::orthographic(lo.x, hi.x, lo.y, hi.y, -depth, depth),
+            view_proj: glam::camera::rh::proj::directx::orthographic(
+                lo.x, hi.x, lo.y, hi.y, -depth, depth,
+            ),
             eye: Vec3::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 100.0),
             lights: [LIGHT_0, LIGHT_1],
             background: Rgba::BLACK,
@@ -68,7 +70,8 @@ impl Scene {
     #[must_use]
     pub fn perspective(eye: Vec3, target: Vec3, width: u32, height: u32) -> Self {
         let aspect = width.max(1) as f32 / height.max(1) as f32;
-        let proj = glam::camera::rh::proj::directx::perspective(45f32.to_radians(), aspect, 0.1, 100.0);
+        let proj =
+            glam::camera::rh::proj::directx::perspective(45f32.to_radians(), aspect, 0.1, 100.0);
         Self {
             view_proj: proj * glam::camera::rh::view::look_at_mat4(eye, target, Vec3::Y),
             eye,
@@ -219,7 +222,9 @@ impl Trimming {
                 TrimCurve::Cubic(p) => (3, p.to_vec()),
             };
             if pts.iter().any(|p| !p.is_finite()) {
-                return Err(TessError::Invalid("a trim curve point is not finite".into()));
+                return Err(TessError::Invalid(
+                    "a trim curve point is not finite".into(),
+                ));
             }
             if curves.len() == MAX_TRIM_CURVES {
                 return Err(TessError::Invalid(format!(
@@ -261,7 +266,9 @@ impl Trimming {
                 ),
             };
             if !params.is_finite() {
-                return Err(TessError::Invalid("a trim shape parameter is not finite".into()));
+                return Err(TessError::Invalid(
+                    "a trim shape parameter is not finite".into(),
+                ));
             }
             *slot = GpuTrimShape {
                 kind,
@@ -355,9 +362,11 @@ pub fn render(
     let source = [
         shaders::RENDER,
         shaders_used.shading.unwrap_or(shaders::FLAT_SHADING),
-        &shaders_used.trimming.map_or(shaders::NO_TRIMMING.to_owned(), |(wgsl, _)| {
-            [shaders::TRIMMING, wgsl].concat()
-        }),
+        &shaders_used
+            .trimming
+            .map_or(shaders::NO_TRIMMING.to_owned(), |(wgsl, _)| {
+                [shaders::TRIMMING, wgsl].concat()
+            }),
     ]
     .concat();
     let module = gpu.shader("render", &source)?;
