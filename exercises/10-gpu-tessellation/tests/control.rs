@@ -14,10 +14,16 @@ use proptest::prelude::*;
 const VIEWPORT: Vec2 = Vec2::new(640.0, 480.0);
 
 /// Control-point indices of the four boundaries, in `outer` order.
-const BOUNDARIES: [[usize; 4]; 4] = [[0, 4, 8, 12], [0, 1, 2, 3], [3, 7, 11, 15], [12, 13, 14, 15]];
+const BOUNDARIES: [[usize; 4]; 4] = [
+    [0, 4, 8, 12],
+    [0, 1, 2, 3],
+    [3, 7, 11, 15],
+    [12, 13, 14, 15],
+];
 
 fn camera(eye: Vec3) -> Mat4 {
-    let proj = glam::camera::rh::proj::directx::perspective(0.9, VIEWPORT.x / VIEWPORT.y, 0.1, 50.0);
+    let proj =
+        glam::camera::rh::proj::directx::perspective(0.9, VIEWPORT.x / VIEWPORT.y, 0.1, 50.0);
     proj * glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y)
 }
 
@@ -53,14 +59,24 @@ fn uniform_levels_are_clamped_to_one_and_64() {
     let wgsl = control_wgsl();
     let Some(gpu) = common::gpu() else { return };
     let patches = [BezierPatch::flat(Vec2::ZERO, Vec2::ONE, 0.0)];
-    for (asked, expected) in [(7.25, 7.25), (0.5, 1.0), (1.0, 1.0), (64.0, 64.0), (1000.0, 64.0)] {
+    for (asked, expected) in [
+        (7.25, 7.25),
+        (0.5, 1.0),
+        (1.0, 1.0),
+        (64.0, 64.0),
+        (1000.0, 64.0),
+    ] {
         let settings = ControlSettings {
             view_proj: Mat4::IDENTITY,
             viewport: VIEWPORT,
             mode: LevelMode::Uniform(asked),
         };
         let levels = run_control(&gpu, wgsl, &patches, &settings).unwrap();
-        assert_eq!(levels, [QuadLevels::uniform(expected)], "uniform level {asked}");
+        assert_eq!(
+            levels,
+            [QuadLevels::uniform(expected)],
+            "uniform level {asked}"
+        );
     }
 }
 
@@ -80,11 +96,23 @@ fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
         },
     };
     let levels = run_control(&gpu, wgsl, &[patch], &settings).unwrap()[0];
-    assert_eq!(levels.outer[0], MAX_TESS_LEVEL, "u = 0 holds P0: {levels:?}");
-    assert_eq!(levels.outer[1], MAX_TESS_LEVEL, "v = 0 holds P0: {levels:?}");
+    assert_eq!(
+        levels.outer[0], MAX_TESS_LEVEL,
+        "u = 0 holds P0: {levels:?}"
+    );
+    assert_eq!(
+        levels.outer[1], MAX_TESS_LEVEL,
+        "v = 0 holds P0: {levels:?}"
+    );
     let expected = cpu_levels(&patch, view_proj, 10.0);
-    assert!(close(levels.outer[2], expected.outer[2]), "{levels:?} vs {expected:?}");
-    assert!(close(levels.outer[3], expected.outer[3]), "{levels:?} vs {expected:?}");
+    assert!(
+        close(levels.outer[2], expected.outer[2]),
+        "{levels:?} vs {expected:?}"
+    );
+    assert!(
+        close(levels.outer[3], expected.outer[3]),
+        "{levels:?} vs {expected:?}"
+    );
     assert_eq!(levels.inner, [MAX_TESS_LEVEL; 2]);
 }
 

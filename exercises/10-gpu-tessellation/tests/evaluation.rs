@@ -30,7 +30,12 @@ fn spacing() -> impl Strategy<Value = Spacing> {
     ]
 }
 
-fn evaluate_quads(gpu: &Gpu, wgsl: &str, patches: &[BezierPatch], domains: &[Domain]) -> Vec<GpuVertex> {
+fn evaluate_quads(
+    gpu: &Gpu,
+    wgsl: &str,
+    patches: &[BezierPatch],
+    domains: &[Domain],
+) -> Vec<GpuVertex> {
     let refs: Vec<&Domain> = domains.iter().collect();
     run_evaluation(gpu, wgsl, Patches::Quads(patches), &refs)
         .unwrap()
@@ -38,7 +43,12 @@ fn evaluate_quads(gpu: &Gpu, wgsl: &str, patches: &[BezierPatch], domains: &[Dom
         .unwrap()
 }
 
-fn evaluate_triangles(gpu: &Gpu, wgsl: &str, triangles: &[BezierTriangle], domains: &[Domain]) -> Vec<GpuVertex> {
+fn evaluate_triangles(
+    gpu: &Gpu,
+    wgsl: &str,
+    triangles: &[BezierTriangle],
+    domains: &[Domain],
+) -> Vec<GpuVertex> {
     let refs: Vec<&Domain> = domains.iter().collect();
     run_evaluation(gpu, wgsl, Patches::Triangles(triangles), &refs)
         .unwrap()
@@ -48,7 +58,12 @@ fn evaluate_triangles(gpu: &Gpu, wgsl: &str, triangles: &[BezierTriangle], domai
 
 /// Checks one GPU vertex against the CPU point; `cross_length` is the CPU's
 /// unnormalised normal length (normals are skipped where it is tiny).
-fn check(got: &GpuVertex, expected: SurfacePoint, cross_length: f64, what: &str) -> Result<(), TestCaseError> {
+fn check(
+    got: &GpuVertex,
+    expected: SurfacePoint,
+    cross_length: f64,
+    what: &str,
+) -> Result<(), TestCaseError> {
     let position = got.position.truncate().as_dvec3();
     prop_assert!(
         position.distance(expected.position) <= POSITION_TOLERANCE,
@@ -97,8 +112,13 @@ fn triangle_cross_length(t: &BezierTriangle, uvw: DVec3) -> f64 {
 fn patch_corners_are_the_corner_control_points() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
-    let points: [Vec3; 16] =
-        std::array::from_fn(|k| Vec3::new(k as f32 * 0.1, (k % 5) as f32 * 0.3 - 0.5, (k % 3) as f32 - 1.0));
+    let points: [Vec3; 16] = std::array::from_fn(|k| {
+        Vec3::new(
+            k as f32 * 0.1,
+            (k % 5) as f32 * 0.3 - 0.5,
+            (k % 3) as f32 - 1.0,
+        )
+    });
     let patch = BezierPatch::new(points);
     let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
     let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
@@ -124,7 +144,10 @@ fn flat_patch_has_the_planes_normal_everywhere() {
     let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = Vec3::new(-1.0 + 3.0 * d.x, -0.5 + 2.0 * d.y, 0.5);
-        assert!(v.position.truncate().distance(expected) < 1e-5, "{d}: {v:?}");
+        assert!(
+            v.position.truncate().distance(expected) < 1e-5,
+            "{d}: {v:?}"
+        );
         assert!(v.normal.truncate().distance(Vec3::Z) < 1e-6, "{d}: {v:?}");
     }
 }
@@ -143,7 +166,10 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
     let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
     for (d, v) in domain.points.iter().zip(&got) {
         // Central differences stay inside [0, 1]² away from the corners' sides.
-        let uv = d.truncate().as_dvec2().clamp(DVec2::splat(1e-3), DVec2::splat(1.0 - 1e-3));
+        let uv = d
+            .truncate()
+            .as_dvec2()
+            .clamp(DVec2::splat(1e-3), DVec2::splat(1.0 - 1e-3));
         let expected = patch_cross(&patch, uv).normalize();
         assert!(
             v.normal.truncate().as_dvec3().distance(expected) < 1e-2,
@@ -157,13 +183,20 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
 fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
-    let (a, b, c) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0));
+    let (a, b, c) = (
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+    );
     let triangle = BezierTriangle::flat(a, b, c);
     let domain = triangle_domain(TriangleLevels::uniform(3.0), Spacing::Equal);
     let got = evaluate_triangles(&gpu, wgsl, &[triangle], &[domain.clone()]);
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = a * d.x + b * d.y + c * d.z;
-        assert!(v.position.truncate().distance(expected) < 1e-6, "{d}: {v:?}");
+        assert!(
+            v.position.truncate().distance(expected) < 1e-6,
+            "{d}: {v:?}"
+        );
         assert!(v.normal.truncate().distance(Vec3::Z) < 1e-6, "{d}: {v:?}");
     }
 }
@@ -224,16 +257,37 @@ proptest! {
 fn pn_triangle_interpolates_its_vertices_and_normals() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
-    let vertices = [Vec3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.2), Vec3::new(0.0, 1.0, 0.1)];
-    let normals = [Vec3::new(-0.2, -0.2, 1.0), Vec3::new(0.3, 0.0, 1.0), Vec3::new(0.0, 0.3, 1.0)];
+    let vertices = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.2),
+        Vec3::new(0.0, 1.0, 0.1),
+    ];
+    let normals = [
+        Vec3::new(-0.2, -0.2, 1.0),
+        Vec3::new(0.3, 0.0, 1.0),
+        Vec3::new(0.0, 0.3, 1.0),
+    ];
     let triangle = BezierTriangle::pn_triangle(vertices, normals);
     let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
     let got = evaluate_triangles(&gpu, wgsl, &[triangle], &[domain.clone()]);
     for (d, v) in domain.points.iter().zip(&got) {
-        let corner = if d.x == 1.0 { 0 } else if d.y == 1.0 { 1 } else { 2 };
-        assert!(v.position.truncate().distance(vertices[corner]) < 1e-6, "{d}: {v:?}");
+        let corner = if d.x == 1.0 {
+            0
+        } else if d.y == 1.0 {
+            1
+        } else {
+            2
+        };
+        assert!(
+            v.position.truncate().distance(vertices[corner]) < 1e-6,
+            "{d}: {v:?}"
+        );
         // A PN triangle's normal at a corner is the vertex normal.
         let n = normals[corner].normalize();
-        assert!(v.normal.truncate().distance(n) < 1e-5, "{d}: {:?} vs {n}", v.normal);
+        assert!(
+            v.normal.truncate().distance(n) < 1e-5,
+            "{d}: {:?} vs {n}",
+            v.normal
+        );
     }
 }

@@ -65,7 +65,8 @@ pub fn cpu_picture(width: u32, height: u32, colour: impl Fn(DVec2) -> Rgba) -> C
 /// The brick texture at `(u, v)`, nearest texel (as the given sampler).
 pub fn brick_at(texture: &Canvas, uv: DVec2) -> DVec3 {
     let size = f64::from(texture.width());
-    let texel = |t: f64| ((t.rem_euclid(1.0) * size).floor() as i32).min(texture.width() as i32 - 1);
+    let texel =
+        |t: f64| ((t.rem_euclid(1.0) * size).floor() as i32).min(texture.width() as i32 - 1);
     let c = texture
         .get(Pixel::new(texel(uv.x), texel(uv.y)))
         .unwrap_or(Rgba::BLACK);
@@ -73,7 +74,13 @@ pub fn brick_at(texture: &Canvas, uv: DVec2) -> DVec3 {
 }
 
 /// Seed 000's Phong model with two lights (Listing 13, lines 53-75), in f64.
-pub fn phong(position: DVec3, normal: DVec3, eye: DVec3, lights: [Vec3; 2], diffuse: DVec3) -> DVec3 {
+pub fn phong(
+    position: DVec3,
+    normal: DVec3,
+    eye: DVec3,
+    lights: [Vec3; 2],
+    diffuse: DVec3,
+) -> DVec3 {
     let e = (eye - position).normalize();
     let mut colour = diffuse * 0.1;
     for light in lights {
