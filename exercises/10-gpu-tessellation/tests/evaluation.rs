@@ -121,7 +121,7 @@ fn patch_corners_are_the_corner_control_points() {
     });
     let patch = BezierPatch::new(points);
     let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = match (d.x as u32, d.y as u32) {
             (0, 0) => 0,
@@ -141,7 +141,7 @@ fn flat_patch_has_the_planes_normal_everywhere() {
     // The plane z = 0.5 seen from +z, u along x and v along y: normal +z.
     let patch = BezierPatch::flat(Vec2::new(-1.0, -0.5), Vec2::new(2.0, 1.5), 0.5);
     let domain = quad_domain(QuadLevels::uniform(5.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = Vec3::new(-1.0 + 3.0 * d.x, -0.5 + 2.0 * d.y, 0.5);
         assert!(
@@ -163,7 +163,7 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
         patch.points[i].z = i as f32 / 3.0;
     }
     let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], &[domain.clone()]);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         // Central differences stay inside [0, 1]² away from the corners' sides.
         let uv = d
@@ -190,7 +190,7 @@ fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
     );
     let triangle = BezierTriangle::flat(a, b, c);
     let domain = triangle_domain(TriangleLevels::uniform(3.0), Spacing::Equal);
-    let got = evaluate_triangles(&gpu, wgsl, &[triangle], &[domain.clone()]);
+    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = a * d.x + b * d.y + c * d.z;
         assert!(
@@ -269,7 +269,7 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
     ];
     let triangle = BezierTriangle::pn_triangle(vertices, normals);
     let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_triangles(&gpu, wgsl, &[triangle], &[domain.clone()]);
+    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = if d.x == 1.0 {
             0

@@ -131,12 +131,12 @@ fn clamped_level(level: f32, spacing: Spacing) -> Option<(f64, u32)> {
         Spacing::FractionalOdd => {
             let f = f.clamp(1.0, f64::from(MAX_TESS_LEVEL) - 1.0);
             let n = f.ceil() as u32;
-            (f, if n % 2 == 1 { n } else { n + 1 })
+            (f, if n.is_multiple_of(2) { n + 1 } else { n })
         }
         Spacing::FractionalEven => {
             let f = f.clamp(2.0, f64::from(MAX_TESS_LEVEL));
             let n = f.ceil() as u32;
-            (f, if n % 2 == 0 { n } else { n + 1 })
+            (f, if n.is_multiple_of(2) { n } else { n + 1 })
         }
     })
 }
@@ -253,6 +253,11 @@ fn add_point(domain: &mut Domain, p: Vec3) -> u32 {
     (domain.points.len() - 1) as u32
 }
 
+/// One side of the quad ring: its outer level's index, its two corners
+/// (point indices), whether u runs along it, and the inner grid cells
+/// `(row, column)` facing it.
+type Side = (usize, u32, u32, bool, Vec<(usize, usize)>);
+
 /// The quad domain `[0,1]²` for the given levels (GLSL `layout(quads)`).
 #[must_use]
 pub fn quad_domain(levels: QuadLevels, spacing: Spacing) -> Domain {
@@ -307,7 +312,7 @@ pub fn quad_domain(levels: QuadLevels, spacing: Spacing) -> Domain {
     // it, and the inner grid's side running the same way.
     let column = |c: usize| (0..rows).map(move |r| (r, c));
     let row = |r: usize| (0..cols).map(move |c| (r, c));
-    let sides: [(usize, u32, u32, bool, Vec<(usize, usize)>); 4] = [
+    let sides: [Side; 4] = [
         (1, corners[0], corners[1], true, row(0).collect()),
         (2, corners[1], corners[2], false, column(cols - 1).collect()),
         (3, corners[3], corners[2], true, row(rows - 1).collect()),

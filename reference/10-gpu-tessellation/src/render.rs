@@ -520,7 +520,9 @@ pub fn render(
             usage: wgpu::BufferUsages::INDEX,
         })
     };
-    let buffers: Vec<(wgpu::Buffer, u32, Option<(wgpu::Buffer, u32)>)> = meshes
+    // Per mesh: the triangle index buffer and count, and the edges' if any.
+    type Indices = (wgpu::Buffer, u32);
+    let buffers: Vec<(wgpu::Buffer, u32, Option<Indices>)> = meshes
         .iter()
         .map(|m| {
             let tri: Vec<u32> = m.triangles.iter().flatten().copied().collect();
