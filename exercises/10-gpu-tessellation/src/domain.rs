@@ -160,10 +160,10 @@ fn cuts(f: f64, n: u32, spacing: Spacing) -> Vec<f32> {
         let long = 1.0 / f;
         let short = (1.0 - f64::from(n - 2) * long) / 2.0;
         // Long segments on each side of the centre group.
-        let side = if n % 2 == 1 { (n - 3) / 2 } else { (n - 2) / 2 } as usize;
+        let side = if n.is_multiple_of(2) { (n - 2) / 2 } else { (n - 3) / 2 } as usize;
         let mut v = vec![long; side];
         v.push(short);
-        if n % 2 == 1 {
+        if !n.is_multiple_of(2) {
             v.push(long);
         }
         v.push(short);
@@ -173,10 +173,16 @@ fn cuts(f: f64, n: u32, spacing: Spacing) -> Vec<f32> {
     let n = lengths.len();
     let mut t = vec![0.0_f32; n + 1];
     // Prefix sums from the left for the first half, mirrored for the second.
+    // Rounded to multiples of 2⁻²⁴, so that `1 − t` is exact in f32 and
+    // mirroring twice gives `t` back: `t[n − i] = 1 − t[i]` for every i.
+    const GRID: f64 = (1 << 24) as f64;
     let mut sum = 0.0_f64;
     for i in 0..=n / 2 {
-        t[i] = sum as f32;
+        t[i] = ((sum * GRID).round() / GRID) as f32;
         sum += lengths[i.min(n - 1)];
+    }
+    if n.is_multiple_of(2) {
+        t[n / 2] = 0.5;
     }
     for i in 0..=n / 2 {
         t[n - i] = 1.0 - t[i];
