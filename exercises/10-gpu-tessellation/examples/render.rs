@@ -141,9 +141,9 @@ fn main() -> Result<(), TessError> {
     for figure in figures {
         let many = figure.patches.len() > 1;
         let eye = if many {
-            Vec3::new(0.0, 2.6, 2.6)
+            Vec3::new(0.0, 2.2, 2.3)
         } else {
-            Vec3::new(0.0, 1.4, 1.5)
+            Vec3::new(0.0, 1.1, 1.2)
         };
         let scene = Scene::perspective(eye, Vec3::new(0.0, 0.1, 0.0), SIZE, SIZE);
         let settings = ControlSettings {
