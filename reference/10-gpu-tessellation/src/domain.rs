@@ -160,7 +160,11 @@ fn cuts(f: f64, n: u32, spacing: Spacing) -> Vec<f32> {
         let long = 1.0 / f;
         let short = (1.0 - f64::from(n - 2) * long) / 2.0;
         // Long segments on each side of the centre group.
-        let side = if n.is_multiple_of(2) { (n - 2) / 2 } else { (n - 3) / 2 } as usize;
+        let side = if n.is_multiple_of(2) {
+            (n - 2) / 2
+        } else {
+            (n - 3) / 2
+        } as usize;
         let mut v = vec![long; side];
         v.push(short);
         if !n.is_multiple_of(2) {
