@@ -171,7 +171,7 @@ proptest! {
         let settings = ControlSettings {
             view_proj: camera(Vec3::new(eye.0, eye.1, eye.2)),
             viewport: VIEWPORT,
-            mode: LevelMode::Adaptive { pixels_per_segment: 3.0 },
+            mode: LevelMode::Adaptive { pixels_per_segment: 37.0 },
         };
         let levels = run_control(&gpu, wgsl, &patches, &settings).unwrap();
         for pair in levels.chunks_exact(2) {
