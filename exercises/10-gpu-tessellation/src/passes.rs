@@ -1,0 +1,347 @@
+//! The compute passes that stand in for the tessellation stages wgpu lacks:
+//! the control pass (levels per patch, your task 1) and the evaluation pass
+//! (surface points per domain point, your task 3). Given code: it pastes
+//! your WGSL between the pieces of [`crate::shaders`], runs it and reads
+//! the results back.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use gpu::{Gpu, read_buffer, wgpu};
+use wgpu::util::DeviceExt;
+
+use crate::TessError;
+use crate::domain::{Domain, QuadLevels};
+use crate::patch::{BezierPatch, BezierTriangle, GpuVertex};
+use crate::shaders;
+
+/// How the control pass chooses levels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LevelMode {
+    /// Every level equal to this one (the seed's `tessLevel`, Listing 1).
+    Uniform(f32),
+    /// From each boundary curve's projected length in pixels, divided by
+    /// this target segment length (seed 001 §2.1, per-patch adaptive).
+    Adaptive {
+        /// The wanted length of one segment on screen, in pixels.
+        pixels_per_segment: f32,
+    },
+}
+
+/// What the control pass needs besides the patches.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ControlSettings {
+    /// World to clip space.
+    pub view_proj: Mat4,
+    /// Viewport size in pixels.
+    pub viewport: Vec2,
+    /// Uniform or adaptive levels.
+    pub mode: LevelMode,
+}
+
+/// WGSL `ControlParams` (96 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct ControlParams {
+    view_proj: [[f32; 4]; 4],
+    viewport: [f32; 2],
+    mode: u32,
+    uniform_level: f32,
+    pixels_per_segment: f32,
+    pad: [f32; 3],
+}
+
+/// WGSL `TessLevels` (32 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct GpuLevels {
+    outer: [f32; 4],
+    inner: [f32; 2],
+    pad: [f32; 2],
+}
+
+/// WGSL `Job`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct Job {
+    domain_offset: u32,
+    point_count: u32,
+    vertex_offset: u32,
+    pad: u32,
+}
+
+/// Threads per workgroup of both passes (`@workgroup_size(64)`).
+const WORKGROUP_SIZE: u32 = 64;
+
+fn storage(gpu: &Gpu, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> wgpu::Buffer {
+    // wgpu rejects empty bindings: bind at least 16 bytes.
+    let mut contents = bytes.to_vec();
+    contents.resize(bytes.len().max(16), 0);
+    gpu.device
+        .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: &contents,
+            usage: wgpu::BufferUsages::STORAGE | extra,
+        })
+}
+
+fn compute_pipeline(
+    gpu: &Gpu,
+    source: &str,
+    entry: &str,
+) -> Result<wgpu::ComputePipeline, TessError> {
+    let module = gpu.shader(entry, source)?;
+    Ok(gpu.validated(entry, || {
+        gpu.device
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(entry),
+                layout: None,
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+    })?)
+}
+
+fn bind(
+    gpu: &Gpu,
+    pipeline: &wgpu::ComputePipeline,
+    buffers: &[(u32, &wgpu::Buffer)],
+) -> Result<wgpu::BindGroup, TessError> {
+    let entries: Vec<wgpu::BindGroupEntry<'_>> = buffers
+        .iter()
+        .map(|&(binding, buffer)| wgpu::BindGroupEntry {
+            binding,
+            resource: buffer.as_entire_binding(),
+        })
+        .collect();
+    Ok(gpu.validated("bind group", || {
+        gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &entries,
+        })
+    })?)
+}
+
+fn dispatch(gpu: &Gpu, pipeline: &wgpu::ComputePipeline, group: &wgpu::BindGroup, size: [u32; 2]) {
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, group, &[]);
+        pass.dispatch_workgroups(size[0].div_ceil(WORKGROUP_SIZE), size[1], 1);
+    }
+    gpu.queue.submit([encoder.finish()]);
+}
+
+/// Runs the control pass with your `control_wgsl` (task 1) over `patches`
+/// and returns one set of levels per patch.
+///
+/// Errors: a level or target that is not a positive finite number, a
+/// non-finite matrix or viewport ([`TessError::Invalid`]); WGSL that does
+/// not compile or validate ([`TessError::Gpu`]).
+pub fn run_control(
+    gpu: &Gpu,
+    control_wgsl: &str,
+    patches: &[BezierPatch],
+    settings: &ControlSettings,
+) -> Result<Vec<QuadLevels>, TessError> {
+    let (mode, uniform_level, pixels_per_segment) = match settings.mode {
+        LevelMode::Uniform(level) => (0, level, 1.0),
+        LevelMode::Adaptive { pixels_per_segment } => (1, 1.0, pixels_per_segment),
+    };
+    for (what, x) in [
+        ("the uniform level", uniform_level),
+        ("pixels per segment", pixels_per_segment),
+    ] {
+        if !(x.is_finite() && x > 0.0) {
+            return Err(TessError::Invalid(format!(
+                "{what} must be a positive finite number, not {x}"
+            )));
+        }
+    }
+    if !settings.view_proj.is_finite() || !settings.viewport.is_finite() {
+        return Err(TessError::Invalid(
+            "the view-projection matrix and the viewport must be finite".into(),
+        ));
+    }
+    if patches.is_empty() {
+        return Ok(Vec::new());
+    }
+    let source = [shaders::COMMON, shaders::CONTROL, control_wgsl].concat();
+    let pipeline = compute_pipeline(gpu, &source, "control_main")?;
+    let gpu_patches: Vec<[Vec4; 16]> = patches.iter().map(BezierPatch::to_gpu).collect();
+    let patch_buffer = storage(
+        gpu,
+        "patches",
+        bytemuck::cast_slice(&gpu_patches),
+        wgpu::BufferUsages::empty(),
+    );
+    let params = ControlParams {
+        view_proj: settings.view_proj.to_cols_array_2d(),
+        viewport: settings.viewport.to_array(),
+        mode,
+        uniform_level,
+        pixels_per_segment,
+        pad: [0.0; 3],
+    };
+    let params_buffer = gpu
+        .device
+        .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("control params"),
+            contents: bytemuck::bytes_of(&params),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+    let zeros = vec![GpuLevels::zeroed(); patches.len()];
+    let levels_buffer = storage(
+        gpu,
+        "levels",
+        bytemuck::cast_slice(&zeros),
+        wgpu::BufferUsages::COPY_SRC,
+    );
+    let group = bind(
+        gpu,
+        &pipeline,
+        &[(0, &patch_buffer), (1, &params_buffer), (2, &levels_buffer)],
+    )?;
+    dispatch(gpu, &pipeline, &group, [patches.len() as u32, 1]);
+    let levels: Vec<GpuLevels> = read_buffer(gpu, &levels_buffer)?;
+    Ok(levels[..patches.len()]
+        .iter()
+        .map(|l| QuadLevels {
+            outer: l.outer,
+            inner: l.inner,
+        })
+        .collect())
+}
+
+/// Vertices on the GPU, as the evaluation pass wrote them: usable as a
+/// vertex buffer without a round trip.
+#[derive(Debug)]
+pub struct GpuMesh {
+    /// `vertex_count` [`GpuVertex`]es (usage `STORAGE | VERTEX | COPY_SRC`).
+    pub vertices: wgpu::Buffer,
+    /// Number of vertices.
+    pub vertex_count: u32,
+    /// Triangles, indices already offset per patch.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl GpuMesh {
+    /// Copies the vertices back to the CPU.
+    pub fn read(&self, gpu: &Gpu) -> Result<Vec<GpuVertex>, TessError> {
+        let mut v: Vec<GpuVertex> = read_buffer(gpu, &self.vertices)?;
+        v.truncate(self.vertex_count as usize);
+        Ok(v)
+    }
+}
+
+/// Which patches the evaluation pass reads.
+#[derive(Clone, Copy, Debug)]
+pub enum Patches<'a> {
+    /// Bicubic patches, `evaluate_patch`.
+    Quads(&'a [BezierPatch]),
+    /// Cubic Bézier triangles, `evaluate_triangle`.
+    Triangles(&'a [BezierTriangle]),
+}
+
+impl Patches<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Patches::Quads(p) => p.len(),
+            Patches::Triangles(t) => t.len(),
+        }
+    }
+}
+
+/// Runs the evaluation pass with your `evaluation_wgsl` (task 3): patch
+/// `k` is evaluated at every point of `domains[k]` (quads read `(u, v)`,
+/// triangles `(u, v, w)`).
+///
+/// Errors: `domains.len()` differs from the number of patches, or a domain
+/// point is not finite ([`TessError::Invalid`]); WGSL errors ([`TessError::Gpu`]).
+pub fn run_evaluation(
+    gpu: &Gpu,
+    evaluation_wgsl: &str,
+    patches: Patches<'_>,
+    domains: &[&Domain],
+) -> Result<GpuMesh, TessError> {
+    if domains.len() != patches.len() {
+        return Err(TessError::Invalid(format!(
+            "{} patches but {} domains",
+            patches.len(),
+            domains.len()
+        )));
+    }
+    if domains
+        .iter()
+        .any(|d| d.points.iter().any(|p| !p.is_finite()))
+    {
+        return Err(TessError::Invalid("a domain point is not finite".into()));
+    }
+    let mut jobs = Vec::with_capacity(domains.len());
+    let mut points: Vec<Vec4> = Vec::new();
+    let mut triangles = Vec::new();
+    let mut max_points = 0;
+    for domain in domains {
+        let offset = points.len() as u32;
+        jobs.push(Job {
+            domain_offset: offset,
+            point_count: domain.points.len() as u32,
+            vertex_offset: offset,
+            pad: 0,
+        });
+        max_points = max_points.max(domain.points.len() as u32);
+        points.extend(domain.points.iter().map(|p: &Vec3| p.extend(0.0)));
+        triangles.extend(domain.triangles.iter().map(|t| t.map(|k| k + offset)));
+    }
+    let vertex_count = points.len() as u32;
+    let zeros = vec![GpuVertex::default(); points.len()];
+    let vertices = storage(
+        gpu,
+        "vertices",
+        bytemuck::cast_slice(&zeros),
+        wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
+    );
+    if jobs.is_empty() || max_points == 0 {
+        return Ok(GpuMesh {
+            vertices,
+            vertex_count,
+            triangles,
+        });
+    }
+    let source = [shaders::COMMON, shaders::EVALUATION, evaluation_wgsl].concat();
+    let none = wgpu::BufferUsages::empty();
+    let domain_buffer = storage(gpu, "domain", bytemuck::cast_slice(&points), none);
+    let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);
+    let (entry, patch_binding, patch_buffer) = match patches {
+        Patches::Quads(p) => {
+            let data: Vec<[Vec4; 16]> = p.iter().map(BezierPatch::to_gpu).collect();
+            let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
+            ("evaluate_quads", 0, buffer)
+        }
+        Patches::Triangles(t) => {
+            let data: Vec<[Vec4; 10]> = t.iter().map(BezierTriangle::to_gpu).collect();
+            let buffer = storage(gpu, "triangles", bytemuck::cast_slice(&data), none);
+            ("evaluate_triangles", 1, buffer)
+        }
+    };
+    let pipeline = compute_pipeline(gpu, &source, entry)?;
+    let group = bind(
+        gpu,
+        &pipeline,
+        &[
+            (patch_binding, &patch_buffer),
+            (2, &domain_buffer),
+            (3, &job_buffer),
+            (4, &vertices),
+        ],
+    )?;
+    dispatch(gpu, &pipeline, &group, [max_points, jobs.len() as u32]);
+    Ok(GpuMesh {
+        vertices,
+        vertex_count,
+        triangles,
+    })
+}

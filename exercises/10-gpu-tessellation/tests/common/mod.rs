@@ -1,0 +1,108 @@
+//! What the tests compare with: definitions evaluated on the CPU in `f64`,
+//! independent of the WGSL you write.
+#![allow(dead_code)] // each test file uses a different part
+
+use std::path::PathBuf;
+
+use canvas::{Canvas, Pixel, Rgba};
+use glam::{DVec2, DVec3, Vec2, Vec3};
+use gpu::Gpu;
+use gpu_tessellation::patch::{BezierPatch, BezierTriangle};
+use proptest::prelude::*;
+use testkit::image::{Tolerance, assert_image_matches};
+
+/// The device, or `None` after a skip line (see `gpu::Gpu::for_tests`).
+/// Call the function under test *before* this, so that an unfinished task
+/// fails even where there is no adapter.
+pub fn gpu() -> Option<Gpu> {
+    Gpu::for_tests()
+}
+
+/// Control points in `[-1, 1]³`.
+pub fn point() -> impl Strategy<Value = Vec3> {
+    (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+/// A random bicubic patch.
+pub fn patch() -> impl Strategy<Value = BezierPatch> {
+    prop::array::uniform16(point()).prop_map(BezierPatch::new)
+}
+
+/// A random cubic Bézier triangle.
+pub fn triangle() -> impl Strategy<Value = BezierTriangle> {
+    prop::array::uniform10(point()).prop_map(|points| BezierTriangle { points })
+}
+
+/// Compares `yours` with a CPU rendering: both are written under the test
+/// output folder (`yours.png`, `reference.png`, `difference.png`), and the
+/// test fails if more than `tolerance.mismatched_fraction` of the pixels
+/// differ by more than `tolerance.channel`.
+#[track_caller]
+pub fn assert_matches_cpu(name: &str, yours: &Canvas, cpu: &Canvas, tolerance: Tolerance) {
+    let path: PathBuf = testkit::output_dir().join(name).join("cpu_reference.png");
+    cpu.save_png(&path)
+        .unwrap_or_else(|e| panic!("{name}: cannot write the CPU reference: {e}"));
+    assert_image_matches(name, yours, &path, tolerance);
+}
+
+/// A canvas whose pixel `(x, y)` is `colour(u, v)` at the pixel centre's
+/// `(u, v) = ((x + ½)/w, (y + ½)/h)`: what a patch filling the picture
+/// under an orthographic view shows.
+pub fn cpu_picture(width: u32, height: u32, colour: impl Fn(DVec2) -> Rgba) -> Canvas {
+    let mut c = Canvas::new(width, height);
+    for y in 0..height as i32 {
+        for x in 0..width as i32 {
+            let uv = DVec2::new(
+                (f64::from(x) + 0.5) / f64::from(width),
+                (f64::from(y) + 0.5) / f64::from(height),
+            );
+            c.set(Pixel::new(x, y), colour(uv));
+        }
+    }
+    c
+}
+
+/// The brick texture at `(u, v)`, nearest texel (as the given sampler).
+pub fn brick_at(texture: &Canvas, uv: DVec2) -> DVec3 {
+    let size = f64::from(texture.width());
+    let texel =
+        |t: f64| ((t.rem_euclid(1.0) * size).floor() as i32).min(texture.width() as i32 - 1);
+    let c = texture
+        .get(Pixel::new(texel(uv.x), texel(uv.y)))
+        .unwrap_or(Rgba::BLACK);
+    DVec3::new(f64::from(c.r), f64::from(c.g), f64::from(c.b))
+}
+
+/// Seed 000's Phong model with two lights (Listing 13, lines 53-75), in f64.
+pub fn phong(
+    position: DVec3,
+    normal: DVec3,
+    eye: DVec3,
+    lights: [Vec3; 2],
+    diffuse: DVec3,
+) -> DVec3 {
+    let e = (eye - position).normalize();
+    let mut colour = diffuse * 0.1;
+    for light in lights {
+        let l = (light.as_dvec3() - position).normalize();
+        let r = -l - 2.0 * normal.dot(-l) * normal;
+        colour += normal.dot(l).max(0.0) * diffuse + r.dot(e).max(0.0).powf(150.0) * DVec3::ONE;
+    }
+    colour
+}
+
+/// An RGBA colour from f64 channels (clamped like a framebuffer).
+pub fn rgba(c: DVec3) -> Rgba {
+    Rgba::new(
+        c.x.clamp(0.0, 1.0) as f32,
+        c.y.clamp(0.0, 1.0) as f32,
+        c.z.clamp(0.0, 1.0) as f32,
+        1.0,
+    )
+}
+
+/// The patch filling `[-1, 1]²` at z = 0: with an identity view, pixel
+/// centre `(x, y)` sees `(u, v) = ((x + ½)/w, (y + ½)/h)`.
+pub fn full_screen_patch() -> BezierPatch {
+    BezierPatch::flat(Vec2::splat(-1.0), Vec2::splat(1.0), 0.0)
+}

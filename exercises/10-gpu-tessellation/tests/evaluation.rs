@@ -1,0 +1,293 @@
+//! Task 3: de Casteljau in WGSL, compared with the CPU evaluation in f64
+//! (`src/patch.rs`) and with exact known answers.
+
+mod common;
+
+use glam::{DVec2, DVec3, Vec2, Vec3};
+use gpu::Gpu;
+use gpu_tessellation::domain::{
+    Domain, QuadLevels, Spacing, TriangleLevels, quad_domain, triangle_domain,
+};
+use gpu_tessellation::evaluation::evaluation_wgsl;
+use gpu_tessellation::passes::{Patches, run_evaluation};
+use gpu_tessellation::patch::{BezierPatch, BezierTriangle, GpuVertex, SurfacePoint};
+use proptest::prelude::*;
+
+/// Largest position difference from the f64 evaluation (control points in
+/// `[-1, 1]³`: a few f32 rounding steps).
+const POSITION_TOLERANCE: f64 = 1e-5;
+/// Largest normal difference (f32 cross products of short tangents).
+const NORMAL_TOLERANCE: f64 = 1e-3;
+/// Normals are compared only where the CPU's unnormalised cross product is
+/// at least this long: near a degenerate point f32 and f64 may disagree.
+const WELL_DEFINED_CROSS: f64 = 1e-2;
+
+fn spacing() -> impl Strategy<Value = Spacing> {
+    prop_oneof![
+        Just(Spacing::Equal),
+        Just(Spacing::FractionalOdd),
+        Just(Spacing::FractionalEven)
+    ]
+}
+
+fn evaluate_quads(
+    gpu: &Gpu,
+    wgsl: &str,
+    patches: &[BezierPatch],
+    domains: &[Domain],
+) -> Vec<GpuVertex> {
+    let refs: Vec<&Domain> = domains.iter().collect();
+    run_evaluation(gpu, wgsl, Patches::Quads(patches), &refs)
+        .unwrap()
+        .read(gpu)
+        .unwrap()
+}
+
+fn evaluate_triangles(
+    gpu: &Gpu,
+    wgsl: &str,
+    triangles: &[BezierTriangle],
+    domains: &[Domain],
+) -> Vec<GpuVertex> {
+    let refs: Vec<&Domain> = domains.iter().collect();
+    run_evaluation(gpu, wgsl, Patches::Triangles(triangles), &refs)
+        .unwrap()
+        .read(gpu)
+        .unwrap()
+}
+
+/// Checks one GPU vertex against the CPU point; `cross_length` is the CPU's
+/// unnormalised normal length (normals are skipped where it is tiny).
+fn check(
+    got: &GpuVertex,
+    expected: SurfacePoint,
+    cross_length: f64,
+    what: &str,
+) -> Result<(), TestCaseError> {
+    let position = got.position.truncate().as_dvec3();
+    prop_assert!(
+        position.distance(expected.position) <= POSITION_TOLERANCE,
+        "{}: position {:?}, expected {:?}",
+        what,
+        position,
+        expected.position
+    );
+    if cross_length >= WELL_DEFINED_CROSS {
+        let normal = got.normal.truncate().as_dvec3();
+        prop_assert!(
+            normal.distance(expected.normal) <= NORMAL_TOLERANCE,
+            "{}: normal {:?}, expected {:?}",
+            what,
+            normal,
+            expected.normal
+        );
+    }
+    Ok(())
+}
+
+/// ∂P/∂u × ∂P/∂v by central differences, independent of de Casteljau.
+fn patch_cross(patch: &BezierPatch, uv: DVec2) -> DVec3 {
+    const H: f64 = 1e-4;
+    let p = |u: f64, v: f64| patch.evaluate(DVec2::new(u, v)).position;
+    let du = (p(uv.x + H, uv.y) - p(uv.x - H, uv.y)) / (2.0 * H);
+    let dv = (p(uv.x, uv.y + H) - p(uv.x, uv.y - H)) / (2.0 * H);
+    du.cross(dv)
+}
+
+/// The length of [`patch_cross`], to decide whether the normal is well defined.
+fn patch_cross_length(patch: &BezierPatch, uv: DVec2) -> f64 {
+    patch_cross(patch, uv).length()
+}
+
+fn triangle_cross_length(t: &BezierTriangle, uvw: DVec3) -> f64 {
+    const H: f64 = 1e-4;
+    let p = |d: DVec3| t.evaluate(d).position;
+    // Directions within the plane u + v + w = 1.
+    let dv = (p(uvw + DVec3::new(-H, H, 0.0)) - p(uvw - DVec3::new(-H, H, 0.0))) / (2.0 * H);
+    let dw = (p(uvw + DVec3::new(-H, 0.0, H)) - p(uvw - DVec3::new(-H, 0.0, H))) / (2.0 * H);
+    dv.cross(dw).length()
+}
+
+#[test]
+fn patch_corners_are_the_corner_control_points() {
+    let wgsl = evaluation_wgsl();
+    let Some(gpu) = common::gpu() else { return };
+    let points: [Vec3; 16] = std::array::from_fn(|k| {
+        Vec3::new(
+            k as f32 * 0.1,
+            (k % 5) as f32 * 0.3 - 0.5,
+            (k % 3) as f32 - 1.0,
+        )
+    });
+    let patch = BezierPatch::new(points);
+    let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    for (d, v) in domain.points.iter().zip(&got) {
+        let corner = match (d.x as u32, d.y as u32) {
+            (0, 0) => 0,
+            (1, 0) => 3,
+            (0, 1) => 12,
+            _ => 15,
+        };
+        assert_eq!(v.position.truncate(), points[corner], "corner at {d}");
+        assert_eq!(v.param.truncate(), *d, "the domain point is passed on");
+    }
+}
+
+#[test]
+fn flat_patch_has_the_planes_normal_everywhere() {
+    let wgsl = evaluation_wgsl();
+    let Some(gpu) = common::gpu() else { return };
+    // The plane z = 0.5 seen from +z, u along x and v along y: normal +z.
+    let patch = BezierPatch::flat(Vec2::new(-1.0, -0.5), Vec2::new(2.0, 1.5), 0.5);
+    let domain = quad_domain(QuadLevels::uniform(5.0), Spacing::Equal);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    for (d, v) in domain.points.iter().zip(&got) {
+        let expected = Vec3::new(-1.0 + 3.0 * d.x, -0.5 + 2.0 * d.y, 0.5);
+        assert!(
+            v.position.truncate().distance(expected) < 1e-5,
+            "{d}: {v:?}"
+        );
+        assert!(v.normal.truncate().distance(Vec3::Z) < 1e-6, "{d}: {v:?}");
+    }
+}
+
+#[test]
+fn normal_uses_the_surface_tangent_not_the_last_rows() {
+    let wgsl = evaluation_wgsl();
+    let Some(gpu) = common::gpu() else { return };
+    // A twisted patch: row v = 1 runs along x, row v = 0 along x but rising
+    // in z. At v = 0 the u tangent is (1, 0, 1)/√2-ish, not the last row's (1, 0, 0).
+    let mut patch = BezierPatch::flat(Vec2::ZERO, Vec2::ONE, 0.0);
+    for i in 0..4 {
+        patch.points[i].z = i as f32 / 3.0;
+    }
+    let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
+    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    for (d, v) in domain.points.iter().zip(&got) {
+        // Central differences stay inside [0, 1]² away from the corners' sides.
+        let uv = d
+            .truncate()
+            .as_dvec2()
+            .clamp(DVec2::splat(1e-3), DVec2::splat(1.0 - 1e-3));
+        let expected = patch_cross(&patch, uv).normalize();
+        assert!(
+            v.normal.truncate().as_dvec3().distance(expected) < 1e-2,
+            "at {d}: normal {:?}, expected {expected:?}",
+            v.normal,
+        );
+    }
+}
+
+#[test]
+fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
+    let wgsl = evaluation_wgsl();
+    let Some(gpu) = common::gpu() else { return };
+    let (a, b, c) = (
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+    );
+    let triangle = BezierTriangle::flat(a, b, c);
+    let domain = triangle_domain(TriangleLevels::uniform(3.0), Spacing::Equal);
+    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
+    for (d, v) in domain.points.iter().zip(&got) {
+        let expected = a * d.x + b * d.y + c * d.z;
+        assert!(
+            v.position.truncate().distance(expected) < 1e-6,
+            "{d}: {v:?}"
+        );
+        assert!(v.normal.truncate().distance(Vec3::Z) < 1e-6, "{d}: {v:?}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, ..testkit::proptest_config() })]
+
+    #[test]
+    fn random_patches_match_the_cpu_evaluation(
+        patches in prop::collection::vec(common::patch(), 1..6),
+        levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0, 0.5f32..20.0), 6),
+        spacing in spacing(),
+    ) {
+        let wgsl = evaluation_wgsl();
+        let Some(gpu) = common::gpu() else { return Ok(()) };
+        let domains: Vec<Domain> = patches
+            .iter()
+            .zip(&levels)
+            .map(|(_, &(a, b, c))| quad_domain(QuadLevels { outer: [a, b, c, a], inner: [b, c] }, spacing))
+            .collect();
+        let got = evaluate_quads(&gpu, wgsl, &patches, &domains);
+        let mut k = 0;
+        for (patch, domain) in patches.iter().zip(&domains) {
+            for d in &domain.points {
+                let uv = d.truncate().as_dvec2();
+                check(&got[k], patch.evaluate(uv), patch_cross_length(patch, uv), &format!("patch at {uv}"))?;
+                k += 1;
+            }
+        }
+    }
+
+    #[test]
+    fn random_bezier_triangles_match_the_cpu_evaluation(
+        triangles in prop::collection::vec(common::triangle(), 1..6),
+        levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0), 6),
+        spacing in spacing(),
+    ) {
+        let wgsl = evaluation_wgsl();
+        let Some(gpu) = common::gpu() else { return Ok(()) };
+        let domains: Vec<Domain> = triangles
+            .iter()
+            .zip(&levels)
+            .map(|(_, &(o, i))| triangle_domain(TriangleLevels { outer: [o, i, o], inner: i }, spacing))
+            .collect();
+        let got = evaluate_triangles(&gpu, wgsl, &triangles, &domains);
+        let mut k = 0;
+        for (triangle, domain) in triangles.iter().zip(&domains) {
+            for d in &domain.points {
+                let uvw = d.as_dvec3();
+                check(&got[k], triangle.evaluate(uvw), triangle_cross_length(triangle, uvw), &format!("triangle at {uvw}"))?;
+                k += 1;
+            }
+        }
+    }
+}
+
+#[test]
+fn pn_triangle_interpolates_its_vertices_and_normals() {
+    let wgsl = evaluation_wgsl();
+    let Some(gpu) = common::gpu() else { return };
+    let vertices = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.2),
+        Vec3::new(0.0, 1.0, 0.1),
+    ];
+    let normals = [
+        Vec3::new(-0.2, -0.2, 1.0),
+        Vec3::new(0.3, 0.0, 1.0),
+        Vec3::new(0.0, 0.3, 1.0),
+    ];
+    let triangle = BezierTriangle::pn_triangle(vertices, normals);
+    let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
+    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
+    for (d, v) in domain.points.iter().zip(&got) {
+        let corner = if d.x == 1.0 {
+            0
+        } else if d.y == 1.0 {
+            1
+        } else {
+            2
+        };
+        assert!(
+            v.position.truncate().distance(vertices[corner]) < 1e-6,
+            "{d}: {v:?}"
+        );
+        // A PN triangle's normal at a corner is the vertex normal.
+        let n = normals[corner].normalize();
+        assert!(
+            v.normal.truncate().distance(n) < 1e-5,
+            "{d}: {:?} vs {n}",
+            v.normal
+        );
+    }
+}

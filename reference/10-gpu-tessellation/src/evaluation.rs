@@ -1,0 +1,108 @@
+//! Task 3: the tessellation evaluation stage as a compute shader (seed 000
+//! §2.5 and §4.1.2, Listings 4-6; seed 001 §4.1, Bézier triangles).
+//!
+//! OpenGL's TES runs once per domain point the primitive generator makes
+//! and places it on the surface. Here a compute pass
+//! ([`crate::passes::run_evaluation`]) runs one invocation per (patch,
+//! domain point) and calls your WGSL functions.
+
+/// Your WGSL: the two functions
+///
+/// ```wgsl
+/// fn evaluate_patch(patch_index: u32, uv: vec2<f32>) -> SurfacePoint
+/// fn evaluate_triangle(patch_index: u32, uvw: vec3<f32>) -> SurfacePoint
+/// ```
+///
+/// (and any helpers), reading `patches[patch_index].points` and
+/// `triangles[patch_index].points` (declarations in [`crate::shaders::COMMON`]
+/// and [`crate::shaders::EVALUATION`]; the point order is documented in
+/// [`crate::patch`]).
+///
+/// - `evaluate_patch`: de Casteljau along u on each of the four rows, then
+///   along v on the four results (the seed's `doubleDeCasteljau`). The
+///   normal is `normalize(∂P/∂u × ∂P/∂v)`. `∂P/∂v` is `3·(b − a)` of the
+///   v-pass's last-but-one points `a`, `b`; for `∂P/∂u`, carry the u-pass's
+///   last-but-one points of all four rows through the v-pass as well (two
+///   more cubic evaluations). The seed takes the u tangent from the last
+///   row only (Listing 4, `index == 0`), which is the tangent of the
+///   boundary curve `v = 1`, not of the surface at `v`: do not copy that.
+/// - `evaluate_triangle`: three barycentric de Casteljau steps, 10 → 6 → 3
+///   → 1 points, `Q_ijk ← u·Q_(i+1)jk + v·Q_i(j+1)k + w·Q_ij(k+1)`; with
+///   the last-but-one step's points `Q100, Q010, Q001` the normal is
+///   `normalize((Q010 − Q100) × (Q001 − Q100))`.
+///
+/// Limits: where the cross product is shorter than `NORMAL_EPSILON` (a
+/// collapsed edge), return a zero normal instead of dividing by ~0.
+/// Results must match the CPU evaluation ([`crate::patch`]) within `1e-5`
+/// for positions and `1e-3` for normals, for control points in `[-1, 1]³`.
+#[must_use]
+pub fn evaluation_wgsl() -> &'static str {
+    // BEGIN SOLUTION evaluation: write the WGSL fns evaluate_patch and evaluate_triangle (de Casteljau)
+    r"
+// One cubic curve by de Casteljau: returns the point in [0] and the
+// last-but-one points in [1] and [2] (their difference is B'(t) / 3).
+fn cubic(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, p3: vec3<f32>, t: f32) -> array<vec3<f32>, 3> {
+    let a = mix(p0, p1, t);
+    let b = mix(p1, p2, t);
+    let c = mix(p2, p3, t);
+    let d = mix(a, b, t);
+    let e = mix(b, c, t);
+    return array(mix(d, e, t), d, e);
+}
+
+fn unit_or_zero(n: vec3<f32>) -> vec3<f32> {
+    let len = length(n);
+    return select(vec3(0.0), n / len, len > NORMAL_EPSILON);
+}
+
+fn evaluate_patch(patch_index: u32, uv: vec2<f32>) -> SurfacePoint {
+    let p = patches[patch_index].points;
+    var on_rows: array<vec3<f32>, 4>;
+    var row_a: array<vec3<f32>, 4>;
+    var row_b: array<vec3<f32>, 4>;
+    for (var j = 0u; j < 4u; j++) {
+        let r = cubic(p[4u * j].xyz, p[4u * j + 1u].xyz, p[4u * j + 2u].xyz, p[4u * j + 3u].xyz, uv.x);
+        on_rows[j] = r[0];
+        row_a[j] = r[1];
+        row_b[j] = r[2];
+    }
+    let v_pass = cubic(on_rows[0], on_rows[1], on_rows[2], on_rows[3], uv.y);
+    let ua = cubic(row_a[0], row_a[1], row_a[2], row_a[3], uv.y)[0];
+    let ub = cubic(row_b[0], row_b[1], row_b[2], row_b[3], uv.y)[0];
+    let normal = unit_or_zero(cross(ub - ua, v_pass[2] - v_pass[1]));
+    return SurfacePoint(v_pass[0], normal);
+}
+
+// Index of Q_ijk (k = degree - i - j) in a triangle array of that degree.
+fn tri_index(i: u32, j: u32, degree: u32) -> u32 {
+    let row = degree - i;
+    return row * (row + 1u) / 2u + (row - j);
+}
+
+fn evaluate_triangle(patch_index: u32, uvw: vec3<f32>) -> SurfacePoint {
+    var q: array<vec3<f32>, 10>;
+    for (var k = 0u; k < 10u; k++) { q[k] = triangles[patch_index].points[k].xyz; }
+    var last: array<vec3<f32>, 3>;
+    for (var degree = 3u; degree > 0u; degree--) {
+        let lower = degree - 1u;
+        // The next level goes into its own array: no point is overwritten
+        // while a later one still needs it.
+        var next: array<vec3<f32>, 10>;
+        for (var i = 0u; i <= lower; i++) {
+            for (var j = 0u; j <= lower - i; j++) {
+                next[tri_index(i, j, lower)] = uvw.x * q[tri_index(i + 1u, j, degree)]
+                    + uvw.y * q[tri_index(i, j + 1u, degree)]
+                    + uvw.z * q[tri_index(i, j, degree)];
+            }
+        }
+        if lower == 1u {
+            last = array(next[tri_index(1u, 0u, 1u)], next[tri_index(0u, 1u, 1u)], next[tri_index(0u, 0u, 1u)]);
+        }
+        q = next;
+    }
+    let normal = unit_or_zero(cross(last[1] - last[0], last[2] - last[0]));
+    return SurfacePoint(q[0], normal);
+}
+"
+    // END SOLUTION
+}
