@@ -245,20 +245,10 @@ fn url(path: &Path) -> String {
     encoded
 }
 
-/// Text for HTML element content and attribute values.
+/// Text for HTML element content and attribute values: XML's escapes
+/// are HTML's too.
 fn escape(text: &str) -> String {
-    let mut escaped = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => escaped.push_str("&amp;"),
-            '<' => escaped.push_str("&lt;"),
-            '>' => escaped.push_str("&gt;"),
-            '"' => escaped.push_str("&quot;"),
-            '\'' => escaped.push_str("&#39;"),
-            _ => escaped.push(c),
-        }
-    }
-    escaped
+    super::export::xml_text(text)
 }
 
 #[cfg(test)]
@@ -269,7 +259,7 @@ mod tests {
     fn escape_makes_markup_inert() {
         assert_eq!(
             escape("<b>\"x\" & 'y'</b>"),
-            "&lt;b&gt;&quot;x&quot; &amp; &#39;y&#39;&lt;/b&gt;"
+            "&lt;b&gt;&quot;x&quot; &amp; &apos;y&apos;&lt;/b&gt;"
         );
     }
 
