@@ -40,7 +40,8 @@ fn phong_highlight_when_the_eye_is_in_the_reflection() {
     let d = DVec3::new(0.5, 0.25, 1.0);
     let c = phong(DVec3::Y, DVec3::ZERO, DVec3::new(0.0, 5.0, 0.0), d);
     assert!(c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15), "{c}");
-    // Tilted 10° away, cos¹⁵⁰(20°) of the highlight is left... almost nothing.
+    // Tilted 10° away: r₁ · e = cos 10°, and cos¹⁵⁰(10°) ≈ 0.10 of the
+    // highlight is left.
     let e = DVec3::new(
         0.0,
         10.0_f64.to_radians().cos(),

@@ -289,6 +289,28 @@ fn between_the_crossings_of_one_arch() {
 }
 
 #[test]
+fn an_arch_running_right_to_left_is_the_second_sign_case() {
+    // The same arch with its control points reversed: Newton from t = 1
+    // now finds the left crossing (x₁ < 0), from t = 0 the right one
+    // (x₂ > 0) — seed §3.2.1's case 4, which Listing 11 does not test.
+    //
+    //   t₁ (from 1)        t₂ (from 0)
+    //   ●──x₁──── a ────x₂──●        P_0 = (0.8, 0.5) on the right
+    let reversed = [QUADRATIC[2], QUADRATIC[1], QUADRATIC[0]];
+    let s = NewtonSettings::default();
+    for inside in [uv(0.5, 0.6), uv(0.71, 0.6), uv(0.29, 0.6)] {
+        assert!(between_crossings(&reversed, inside, s), "{inside}");
+    }
+    for outside in [uv(0.72, 0.6), uv(0.28, 0.6), uv(0.5, 0.75)] {
+        assert!(!between_crossings(&reversed, outside, s), "{outside}");
+    }
+    // A whole region given from its right end point is the same region.
+    let [a, b, c, d] = QUADRATIC;
+    let trim = NewtonTrim::quadratic([c, b, a, d]).unwrap();
+    assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
+}
+
+#[test]
 fn quadratic_newton_trim_matches_the_exact_region() {
     let trim = NewtonTrim::quadratic(QUADRATIC).unwrap();
     assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
