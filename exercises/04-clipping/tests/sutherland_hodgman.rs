@@ -87,6 +87,25 @@ fn the_closing_edge_is_clipped_too() {
 }
 
 #[test]
+fn crossing_at_a_vertex_on_the_plane_is_that_vertex() {
+    //  y                        A lies on x = w = 1: the edge A → B
+    //  1 C                      crosses at t = 0, and the nudged t is
+    //    |  ╲                   kept in [0, 1], so the new vertex is A
+    //  0 |   A───────B          itself, not a step beyond it
+    //    0   1       3
+    let (a, b, c) = (
+        flat(1.0, 0.0, Rgba::RED),
+        flat(3.0, 0.0, Rgba::GREEN),
+        flat(0.0, 1.0, Rgba::BLUE),
+    );
+    let got = clip_against_plane(&[a, b, c], RIGHT).expect("valid input");
+    assert_eq!(got.len(), 4, "{got:#?}");
+    assert_eq!(got[0], a);
+    assert_eq!(got[1], a, "the crossing on A → B");
+    assert_eq!(got[3], c);
+}
+
+#[test]
 fn polygon_inside_comes_back_unchanged() {
     // A face of the cube lies on the far plane: on-plane vertices are inside.
     let face = [
@@ -487,21 +506,23 @@ proptest! {
     ) {
         let plane = VOLUME_PLANES[k];
         let got = clip_against_plane(&polygon, plane).expect("valid input");
+        // The test `v · p ≤ 0` written out: task 1's `inside` is not used,
+        // so that this task is graded on its own.
+        let inside = |v: ClipVertex| plane.distance(v.position) <= 0.0;
         let n = polygon.len();
         for v in got.iter().filter(|v| !polygon.contains(v)) {
             let on_an_edge = (0..n).any(|i| {
                 let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-                plane.inside(a.position) != plane.inside(b.position)
-                    && is_on_edge(*v, a, b, 1e-4)
+                inside(a) != inside(b) && is_on_edge(*v, a, b, 1e-4)
             });
             prop_assert!(on_an_edge, "{:?} lies on no crossing edge", v);
             prop_assert!(v.position.dot(plane.vector) <= 0.0, "{:?} outside", v);
         }
         // Inside vertices are kept, in order; outside ones are dropped.
         let kept: Vec<ClipVertex> = got.iter().copied().filter(|v| polygon.contains(v)).collect();
-        let inside: Vec<ClipVertex> =
-            polygon.iter().copied().filter(|v| plane.inside(v.position)).collect();
-        prop_assert_eq!(kept, inside);
+        let expected: Vec<ClipVertex> =
+            polygon.iter().copied().filter(|&v| inside(v)).collect();
+        prop_assert_eq!(kept, expected);
     }
 
     #[test]
