@@ -12,9 +12,17 @@ pub fn cargo() -> Command {
 }
 
 /// The workspace root: the parent of the folder this crate lives in.
+///
+/// `cargo xtask` (`cargo run`) tells the running program where that folder
+/// is in `CARGO_MANIFEST_DIR`; that is asked first, because one binary may
+/// serve several checkouts (a shared `CARGO_TARGET_DIR` builds xtask once
+/// for all of them) and must grade the checkout it was started in. The
+/// folder it was compiled in is the fallback.
 #[must_use]
 pub fn project_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    let manifest_dir = std::env::var_os("CARGO_MANIFEST_DIR")
+        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")), PathBuf::from);
+    manifest_dir
         .parent()
         .expect("xtask lives in a subfolder of the workspace")
         .to_path_buf()
