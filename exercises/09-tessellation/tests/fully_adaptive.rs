@@ -153,6 +153,14 @@ fn vector_deviation_measures_the_angle_of_the_sub_chords() {
         !vector_deviation_flat(&straight, 1e-12),
         "a midpoint on the chord never splits"
     );
+    //     V12 (0.5, 0.5)     lopsided: V1→V12 turns by 45°, V12→V2 only
+    //    ╱   ╲               by 18.4° (1 − cos = 0.0513): whichever end
+    //   V1 ──────── V2       comes first, the 45° sub-chord splits
+    let lopsided = edge(bent.v1, bent.v2, at(DVec3::new(0.5, 0.5, 0.0), n));
+    let reversed = edge(bent.v2, bent.v1, lopsided.mid);
+    for e in [&lopsided, &reversed] {
+        assert!(vector_deviation_flat(e, 0.29) && !vector_deviation_flat(e, 0.30));
+    }
     let collapsed = edge(bent.v1, bent.v1, bent.v1);
     assert!(
         !vector_deviation_flat(&collapsed, 1e-12),
@@ -162,13 +170,19 @@ fn vector_deviation_measures_the_angle_of_the_sub_chords() {
 
 #[test]
 fn local_flat_test_compares_the_edge_with_the_normals() {
-    // U = ±x; |U · N1| = 0.6 with N1 = (0.6, 0, 0.8), and 0 with N2 = z.
+    // U = ±x (the edge is 2 long, U is a unit vector); |U · N1| = 0.6
+    // with N1 = (0.6, 0, 0.8), and 0 with N2 = z.
     let e = edge(
         at(DVec3::ZERO, DVec3::new(0.6, 0.0, 0.8)),
+        at(2.0 * DVec3::X, DVec3::Z),
         at(DVec3::X, DVec3::Z),
-        at(DVec3::X / 2.0, DVec3::Z),
     );
     assert!(local_flat(&e, 0.59) && !local_flat(&e, 0.61));
+    let swapped = edge(e.v2, e.v1, e.mid);
+    assert!(
+        local_flat(&swapped, 0.59) && !local_flat(&swapped, 0.61),
+        "either end counts"
+    );
     let flat = edge(at(DVec3::ZERO, DVec3::Z), at(DVec3::X, DVec3::Z), e.mid);
     assert!(!local_flat(&flat, 1e-12));
 }
@@ -204,7 +218,7 @@ fn umbrella_test_compares_the_unit_umbrella_with_the_normal() {
     assert!(!umbrella_flat(&e, 1e-12));
     e.neighbours2 = &bowl;
     assert!(
-        umbrella_flat(&e, 0.5),
+        umbrella_flat(&e, 0.7) && !umbrella_flat(&e, 0.71),
         "V2's umbrella (−1, 0, 1)/√2 counts: 0.707"
     );
     e.neighbours1 = &[];

@@ -150,6 +150,21 @@ fn equal_quads_of_level_three_are_the_regular_grid() {
 }
 
 #[test]
+fn inner_levels_subdivide_u_and_v_of_the_quad() {
+    // inner[0] = 2 cuts u in halves, inner[1] = 4 cuts v in quarters: the
+    // inner grid is the column u = ½ at v = ¼, ½, ¾.
+    let quad = quad_domain([2.0, 4.0], [1.0; 4], Spacing::Equal);
+    let mut inside: Vec<(f64, f64)> = quad
+        .points
+        .iter()
+        .filter(|p| p.x > 0.0 && p.x < 1.0 && p.y > 0.0 && p.y < 1.0)
+        .map(|p| (p.x, p.y))
+        .collect();
+    inside.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(inside, [(0.5, 0.25), (0.5, 0.5), (0.5, 0.75)]);
+}
+
+#[test]
 fn triangle_of_inner_level_two_has_a_centre_point() {
     // ⌊2/2⌋ = 1 concentric triangle, degenerate to the centroid.
     let tri = triangle_domain(2.0, [1.0; 3], Spacing::Equal);
@@ -345,6 +360,21 @@ proptest! {
         if stacked {
             return Ok(());
         }
+        // The inner grid: (u_i, v_j) from the subdivisions of inner[0] and
+        // inner[1] (a level of 1 counting as 1 + ε, i.e. 2 segments).
+        let all_one = inner.iter().chain(&outer).all(|&l| clamp_level(l, spacing).1 == 1);
+        if !all_one {
+            let raised = |l: f64| subdivide_edge(if clamp_level(l, spacing).1 == 1 { 2.0 } else { l }, spacing);
+            let (us, vs) = (raised(inner[0]), raised(inner[1]));
+            let inside: Vec<DVec2> = quad.points.iter().copied().filter(|&p| !on_boundary(p)).collect();
+            prop_assert_eq!(inside.len(), (us.len() - 2) * (vs.len() - 2));
+            for &v in &vs[1..vs.len() - 1] {
+                for &u in &us[1..us.len() - 1] {
+                    let p = DVec2::new(u, v);
+                    prop_assert!(inside.iter().any(|q| q.distance(p) < EXACT), "no inner point at {}", p);
+                }
+            }
+        }
         assert_close(&edge(&|p| near(p.x, 0.0).then_some(p.y)), &subdivide_edge(outer[0], spacing), "u = 0");
         assert_close(&edge(&|p| near(p.y, 0.0).then_some(p.x)), &subdivide_edge(outer[1], spacing), "v = 0");
         assert_close(&edge(&|p| near(p.x, 1.0).then_some(p.y)), &subdivide_edge(outer[2], spacing), "u = 1");
@@ -380,6 +410,21 @@ proptest! {
             assert_close(&edge(0, 1), &subdivide_edge(outer[0], spacing), "u = 0");
             assert_close(&edge(1, 0), &subdivide_edge(outer[1], spacing), "v = 0");
             assert_close(&edge(2, 1), &subdivide_edge(outer[2], spacing), "w = 0");
+        }
+        // The perpendicular construction for every spacing: ring k's side
+        // parallel to v = 0 lies at height d_k/√3 in the plane and carries
+        // the points straight above d_k … d_(n−k) of the inner
+        // subdivision (an inner level of 1 counting as 1 + ε, 2 segments).
+        let all_one = clamp_level(inner, spacing).1 == 1 && counts.iter().all(|&c| c == 1);
+        if !stacked && !all_one {
+            let d = subdivide_edge(if clamp_level(inner, spacing).1 == 1 { 2.0 } else { inner }, spacing);
+            let n = d.len() - 1;
+            for k in 1..=n / 2 {
+                for &x in &d[k..=n - k] {
+                    let expected = DVec2::new(x, d[k] / 3.0f64.sqrt());
+                    prop_assert!(plane.iter().any(|p| p.distance(expected) < 1e-9), "no point of ring {} at {}", k, expected);
+                }
+            }
         }
         // ⌊n/2⌋ concentric triangles: count the distinct distances of the
         // inner ring corners from the centroid (equal spacing only).

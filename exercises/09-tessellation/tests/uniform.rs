@@ -112,6 +112,16 @@ fn one_cell_is_two_triangles() {
         obj.contains("v 1 1 0\n") && obj.contains("f 1/1/1 2/2/2 4/4/4\n"),
         "{obj}"
     );
+    // Writing never panics, not even for an index the mesh does not have.
+    let mut broken = mesh.clone();
+    broken.triangles.push([0, 1, u32::MAX]);
+    let mut obj = Vec::new();
+    broken.write_obj(&mut obj).unwrap();
+    assert!(
+        String::from_utf8(obj)
+            .unwrap()
+            .ends_with("f 1/1/1 2/2/2 4294967296/4294967296/4294967296\n")
+    );
 }
 
 #[test]

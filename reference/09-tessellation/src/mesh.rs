@@ -83,7 +83,8 @@ impl Mesh {
     }
 
     /// Writes Wavefront OBJ: `v`, `vn` and `vt` lines per vertex, `f i/i/i`
-    /// per triangle (OBJ counts from 1).
+    /// per triangle (OBJ counts from 1). Indices are written as they are,
+    /// valid or not (see [`Self::validate`]).
     ///
     /// # Errors
     /// Whatever `out` returns.
@@ -104,7 +105,8 @@ impl Mesh {
             writeln!(out, "vt {} {}", t.x, t.y)?;
         }
         for [a, b, c] in &self.triangles {
-            let (a, b, c) = (a + 1, b + 1, c + 1);
+            // In u64: index u32::MAX + 1 must not overflow.
+            let [a, b, c] = [a, b, c].map(|&i| u64::from(i) + 1);
             writeln!(out, "f {a}/{a}/{a} {b}/{b}/{b} {c}/{c}/{c}")?;
         }
         Ok(())
