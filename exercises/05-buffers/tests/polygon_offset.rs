@@ -87,7 +87,7 @@ fn slope_is_the_larger_partial_derivative() {
         grey(1.0, 4.0, 0.5),
     ];
     assert_eq!(max_depth_slope(tri), Ok(0.0));
-    // tilted(): z = 0.2 + 0.013...·x + 0.06...·y
+    // tilted(): z ≈ 0.126 + 0.0047·x + 0.0646·y
     let m = max_depth_slope(tilted()).unwrap();
     assert!(m > 0.055 && m < 0.07, "m = {m}");
 }
@@ -131,7 +131,7 @@ proptest! {
     }
 }
 
-/// The plane of `tilted()` is `z ≈ 0.2 + 0.0047·x + 0.0646·y`: depth grows
+/// The plane of `tilted()` is `z ≈ 0.126 + 0.0047·x + 0.0646·y`: depth grows
 /// up and to the right. On the edge from (17, 3) to (6, 10) the inside lies
 /// below-left, so wherever the line's pixel centre is inside, the fill is
 /// nearer than the line and hides it: every other pixel or so of that edge
@@ -187,6 +187,24 @@ fn offset_moves_the_fill_back_by_o() {
             );
             checked += 1;
         }
+    });
+    assert!(checked > 20);
+}
+
+#[test]
+fn fill_depth_pulled_past_zero_is_clamped() {
+    // A pull towards the viewer of o = 2⁻²⁴ · (−2²⁵) = −2, more than any
+    // depth: z + o is clamped to 0, as OpenGL clamps it to [0, 1].
+    let pull = PolygonOffset {
+        factor: 0.0,
+        units: -33_554_432.0,
+    };
+    let mut canvas = Canvas::new(20, 12);
+    hidden_line(&mut canvas, &[tilted()], STYLE, Some(pull));
+    let mut checked = 0;
+    fill_triangle(tilted(), canvas.viewport(), |f| {
+        assert_eq!(canvas.depth(f.pixel), Some(0.0), "{}", f.pixel);
+        checked += 1;
     });
     assert!(checked > 20);
 }

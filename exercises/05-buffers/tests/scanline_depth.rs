@@ -103,6 +103,12 @@ fn depth_in_span_follows_the_zp_formula() {
         b: DVec2::new(4.0, 0.25),
     };
     assert_eq!(depth_in_span(&point, 4.0), 0.25);
+    let edge_on = Span {
+        y: 0.0,
+        a: DVec2::new(4.0, 0.25),
+        b: DVec2::new(4.0, 0.75),
+    };
+    assert_eq!(depth_in_span(&edge_on, 4.0), 0.25, "z_a for zero width");
 }
 
 #[test]

@@ -61,7 +61,8 @@ fn subtracting_something_elsewhere_leaves_the_product_whole() {
 fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
     // D at x = 3 overlaps both A (bound up to 1.5) and B (from 3.5) — its
     // bound is [1.5, 4.5] — but A ∩ D's bound is the single plane x = 1.5,
-    // which B's bound misses: A ∩ D ∩ B = ∅, and in A ∩ D − B the B goes.
+    // which B's bound misses: A ∩ D ∩ B = ∅, and in A ∩ D − B the B goes —
+    // also when D comes first, although B's bound meets D's.
     let d = Literal::positive(3);
     let model = Model::new(
         vec![
@@ -74,12 +75,13 @@ fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
             product(&[A, d, B]),
             product(&[A, d, NOT_B]),
             product(&[d, NOT_B]),
+            product(&[d, A, NOT_B]),
         ],
     )
     .expect("valid");
     assert_eq!(
         prune(&model),
-        vec![product(&[A, d]), product(&[d, NOT_B])],
+        vec![product(&[A, d]), product(&[d, NOT_B]), product(&[d, A])],
         "touching bounds count as overlapping"
     );
 }
