@@ -6,7 +6,9 @@
 mod bench;
 mod cargo;
 mod grade;
+mod release;
 mod setup;
+mod stage;
 mod stubs;
 mod test;
 mod topics;
@@ -38,9 +40,28 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
-    /// The project's test command: stubs in sync, reference scores 100 %, stubs score 0.
+    /// The project's test command: stubs in sync, reference scores 100 %, stubs score 0,
+    /// the student edition builds.
     Test,
-    /// Run the benchmarks (`cargo bench -p course-bench`), passing ARGS through.
+    /// Write the solution workspace (the course with reference/ laid over the stubs) to DIR,
+    /// to open in an editor.
+    Stage {
+        /// Lay the reference solutions over the stubs (the only edition there is to stage).
+        #[arg(long, required = true)]
+        reference: bool,
+        /// A new or empty folder, or one written by an earlier `stage`.
+        dir: PathBuf,
+    },
+    /// Write the student edition (no reference/, no benchmarks) to DIR, ready to push.
+    Release {
+        /// A new or empty folder, or an earlier release (updated in place, its .git kept).
+        dir: PathBuf,
+        /// Topics to release: names as for `grade`, or a range such as `01..=03`; default all.
+        #[arg(long, value_delimiter = ',', num_args = 1..)]
+        topics: Vec<String>,
+    },
+    /// Run the benchmarks of the reference solutions (`cargo bench -p course-bench` in the
+    /// stage), passing ARGS through.
     Bench {
         /// Arguments for `cargo bench` (e.g. `-- dda`).
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
@@ -108,6 +129,8 @@ fn main() -> ExitCode {
         Command::Stubs { check } => stubs::run(&root, check),
         Command::Test => test::run(&root),
         Command::Bench { args } => bench::run(&root, &args),
+        Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
+        Command::Release { dir, topics } => release::run(&root, &dir, &topics),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

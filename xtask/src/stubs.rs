@@ -13,8 +13,13 @@
 //! The `todo!` sits at the indentation of the `BEGIN` line. A bare
 //! `// BEGIN SOLUTION` (no `<task>: <instruction>`) removes its region
 //! entirely: helpers and `use` lines only the solution needs. Everything
-//! else, doc comments and signatures included, is copied verbatim.
-//! `src/lib.rs` is hand-written and exists only in `exercises/`.
+//! else, doc comments and signatures included, is copied verbatim, and
+//! the stub is then kept free of the warnings its `todo!`s alone provoke
+//! (see [`quiet`]).
+//!
+//! `reference/` holds solutions only: a file there without a marker is an
+//! error. Given code (and `src/lib.rs`, hand-written) exists once, in
+//! `exercises/`; a stage lays `reference/*/src` over it (see `stage`).
 
 use std::fmt::Write as _;
 use std::fs;
@@ -23,6 +28,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 
 use crate::topics::{self, Topic};
+
+mod quiet;
 
 /// Opens a solution region; may be followed by `<task>: <instruction>`.
 const BEGIN_MARKER: &str = "// BEGIN SOLUTION";
@@ -142,6 +149,8 @@ pub fn generate(
     // A helper region was just removed: blank lines that would now double
     // an earlier one are dropped too, so that the stub stays rustfmt-clean.
     let mut after_removal = false;
+    // The `todo!` calls written: (first line, line after), 0-based in `out`.
+    let mut todos: Vec<(usize, usize)> = Vec::new();
     for (index, line) in source.split_inclusive('\n').enumerate() {
         let number = index + 1;
         match marker(line) {
@@ -182,7 +191,10 @@ pub fn generate(
                 } else {
                     ""
                 };
-                out.push_str(&todo_call(indent, task, instruction, newline, max_width));
+                let call = todo_call(indent, task, instruction, newline, max_width);
+                let first = out.matches('\n').count();
+                todos.push((first, first + call.matches('\n').count().max(1)));
+                out.push_str(&call);
             }
             Some(Marker::End) => {
                 if let Some((_, bare)) = open.take() {
@@ -218,7 +230,12 @@ pub fn generate(
         ));
     }
     if errors.is_empty() {
-        Ok(out)
+        let newline = if source.contains("\r\n") {
+            "\r\n"
+        } else {
+            "\n"
+        };
+        Ok(quiet::quiet(&out, &todos, newline, max_width))
     } else {
         Err(errors)
     }
@@ -340,6 +357,14 @@ fn sync_topic(
         }
         let source = fs::read_to_string(&source_path)
             .with_context(|| format!("cannot read {}", source_path.display()))?;
+        if !source.lines().any(|line| marker(line).is_some()) {
+            outcome.errors.push(format!(
+                "{} holds no `{BEGIN_MARKER}`: given code belongs in {} alone",
+                relative(&source_path),
+                relative(&target_path)
+            ));
+            continue;
+        }
         let generated = match generate(&source, &relative(&source_path), &ids, max_width) {
             Ok(generated) => generated,
             Err(errors) => {
@@ -372,15 +397,6 @@ fn sync_topic(
         fs::write(&target_path, generated)
             .with_context(|| format!("cannot write {}", target_path.display()))?;
         outcome.changed.push((target_path, None));
-    }
-    for file in rust_files(&exercise_src)? {
-        if file != Path::new(CRATE_ROOT) && !reference_files.contains(&file) {
-            outcome.errors.push(format!(
-                "{} has no solution file {} to be generated from",
-                relative(&exercise_src.join(&file)),
-                relative(&reference_src.join(&file))
-            ));
-        }
     }
     Ok(())
 }
@@ -470,6 +486,8 @@ pub fn dda(a: u32) -> u32 {
             "\
 /// Draws a line.
 pub fn dda(a: u32) -> u32 {
+    // Unused until you write the body:
+    let _ = &a;
     todo!(\"dda: draw the line with the DDA\")
 }
 "
@@ -499,13 +517,12 @@ fn helper() {}
 
     #[test]
     fn removed_helpers_leave_no_double_or_trailing_blank_lines() {
-        let source = "//! Doc.\n\n// BEGIN SOLUTION\nuse std::f32::consts::PI;\n// END SOLUTION\n\n/// F.\npub fn f() {}\n\n// BEGIN SOLUTION\nfn helper() {}\n// END SOLUTION\n";
+        let source = "//! Doc.\n\n// BEGIN SOLUTION\nuse std::f32::consts::PI;\n// END SOLUTION\n\n/// F.\npub fn f() {}\n\n// BEGIN SOLUTION\npub fn helper() {}\n// END SOLUTION\n";
         assert_eq!(stub(source), "//! Doc.\n\n/// F.\npub fn f() {}\n");
-        let leading = "// BEGIN SOLUTION\nuse a::b;\n// END SOLUTION\n\nfn g() {}\n";
-        assert_eq!(stub(leading), "fn g() {}\n");
-        let between =
-            "fn a() {}\n\n// BEGIN SOLUTION\nfn helper() {}\n// END SOLUTION\n\nfn b() {}\n";
-        assert_eq!(stub(between), "fn a() {}\n\nfn b() {}\n");
+        let leading = "// BEGIN SOLUTION\nuse a::b;\n// END SOLUTION\n\npub fn g() {}\n";
+        assert_eq!(stub(leading), "pub fn g() {}\n");
+        let between = "pub fn a() {}\n\n// BEGIN SOLUTION\npub fn helper() {}\n// END SOLUTION\n\npub fn b() {}\n";
+        assert_eq!(stub(between), "pub fn a() {}\n\npub fn b() {}\n");
     }
 
     #[test]
@@ -540,11 +557,10 @@ fn helper() {}
 
     #[test]
     fn text_outside_markers_and_crlf_line_ends_are_kept() {
-        let source =
-            "//! Doc.\r\nfn f() {\r\n\t// BEGIN SOLUTION dda: x\r\n\t1\r\n\t// END SOLUTION\r\n}";
+        let source = "//! Doc.\r\npub fn f() {\r\n\t// BEGIN SOLUTION dda: x\r\n\t1\r\n\t// END SOLUTION\r\n}";
         assert_eq!(
             stub(source),
-            "//! Doc.\r\nfn f() {\r\n\ttodo!(\"dda: x\")\r\n}"
+            "//! Doc.\r\npub fn f() {\r\n\ttodo!(\"dda: x\")\r\n}"
         );
         assert_eq!(
             stub("no markers\n// BEGIN SOLUTIONS are not markers\n"),

@@ -5,7 +5,14 @@
 //! 2. every workspace test passes against the reference solutions;
 //! 3. graded with `--reference`, every task gets full points;
 //! 4. graded as shipped (the stubs), the course scores 0, compiles and the
-//!    grader finishes.
+//!    grader finishes;
+//! 5. the student edition that `cargo xtask release` writes builds on its
+//!    own: `cargo test` there fails only at `todo!()`, `cargo clippy
+//!    --all-targets` is clean, `cargo xtask grade` works.
+//!
+//! Steps 2 to 5 build in the stage (see `stage`), one build cache for the
+//! reference, the stubs and the edition: switching between them rebuilds
+//! only the crates whose files differ.
 //!
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
@@ -17,7 +24,8 @@ use anyhow::{Context, Result, bail, ensure};
 
 use crate::cargo::{self, cargo};
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
-use crate::{setup, stubs, topics};
+use crate::stage::{self, Overlay};
+use crate::{release, setup, stubs, topics};
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
@@ -46,6 +54,10 @@ pub fn run(root: &Path) -> Result<()> {
         (
             "untouched stubs compile, score 0 and the grader finishes",
             Box::new(|| stubs_score_zero(root)),
+        ),
+        (
+            "the student edition builds, fails only at todo!() and grades",
+            Box::new(|| student_edition(root)),
         ),
     ];
     let mut results: Vec<(&str, Result<String>, Duration)> = Vec::new();
@@ -91,23 +103,23 @@ fn stubs_in_sync(root: &Path) -> Result<String> {
 }
 
 fn workspace_tests(root: &Path) -> Result<String> {
-    let topics = topics::discover(root)?;
-    let features: Vec<String> = topics
-        .iter()
-        .map(|t| format!("{}/reference", t.package))
-        .collect();
+    let staged = stage::stage(root, Overlay::Reference, None)?;
     let mut command = cargo();
-    command.current_dir(root).args([
-        "test",
-        "--workspace",
-        "--no-fail-fast",
-        "--exclude",
-        BENCH_PACKAGE,
-    ]);
-    if !features.is_empty() {
-        command.args(["--features", &features.join(",")]);
-    }
-    println!("$ {}", cargo::display(&command));
+    command
+        .current_dir(&staged.root)
+        .env("CARGO_TARGET_DIR", &staged.target_dir)
+        .args([
+            "test",
+            "--workspace",
+            "--no-fail-fast",
+            "--exclude",
+            BENCH_PACKAGE,
+        ]);
+    println!(
+        "$ {}   (in {})",
+        cargo::display(&command),
+        staged.root.display()
+    );
     let status = command
         .status()
         .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
@@ -116,28 +128,21 @@ fn workspace_tests(root: &Path) -> Result<String> {
         "`{}` failed ({status})",
         cargo::display(&command)
     );
-    Ok(format!(
-        "all tests pass with {}",
-        if features.is_empty() {
-            "no topics".to_owned()
-        } else {
-            features.join(", ")
-        }
-    ))
+    Ok("all tests pass with reference/ staged over the stubs".to_owned())
 }
 
-fn grade_into(root: &Path, reference: bool, folder: &str) -> Result<Report> {
+fn grade_into(root: &Path, overlay: Overlay<'_>, folder: &str) -> Result<Report> {
     let mut options = GradeOptions::new(root.to_path_buf());
-    options.reference = reference;
     options.out = root.join("target").join("grade").join(folder);
-    let report = grade::grade(&options)?;
+    let report = grade::grade_staged(&options, overlay)?;
+    let reference = matches!(overlay, Overlay::Reference);
     // Every stub fails at its todo!(): the table says enough there.
     grade::print_summary(&report, &options.out, reference);
     Ok(report)
 }
 
 fn reference_scores_full(root: &Path) -> Result<String> {
-    let report = grade_into(root, true, "reference")?;
+    let report = grade_into(root, Overlay::Reference, "reference")?;
     let mut problems = Vec::new();
     for topic in &report.topics {
         if topic.compile_error.is_some() {
@@ -187,7 +192,7 @@ fn reference_scores_full(root: &Path) -> Result<String> {
 }
 
 fn stubs_score_zero(root: &Path) -> Result<String> {
-    let report = grade_into(root, false, "stubs")?;
+    let report = grade_into(root, Overlay::Own, "stubs")?;
     let mut problems = Vec::new();
     for topic in &report.topics {
         if topic.compile_error.is_some() {
@@ -250,4 +255,180 @@ fn stubs_score_zero(root: &Path) -> Result<String> {
         report.duration_s,
         failed.len()
     ))
+}
+
+/// The panic messages of the failed tests in `cargo test` output that are
+/// not a `todo!()`'s, by test name.
+fn failures_not_at_todo(output: &str) -> Vec<String> {
+    let mut failures = Vec::new();
+    let mut current: Option<(String, bool)> = None;
+    let mut finish = |current: &mut Option<(String, bool)>| {
+        if let Some((name, at_todo)) = current.take()
+            && !at_todo
+        {
+            failures.push(name);
+        }
+    };
+    for line in output.lines() {
+        if let Some(name) = line
+            .strip_prefix("---- ")
+            .and_then(|rest| rest.strip_suffix(" stdout ----"))
+        {
+            finish(&mut current);
+            current = Some((name.to_owned(), false));
+        } else if line == "failures:" || line.starts_with("test result:") {
+            finish(&mut current);
+        } else if let Some((_, at_todo)) = current.as_mut() {
+            *at_todo |= line.contains("not yet implemented");
+        }
+    }
+    finish(&mut current);
+    failures
+}
+
+/// Runs `command` with its output captured and echoed; returns
+/// (success, stdout and stderr).
+fn run_captured(command: &mut std::process::Command) -> Result<(bool, String)> {
+    println!("$ {}", cargo::display(command));
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run `{}`", cargo::display(command)))?;
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    Ok((output.status.success(), text))
+}
+
+fn student_edition(root: &Path) -> Result<String> {
+    let home = stage::home(root);
+    let release_dir = home.join("release");
+    let release = release::write(root, &release_dir, &[])?;
+    println!(
+        "wrote the edition to {} ({} topics; course library: {})",
+        release_dir.display(),
+        release.topics.len(),
+        release.crates.join(", ")
+    );
+    ensure!(
+        !release_dir.join("reference").exists() && !release_dir.join("xtask/bench").exists(),
+        "the edition holds reference/ or the benchmarks"
+    );
+    // Built in the stage, where the stubs were just graded: only what the
+    // edition changes is rebuilt.
+    let staged = stage::stage_in(&home, &release_dir, Overlay::Own, None)?;
+    let in_edition = |args: &[&str]| {
+        let mut command = cargo();
+        command
+            .current_dir(&staged.root)
+            .env("CARGO_TARGET_DIR", &staged.target_dir)
+            .env("NO_COLOR", "1")
+            .args(args);
+        command
+    };
+
+    let (_, output) = run_captured(&mut in_edition(&["test", "--no-fail-fast"]))?;
+    ensure!(
+        !output.contains("error: could not compile") && output.contains("test result:"),
+        "`cargo test` does not build in the edition:\n{}",
+        tail(&output, 40)
+    );
+    let not_todo = failures_not_at_todo(&output);
+    ensure!(
+        not_todo.is_empty(),
+        "{} test(s) fail in the edition other than at a todo!(): {}",
+        not_todo.len(),
+        not_todo.join(", ")
+    );
+    let failed = output.matches(" stdout ----").count();
+
+    let (clean, output) = run_captured(&mut in_edition(&[
+        "clippy",
+        "--all-targets",
+        "--",
+        "-D",
+        "warnings",
+    ]))?;
+    ensure!(
+        clean,
+        "`cargo clippy --all-targets` is not clean in the edition:\n{}",
+        tail(&output, 40)
+    );
+
+    // The grader of this checkout on the edition (the edition's own
+    // `cargo xtask` is this code, and clippy has just checked it builds).
+    let first = release
+        .topics
+        .first()
+        .context("the edition has no topics")?;
+    let exe = std::env::current_exe().context("cannot find the xtask program")?;
+    let mut grade = std::process::Command::new(exe);
+    grade
+        .env("CARGO_TARGET_DIR", &staged.target_dir)
+        .env("NO_COLOR", "1")
+        .arg("--root")
+        .arg(&staged.root)
+        .args(["grade", first]);
+    let (graded, output) = run_captured(&mut grade)?;
+    ensure!(
+        graded,
+        "`cargo xtask grade {first}` fails in the edition:\n{}",
+        tail(&output, 40)
+    );
+    let report_path = staged.root.join("target/grade/report.json");
+    let report: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(&report_path)
+            .with_context(|| format!("cannot read {}", report_path.display()))?,
+    )
+    .with_context(|| format!("cannot parse {}", report_path.display()))?;
+    ensure!(
+        report["score"].as_f64() == Some(0.0),
+        "`cargo xtask grade {first}` in the edition scores {} instead of 0",
+        report["score"]
+    );
+    Ok(format!(
+        "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0",
+        release.topics.len()
+    ))
+}
+
+/// The last `lines` lines of `text`.
+fn tail(text: &str, lines: usize) -> String {
+    let all: Vec<&str> = text.lines().collect();
+    all[all.len().saturating_sub(lines)..].join("\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn failures_at_a_todo_are_told_from_other_failures() {
+        let output = "\
+running 3 tests
+test a ... FAILED
+test b ... FAILED
+test c ... ok
+
+failures:
+
+---- a stdout ----
+
+thread 'a' panicked at src/dda.rs:3:5:
+not yet implemented: dda: draw the line
+
+---- b stdout ----
+
+thread 'b' panicked at tests/dda.rs:9:5:
+assertion `left == right` failed
+
+failures:
+    a
+    b
+
+test result: FAILED. 1 passed; 2 failed
+";
+        assert_eq!(failures_not_at_todo(output), ["b"]);
+    }
 }

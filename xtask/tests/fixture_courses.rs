@@ -393,7 +393,7 @@ fn stubs_are_checked_generated_and_score_zero() {
         ),
         "{stub}"
     );
-    assert!(stub.contains("pub fn add(a: u32, b: u32) -> u32 {\n    todo!(\"ok: add \\\"a\\\" and \\\"b\\\"\")\n}\n"), "{stub}");
+    assert!(stub.contains("pub fn add(a: u32, b: u32) -> u32 {\n    // Unused until you write the body:\n    let _ = (&a, &b);\n    todo!(\"ok: add \\\"a\\\" and \\\"b\\\"\")\n}\n"), "{stub}");
     assert!(
         stub.contains("    todo!(\"panics: halve {{x}}\")\n"),
         "{stub}"
@@ -404,12 +404,20 @@ fn stubs_are_checked_generated_and_score_zero() {
     );
     assert!(xtask(&root, &["stubs", "--check"]).status.success());
 
-    // A student file without a solution is reported.
-    fs::write(root.join("exercises/02-broken/src/extra.rs"), "").unwrap();
-    let orphan = xtask(&root, &["stubs", "--check"]);
-    assert!(!orphan.status.success());
-    assert!(stdout(&orphan).contains("exercises/02-broken/src/extra.rs has no solution file"));
-    fs::remove_file(root.join("exercises/02-broken/src/extra.rs")).unwrap();
+    // Given code exists once, in exercises/: a copy in reference/ without
+    // a solution is an error, a given file in exercises/ alone is not.
+    fs::write(root.join("exercises/02-broken/src/given.rs"), "").unwrap();
+    assert!(xtask(&root, &["stubs", "--check"]).status.success());
+    fs::write(root.join("reference/02-broken/src/given.rs"), "").unwrap();
+    let copied = xtask(&root, &["stubs", "--check"]);
+    assert!(!copied.status.success());
+    assert!(
+        stdout(&copied).contains("reference/02-broken/src/given.rs holds no `// BEGIN SOLUTION`: given code belongs in exercises/02-broken/src/given.rs alone"),
+        "{}",
+        stdout(&copied)
+    );
+    fs::remove_file(root.join("reference/02-broken/src/given.rs")).unwrap();
+    fs::remove_file(root.join("exercises/02-broken/src/given.rs")).unwrap();
 
     // Untouched stubs compile, score 0, and every failure names its todo.
     let (_, report, _) = grade(&root, "grade", &["01", "broken"]);
@@ -461,17 +469,24 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/4]",
-        "==> [2/4]",
-        "==> [3/4]",
-        "==> [4/4]",
+        "==> [1/5]",
+        "==> [2/5]",
+        "==> [3/5]",
+        "==> [4/5]",
+        "==> [5/5] the student edition",
         "==> summary",
-        "all 4 steps passed",
+        "all 5 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
     assert!(root.join("target/grade/reference/report.json").is_file());
     assert!(root.join("target/grade/stubs/junit.xml").is_file());
+    let edition = root.join("target/xtask/release");
+    assert!(edition.join("exercises/01-tiny/src/ops.rs").is_file());
+    assert!(
+        !edition.join("reference").exists(),
+        "no solutions in the edition"
+    );
 
     // A "stub" that already solves its task breaks steps 1 and 4.
     let stub = root.join("exercises/01-tiny/src/ops.rs");
@@ -490,8 +505,8 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     );
     assert!(text.contains("`negates` passes against the stub"), "{text}");
     assert!(
-        text.contains("2 of 4 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("2 of 4 steps failed"),
+        text.contains("2 of 5 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("2 of 5 steps failed"),
         "{text}"
     );
 }

@@ -5,7 +5,9 @@
 //! centre `(x, y)`, y up; the line is a rectangle one pixel wide whose
 //! middle line runs from `from` to `to` (no caps beyond the endpoints).
 
+#[allow(unused_imports)]
 use canvas::{Pixel, Vec2, within_limits};
+#[allow(unused_imports)]
 use glam::DVec2;
 
 /// Draws the line from `from` to `to` as a rectangle one pixel wide and
@@ -25,6 +27,8 @@ use glam::DVec2;
 /// A zero-length line covers no area and draws nothing; endpoints that are
 /// not finite or lie beyond ±`MAX_COORD` draw nothing.
 pub fn area_sampling_line(from: Vec2, to: Vec2, mut plot: impl FnMut(Pixel, f32)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "area_sampling: intersect each nearby pixel square with the 1-pixel-wide rectangle around the line and plot the overlapped area"
     )

@@ -6,6 +6,7 @@
 //! axis, from the column of the first endpoint to that of the last,
 //! both included.
 
+#[allow(unused_imports)]
 use canvas::{Fragment, Pixel, Vertex, round_half_away, within_limits};
 
 /// Rasterizes the line from `from` to `to` with the DDA and calls `plot`
@@ -31,6 +32,8 @@ use canvas::{Fragment, Pixel, Vertex, round_half_away, within_limits};
 /// - A zero-length line plots one fragment with `from`'s attributes.
 /// - Endpoints that are not finite or lie beyond ±`MAX_COORD` draw nothing.
 pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "dda: plot one fragment per major-axis column, interpolating colour and depth with t in [0, 1]"
     )

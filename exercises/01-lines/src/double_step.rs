@@ -6,6 +6,7 @@
 //! endpoints are drawn; ties go to the smaller minor coordinate, exactly as
 //! in `midpoint_line`, whose pixels this must reproduce.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// The four two-pixel patterns of a double step from the pixel `P` in the
@@ -60,6 +61,8 @@ impl Pattern {
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code); the pixels must equal the midpoint line's"
     )

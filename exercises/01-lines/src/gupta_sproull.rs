@@ -6,6 +6,7 @@
 //! pixel of each column is the midpoint line's (ties to the smaller minor
 //! coordinate), and the pixels on either side of it are added.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Number of entries of the distance table (the slides: "Reduktion auf 24
@@ -65,6 +66,8 @@ pub fn filter(distance: f64) -> f32 {
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn gupta_sproull_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "gupta_sproull: run the midpoint line and plot its pixel and both minor-axis neighbours with filter(distance to the line)"
     )

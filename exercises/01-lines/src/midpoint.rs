@@ -5,6 +5,7 @@
 //! endpoints are drawn; a tie (the midpoint exactly on the line, `d = 0`)
 //! goes to the pixel with the smaller minor coordinate.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Rasterizes the line from `from` to `to` with the midpoint algorithm and
@@ -31,6 +32,8 @@ use canvas::{MAX_COORD, Pixel};
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing (use the viewport version,
 /// `clipped_midpoint_line`, for lines that reach far outside).
 pub fn midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "midpoint: step along the major axis with an integer decision variable; at d = 0 take the smaller minor coordinate"
     )

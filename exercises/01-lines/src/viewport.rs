@@ -36,6 +36,8 @@ pub fn clipped_midpoint_line(
     viewport: Viewport,
     mut plot: impl FnMut(Pixel),
 ) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &viewport, &mut plot);
     todo!(
         "viewport: compute the first and last visible column and the decision variable there, then step only through the visible part"
     )

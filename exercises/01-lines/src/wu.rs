@@ -7,6 +7,7 @@
 //! weighted by how near each is; both endpoints are drawn at full
 //! intensity.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Draws the antialiased line from `from` to `to` and calls
@@ -29,6 +30,8 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
     todo!(
         "wu: accumulate the fractional minor coordinate in an unsigned fixed-point error, stepping a row on wrap-around, and split each column between two pixels"
     )

@@ -7,6 +7,7 @@
 //! circle is the outline of `midpoint_circle` together with every pixel
 //! inside it, each pixel plotted once.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Fills the circle of `radius` around `centre` and calls `plot` once per
@@ -49,5 +50,7 @@ use canvas::{MAX_COORD, Pixel};
 /// (`|centre.x| + radius > MAX_COORD`, or the same for y), plots nothing.
 /// The work grows with the area, `πR²` pixels.
 pub fn filled_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&centre, &radius, &mut plot);
     todo!("filled_circle: walk the octant; fill rows ±x at each step, rows ±y as you leave them")
 }

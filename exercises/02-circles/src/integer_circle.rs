@@ -9,6 +9,7 @@
 //! second octant the pixel nearest to the circle, mirrored into the other
 //! octants, every pixel plotted once.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Rasterizes the circle of `radius` around `centre` with integers only
@@ -39,5 +40,7 @@ use canvas::{MAX_COORD, Pixel};
 /// its own). Radius 0 plots the centre; a negative radius, or a circle
 /// reaching beyond ±[`MAX_COORD`], plots nothing.
 pub fn integer_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&centre, &radius, &mut plot);
     todo!("integer_circle: the same walk with h = 1 − R, ΔE = 3 and ΔSE = 5 − 2R; adds only")
 }

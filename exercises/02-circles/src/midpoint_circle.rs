@@ -6,6 +6,7 @@
 //! never passes exactly between two pixels, so there are no ties); the
 //! other seven octants are its mirror images; every pixel is plotted once.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// Plots the pixels that the eight symmetries of a circle make of the
@@ -33,6 +34,8 @@ use canvas::{MAX_COORD, Pixel};
 /// Meant for offsets of the second octant, `0 ≤ x ≤ y`, whose pixels lie
 /// within ±[`MAX_COORD`] (which [`midpoint_circle`] guarantees).
 pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&centre, &x, &y, &plot);
     todo!("midpoint_circle: plot (±x, ±y) and (±y, ±x) once each: no −0, no swap when x = y")
 }
 
@@ -67,5 +70,7 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 ///   beyond ±[`MAX_COORD`] (`|centre.x| + radius > MAX_COORD`, or the same
 ///   for y), plots nothing.
 pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&centre, &radius, &mut plot);
     todo!("midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64")
 }

@@ -9,6 +9,7 @@
 //! row; a midpoint exactly on the ellipse picks the inner pixel; the other
 //! three quadrants are mirror images; every pixel is plotted once.
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
 /// The largest semi-axis [`midpoint_ellipse`] draws.
@@ -77,5 +78,7 @@ pub const MAX_SEMI_AXIS: i32 = 1 << 20;
 /// ellipse reaching beyond ±[`MAX_COORD`] plots nothing. The arithmetic is
 /// `i128`: `a²b²` alone needs 80 bits.
 pub fn midpoint_ellipse(centre: Pixel, a: i32, b: i32, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&centre, &a, &b, &mut plot);
     todo!("midpoint_ellipse: region 1 by columns from (0, b), region 2 by rows from (a, 0)")
 }

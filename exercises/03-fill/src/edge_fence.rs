@@ -6,6 +6,7 @@
 //! pixels are exactly those of `scanline` (even-odd rule, left ends of
 //! spans included, right ends excluded).
 
+#[allow(unused_imports)]
 use canvas::{Canvas, Pixel, Vec2, Viewport};
 
 /// Where the edge `a–b` crosses row `y`: the same formula, evaluated in
@@ -41,6 +42,8 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// [`Canvas::MAX_PIXELS`] pixels (no canvas is that large) fill nothing and
 /// return 0.
 pub fn edge_fill(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) -> u64 {
+    // Unused until you write the body:
+    let _ = (&vertices, &viewport, &mut plot);
     todo!("edge_fence: per crossing invert ⌈s⌉ ..= x_max of its row; plot what stays inverted")
 }
 
@@ -71,5 +74,7 @@ pub fn fence_fill(
     viewport: Viewport,
     mut plot: impl FnMut(Pixel),
 ) -> u64 {
+    // Unused until you write the body:
+    let _ = (&vertices, &fence, &viewport, &mut plot);
     todo!("edge_fence: per crossing invert between ⌈s⌉ and the fence; plot what stays inverted")
 }

@@ -6,6 +6,7 @@
 //! covered when its centre lies inside the triangle; a centre exactly on an
 //! edge belongs to the triangle only if that edge is a left or top edge.
 
+#[allow(unused_imports)]
 use canvas::{Fragment, MAX_COORD, Pixel, Vertex, Viewport};
 
 /// Vertex positions are snapped to a fixed-point grid with this many
@@ -72,6 +73,8 @@ pub fn snap(v: f32) -> Option<i64> {
 /// A triangle of zero area (after snapping), or with a position that is
 /// NaN, infinite or beyond ±[`MAX_COORD`], plots nothing.
 pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl FnMut(Fragment)) {
+    // Unused until you write the body:
+    let _ = (&vertices, &viewport, &mut plot);
     todo!(
         "edge_function: set up A, B, C per edge; walk the clipped box; top-left rule; interpolate"
     )

@@ -6,6 +6,7 @@
 //! pixels are exactly those of `scanline` (even-odd rule, left ends of
 //! spans included, right ends excluded).
 
+#[allow(unused_imports)]
 use canvas::{Canvas, Pixel, Vec2, Viewport};
 
 /// Where the edge `a–b` crosses row `y`: the same formula, evaluated in
@@ -47,5 +48,7 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// three vertices, a NaN or infinite coordinate, or a buffer of more than
 /// [`Canvas::MAX_PIXELS`] pixels (no canvas is that large) fill nothing.
 pub fn parity_fill(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&vertices, &viewport, &mut plot);
     todo!("parity: toggle a mark at ⌈s⌉ per crossing, then flip inside/outside along each row")
 }

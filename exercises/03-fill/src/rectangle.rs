@@ -39,5 +39,7 @@ use canvas::{Pixel, Vec2, Viewport};
 /// clipped to `viewport` (inclusive bounds) before any pixel is visited, so
 /// the work is at most the number of pixels plotted.
 pub fn fill_rectangle(min: Vec2, max: Vec2, viewport: Viewport, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&min, &max, &viewport, &mut plot);
     todo!("rectangle: fill centres in [min, max): x from ⌈min.x⌉ to ⌈max.x⌉ − 1, clipped")
 }

@@ -55,6 +55,8 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// nothing. Huge coordinates are fine: rows and spans are clipped to
 /// `viewport` before any pixel is visited.
 pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Span)) {
+    // Unused until you write the body:
+    let _ = (&vertices, &viewport, &mut span);
     todo!(
         "scanline: active edge table; crossings at pixel rows; one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
     )

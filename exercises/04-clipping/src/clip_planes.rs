@@ -25,6 +25,7 @@
 
 use canvas::Vec4;
 
+#[allow(unused_imports)]
 use crate::plane::{CLIP_NUDGE, ClipPlane};
 
 /// The six planes of the clip volume `−w ≤ x, y, z ≤ w`, each as
@@ -46,6 +47,8 @@ impl ClipPlane {
     /// with a NaN coordinate is not inside (the comparison is false).
     #[must_use]
     pub fn inside(self, v: Vec4) -> bool {
+        // Unused until you write the body:
+        let _ = &v;
         todo!("clip_planes: the inside test v · p <= 0, on the plane included")
     }
 
@@ -71,6 +74,8 @@ impl ClipPlane {
     /// overflow).
     #[must_use]
     pub fn intersect(self, a: Vec4, b: Vec4) -> Option<f32> {
+        // Unused until you write the body:
+        let _ = (&a, &b);
         todo!(
             "clip_planes: t = la / (la - lb) when exactly one endpoint is inside, nudged by CLIP_NUDGE towards the inside one and kept in [0, 1]"
         )

@@ -9,6 +9,7 @@
 
 use std::ops::{BitAnd, BitOr};
 
+#[allow(unused_imports)]
 use canvas::{MAX_COORD, Vec2};
 
 use crate::error::ClipError;
@@ -85,6 +86,8 @@ pub const MAX_ROUNDS: usize = 8;
 /// finiteness before.
 #[must_use]
 pub fn outcode(p: Vec2, window: ClipWindow) -> Outcode {
+    // Unused until you write the body:
+    let _ = (&p, &window);
     todo!("cohen_sutherland: one bit per border that p lies strictly beyond")
 }
 
@@ -118,6 +121,8 @@ pub fn cohen_sutherland(
     segment: Segment,
     window: ClipWindow,
 ) -> Result<Option<Segment>, ClipError> {
+    // Unused until you write the body:
+    let _ = (&segment, &window);
     todo!(
         "cohen_sutherland: check the endpoints, then accept, reject, or move an outside endpoint onto a border and repeat"
     )

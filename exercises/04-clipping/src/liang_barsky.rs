@@ -8,6 +8,7 @@
 //! Convention (see `canvas`): pixel coordinates, y up; the window is
 //! closed, so a point on its border is inside and is kept.
 
+#[allow(unused_imports)]
 use canvas::MAX_COORD;
 
 use crate::error::ClipError;
@@ -43,6 +44,8 @@ use crate::window::{ClipWindow, Segment};
 /// coordinate, [`ClipError::OutOfRange`] for one beyond ±[`MAX_COORD`]
 /// (`index` 0 for `from`, 1 for `to`).
 pub fn liang_barsky(segment: Segment, window: ClipWindow) -> Result<Option<Segment>, ClipError> {
+    // Unused until you write the body:
+    let _ = (&segment, &window);
     todo!(
         "liang_barsky: check the endpoints, then narrow [t_in, t_out] = [0, 1] with p_k t <= q_k for the four borders"
     )

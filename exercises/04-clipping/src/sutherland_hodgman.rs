@@ -27,6 +27,7 @@
 //! edge is still a straight line with a linear parameter.
 
 use crate::error::ClipError;
+#[allow(unused_imports)]
 use crate::plane::{CLIP_NUDGE, ClipPlane, MAX_CLIP_COORD};
 use scene::ClipVertex;
 
@@ -60,6 +61,8 @@ pub fn clip_against_plane(
     polygon: &[ClipVertex],
     plane: ClipPlane,
 ) -> Result<Vec<ClipVertex>, ClipError> {
+    // Unused until you write the body:
+    let _ = (&polygon, &plane);
     todo!(
         "sutherland_hodgman: check the input, then walk the edges S -> E from the closing edge on and emit E and/or the nudged crossing as the table says"
     )
@@ -81,6 +84,8 @@ pub fn clip_polygon(
     polygon: &[ClipVertex],
     planes: &[ClipPlane],
 ) -> Result<Vec<ClipVertex>, ClipError> {
+    // Unused until you write the body:
+    let _ = (&polygon, &planes);
     todo!(
         "sutherland_hodgman: check the input, then clip against each plane in turn, the output of one pass being the input of the next"
     )

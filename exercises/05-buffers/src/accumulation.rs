@@ -17,6 +17,7 @@
 //!   accum(RETURN, 1)                   colour = acc  → the antialiased image
 //! ```
 
+#[allow(unused_imports)]
 use canvas::{Canvas, CanvasError, Pixel, Rgba, Vec2, Vec4};
 
 /// The Red Book's eight jitter offsets (`j8` in `jitter.h`), moved from
@@ -163,6 +164,8 @@ impl AccumulationBuffer {
         value: f32,
         canvas: &mut Canvas,
     ) -> Result<(), AccumError> {
+        // Unused until you write the body:
+        let _ = (&op, &value, &canvas);
         todo!(
             "accumulation: check the value and the size, then apply op to every pixel as glAccum defines it"
         )
@@ -185,6 +188,8 @@ pub fn jittered_antialias(
     jitter: &[Vec2],
     mut render: impl FnMut(&mut Canvas, Vec2),
 ) -> Result<Canvas, AccumError> {
+    // Unused until you write the body:
+    let _ = (&width, &height, &jitter, &mut render);
     todo!(
         "accumulation: accumulate one frame per offset with weight 1/n, then return the sum into a canvas"
     )

@@ -17,8 +17,10 @@
 //!                        they cross    any order paints one half wrong
 //! ```
 
+#[allow(unused_imports)]
 use canvas::{Canvas, Vertex, Viewport};
 
+#[allow(unused_imports)]
 use crate::raster::fill_triangle;
 
 /// The sort key of a triangle: its farthest vertex depth (Newell, Newell
@@ -26,6 +28,8 @@ use crate::raster::fill_triangle;
 /// NaN or infinite.
 #[must_use]
 pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
+    // Unused until you write the body:
+    let _ = &triangle;
     todo!("painter: the largest of the three vertex depths, None if one is not finite")
 }
 
@@ -35,6 +39,8 @@ pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
 /// depth are left out.
 #[must_use]
 pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
+    // Unused until you write the body:
+    let _ = &triangles;
     todo!("painter: keep the triangles with a key, sort them stably by key, largest first")
 }
 
@@ -42,5 +48,7 @@ pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
 /// of [`fill_triangle`] (clipped to the canvas) overwrites the colour, with
 /// no depth test; the depth plane is not touched.
 pub fn paint(canvas: &mut Canvas, triangles: &[[Vertex; 3]]) {
+    // Unused until you write the body:
+    let _ = (&canvas, &triangles);
     todo!("painter: fill the triangles in painter order, each fragment overwriting the colour")
 }

@@ -25,8 +25,10 @@
 //! largest depth *slope*, the depth change per pixel, which is what
 //! decides how far the fill and the line can differ on one pixel.
 
+#[allow(unused_imports)]
 use canvas::{Canvas, Fragment, Rgba, Vertex};
 
+#[allow(unused_imports)]
 use crate::raster::{draw_line, fill_triangle};
 
 /// `r`, the smallest depth difference the depth buffer resolves: one step
@@ -70,6 +72,8 @@ impl PolygonOffset {
     /// slope `m`.
     #[must_use]
     pub fn offset(self, m: f32) -> f32 {
+        // Unused until you write the body:
+        let _ = &m;
         todo!("polygon_offset: o = m · factor + r · units")
     }
 }
@@ -89,6 +93,8 @@ impl PolygonOffset {
 ///
 /// An error for a zero-area triangle or a non-finite position or depth.
 pub fn max_depth_slope(triangle: [Vertex; 3]) -> Result<f32, OffsetError> {
+    // Unused until you write the body:
+    let _ = &triangle;
     todo!(
         "polygon_offset: solve for the plane's ∂z/∂x and ∂z/∂y by Cramer's rule, return the larger magnitude"
     )
@@ -125,6 +131,8 @@ pub fn hidden_line(
     style: HiddenLineStyle,
     offset: Option<PolygonOffset>,
 ) {
+    // Unused until you write the body:
+    let _ = (&canvas, &triangles, &style, &offset);
     todo!(
         "polygon_offset: fill every triangle with its depth offset, then outline every triangle, both with a LESS depth test"
     )

@@ -63,6 +63,8 @@ pub struct Span {
 /// height (`lo.y = hi.y`) or when any input is not finite.
 #[must_use]
 pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<Span> {
+    // Unused until you write the body:
+    let _ = (&triangle, &ys);
     todo!(
         "scanline_depth: pick vertex 1 and the edges 1–2, 1–3 crossing ys, then apply the z_a, z_b (and x_a, x_b) formulas"
     )
@@ -79,6 +81,8 @@ pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<Span> {
 /// case the seed does not mention — and `z_a` is returned.
 #[must_use]
 pub fn depth_in_span(span: &Span, x_p: f64) -> f64 {
+    // Unused until you write the body:
+    let _ = (&span, &x_p);
     todo!("scanline_depth: apply the z_p formula; return z_a for a span of zero width")
 }
 
@@ -104,6 +108,8 @@ impl DepthPlane {
     /// An error when a coordinate is not finite or `C = 0` (the triangle's
     /// projection onto the screen has no area).
     pub fn try_from_triangle(triangle: [DVec3; 3]) -> Result<Self, ScanlineError> {
+        // Unused until you write the body:
+        let _ = &triangle;
         todo!(
             "scanline_depth: the normal is the cross product of two edges, D = −normal · V0; reject C = 0"
         )
@@ -112,6 +118,8 @@ impl DepthPlane {
     /// `z(x, y) = (−A·x − B·y − D) / C`.
     #[must_use]
     pub fn depth_at(&self, p: DVec2) -> f64 {
+        // Unused until you write the body:
+        let _ = &p;
         todo!("scanline_depth: solve the plane equation for z")
     }
 
@@ -133,5 +141,7 @@ impl DepthPlane {
 /// span of the canvas): the result holds `count` values.
 #[must_use]
 pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize) -> Vec<f64> {
+    // Unused until you write the body:
+    let _ = (&plane, &y, &first_x, &count);
     todo!("scanline_depth: evaluate the plane once at the first pixel, then subtract A/C per step")
 }

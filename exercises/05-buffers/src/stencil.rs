@@ -63,6 +63,8 @@ impl StencilFunc {
     /// Whether the test `(reference & mask) OP (stored & mask)` passes.
     #[must_use]
     pub fn passes(self, reference: u8, stored: u8, mask: u8) -> bool {
+        // Unused until you write the body:
+        let _ = (&reference, &stored, &mask);
         todo!(
             "stencil: mask both the reference and the stored value, then compare reference OP stored"
         )
@@ -107,6 +109,8 @@ impl StencilOp {
     /// The new value for a stored `value` (before the write mask).
     #[must_use]
     pub fn apply(self, value: u8, reference: u8) -> u8 {
+        // Unused until you write the body:
+        let _ = (&value, &reference);
         todo!("stencil: one arm per operation; INCR and DECR saturate, the _WRAP ones wrap")
     }
 }
@@ -116,6 +120,8 @@ impl StencilOp {
 /// stay as in `old`: `(old & !write_mask) | (new & write_mask)`.
 #[must_use]
 pub fn write_masked(old: u8, new: u8, write_mask: u8) -> u8 {
+    // Unused until you write the body:
+    let _ = (&old, &new, &write_mask);
     todo!("stencil: take the masked bits from new and the others from old")
 }
 
@@ -192,6 +198,8 @@ pub fn stencil_fragment(
     state: &StencilState,
     depth_test: bool,
 ) -> Option<StencilOutcome> {
+    // Unused until you write the body:
+    let _ = (&canvas, &fragment, &state, &depth_test);
     todo!(
         "stencil: stencil test, then depth test; apply the op of the outcome through the write mask; draw on depth pass"
     )

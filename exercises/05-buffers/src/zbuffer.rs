@@ -75,6 +75,8 @@ impl DepthFunc {
     /// below never lets a NaN depth get this far).
     #[must_use]
     pub fn passes(self, incoming: f32, stored: f32) -> bool {
+        // Unused until you write the body:
+        let _ = (&incoming, &stored);
         todo!("zbuffer: compare incoming OP stored for each of the eight functions")
     }
 }
@@ -100,6 +102,8 @@ impl DepthRange {
     /// The range `near ..= far`, each bound clamped to `[0, 1]` as
     /// `glDepthRange` does; an error if either is NaN.
     pub fn try_new(near: f32, far: f32) -> Result<Self, DepthError> {
+        // Unused until you write the body:
+        let _ = (&near, &far);
         todo!("zbuffer: reject NaN, clamp both bounds to [0, 1]")
     }
 
@@ -119,6 +123,8 @@ impl DepthRange {
     /// `z = 0` gives `near` and `z = 1` gives `far` exactly.
     #[must_use]
     pub fn map(self, z: f32) -> f32 {
+        // Unused until you write the body:
+        let _ = &z;
         todo!("zbuffer: map z linearly so that 0 gives near and 1 gives far")
     }
 }
@@ -169,6 +175,8 @@ impl DepthState {
 /// tables clear to ∞, which a `[0, 1]` depth buffer stores as 1. A NaN
 /// depth is an error and leaves the canvas untouched.
 pub fn clear(canvas: &mut Canvas, colour: Rgba, depth: f32) -> Result<(), DepthError> {
+    // Unused until you write the body:
+    let _ = (&canvas, &colour, &depth);
     todo!("zbuffer: reject NaN, then set every pixel's colour and its clamped depth")
 }
 
@@ -183,6 +191,8 @@ pub fn clear(canvas: &mut Canvas, colour: Rgba, depth: f32) -> Result<(), DepthE
 /// 3. If `state.func.passes(z_w, stored)`, the colour is written, and the
 ///    depth `z_w` too when `state.write` is set.
 pub fn depth_test(canvas: &mut Canvas, fragment: Fragment, state: &DepthState) -> bool {
+    // Unused until you write the body:
+    let _ = (&canvas, &fragment, &state);
     todo!(
         "zbuffer: discard bad fragments, map the depth, test it, then write colour and (if enabled) depth"
     )

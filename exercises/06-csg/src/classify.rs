@@ -4,6 +4,7 @@
 
 use glam::Vec3;
 
+#[allow(unused_imports)]
 use crate::csg::{Csg, Scene};
 use crate::primitive::Primitive;
 
@@ -32,6 +33,8 @@ pub enum Class {
 /// A point with a NaN coordinate is `Outside` everything.
 #[must_use]
 pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
+    // Unused until you write the body:
+    let _ = (&primitive, &p);
     todo!("classify: compare p with the box bounds, |p − c|² with r², or the cylinder's two tests")
 }
 
@@ -48,5 +51,7 @@ pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
 /// `X − Y`. A point with a NaN coordinate is in nothing.
 #[must_use]
 pub fn contains(scene: &Scene, p: Vec3) -> bool {
+    // Unused until you write the body:
+    let _ = (&scene, &p);
     todo!("classify: evaluate the tree recursively with the three rules, On counts as inside")
 }

@@ -55,6 +55,8 @@ pub const DRAW: State = State::DEFAULT;
 /// Fragments exactly at the depth of a face of `B` count as outside `B`
 /// (z-less); the tests avoid such coincident surfaces.
 pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+    // Unused until you write the body:
+    let _ = (&model, &frame);
     todo!(
         "goldfeather: per literal, draw its entry face, parity-test it against every other literal, merge z-less"
     )

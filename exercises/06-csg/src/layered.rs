@@ -33,6 +33,8 @@ use crate::raster::{Framebuffer, Stats};
 /// have at most `MAX_LITERALS` = 254 literals, so a count never saturates.
 /// Literals naming a primitive `model` does not have are skipped.
 pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuffer) -> u8 {
+    // Unused until you write the body:
+    let _ = (&model, &product, &buffer);
     todo!(
         "layered: draw every entry face with stencil op Increment and no other writes; return the largest count"
     )
@@ -69,6 +71,8 @@ pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuff
 /// extraction (at most 2⁷ = 128 layers); here the stencil is cleared
 /// between extraction and parity tests, so the count may use all 8 bits.
 pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+    // Unused until you write the body:
+    let _ = (&model, &frame);
     todo!(
         "layered: count k, extract each layer by stencil Equal n − 1 with Increment, test it against every literal, merge"
     )

@@ -16,6 +16,7 @@
 //!       A   B
 //! ```
 
+#[allow(unused_imports)]
 use crate::csg::{Csg, CsgError, Literal, Product};
 
 /// The result of [`normalize`]: the normal tree and the rules applied.
@@ -54,6 +55,8 @@ pub struct Normalization {
 /// (the seed says so); trees of a few dozen leaves are fine.
 #[must_use]
 pub fn normalize(tree: &Csg) -> Normalization {
+    // Unused until you write the body:
+    let _ = &tree;
     todo!(
         "normalize: apply the first matching rule while one matches, recurse as the seed's procedure"
     )
@@ -67,6 +70,8 @@ pub fn normalize(tree: &Csg) -> Normalization {
 /// [`CsgError::NotNormal`] naming the offending subtree when a `∩` or `−`
 /// has a right operand that is not a primitive or a union below it.
 pub fn products(normal: &Csg) -> Result<Vec<Product>, CsgError> {
+    // Unused until you write the body:
+    let _ = &normal;
     todo!(
         "normalize: split at the unions, then walk each left-deep chain down to its first primitive"
     )

@@ -29,6 +29,8 @@ use crate::csg::{Model, Product};
 /// might share a point). The result defines the same solid as `model`.
 #[must_use]
 pub fn prune(model: &Model) -> Vec<Product> {
+    // Unused until you write the body:
+    let _ = &model;
     todo!(
         "prune: intersect the positive literals' bounds, drop empty products and complements outside that bound"
     )

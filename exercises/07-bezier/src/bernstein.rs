@@ -9,6 +9,7 @@
 //! The basis is non-negative on `[0, 1]` and sums to 1 (a partition of
 //! unity), so `P(t)` is a convex combination of the control points.
 
+#[allow(unused_imports)]
 use crate::basics::{BezierError, ControlPoint, MAX_DEGREE, check_control_points, check_parameter};
 
 /// The binomial coefficient `C(n, i) = n! / (i! (n − i)!)`, seed eq. (4).
@@ -21,6 +22,8 @@ use crate::basics::{BezierError, ControlPoint, MAX_DEGREE, check_control_points,
 /// [`BezierError::IndexAboveDegree`] if `i > n`,
 /// [`BezierError::DegreeTooHigh`] if `n > MAX_DEGREE`.
 pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
+    // Unused until you write the body:
+    let _ = (&n, &i);
     todo!("bernstein: check i ≤ n ≤ MAX_DEGREE, then multiply (n − k) / (k + 1) for k < i")
 }
 
@@ -35,6 +38,8 @@ pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
 /// [`BezierError::IndexAboveDegree`], [`BezierError::DegreeTooHigh`], or
 /// [`BezierError::ParameterOutOfRange`] for `t` NaN or outside `[0, 1]`.
 pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
+    // Unused until you write the body:
+    let _ = (&i, &n, &t);
     todo!("bernstein: C(n, i) · tⁱ · (1 − t)ⁿ⁻ⁱ after checking t ∈ [0, 1]")
 }
 
@@ -44,6 +49,8 @@ pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
 /// # Errors
 /// As [`bernstein`].
 pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
+    // Unused until you write the body:
+    let _ = (&n, &t);
     todo!("bernstein: collect B_{{i,n}}(t) for i = 0..=n")
 }
 
@@ -57,10 +64,13 @@ pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
 /// [`BezierError::Empty`], [`BezierError::DegreeTooHigh`],
 /// [`BezierError::NonFinitePoint`] or [`BezierError::ParameterOutOfRange`].
 pub fn bernstein_curve<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
+    // Unused until you write the body:
+    let _ = (&points, &t);
     todo!("bernstein: validate, then sum B_{{i,n}}(t) · P_i")
 }
 
 /// Rejects degrees above [`MAX_DEGREE`].
+#[allow(dead_code)]
 fn check_degree(n: usize) -> Result<(), BezierError> {
     if n > MAX_DEGREE {
         Err(BezierError::DegreeTooHigh {

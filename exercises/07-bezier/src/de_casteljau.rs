@@ -19,6 +19,7 @@
 //! `[t, 1]`. Only convex combinations happen for `t ∈ [0, 1]`, which is why
 //! the algorithm is numerically stable.
 
+#[allow(unused_imports)]
 use crate::basics::{BezierError, ControlPoint, check_control_points, check_parameter};
 
 /// A point of a curve together with its derivative there.
@@ -51,6 +52,8 @@ pub struct Split<P> {
 /// [`BezierError::NonFinitePoint`], or [`BezierError::ParameterOutOfRange`]
 /// for `t` NaN or outside `[0, 1]`.
 pub fn de_casteljau<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
+    // Unused until you write the body:
+    let _ = (&points, &t);
     todo!(
         "de_casteljau: validate; interpolate neighbours (1 − t)·b_i + t·b_{{i+1}} until one point is left"
     )
@@ -66,6 +69,8 @@ pub fn point_and_derivative<P: ControlPoint>(
     points: &[P],
     t: f64,
 ) -> Result<CurvePoint<P>, BezierError> {
+    // Unused until you write the body:
+    let _ = (&points, &t);
     todo!("de_casteljau: run de Casteljau; keep n · (b1 − b0) of the step that leaves two points")
 }
 
@@ -78,6 +83,8 @@ pub fn point_and_derivative<P: ControlPoint>(
 /// # Errors
 /// As [`de_casteljau`].
 pub fn split<P: ControlPoint>(points: &[P], t: f64) -> Result<Split<P>, BezierError> {
+    // Unused until you write the body:
+    let _ = (&points, &t);
     todo!(
         "de_casteljau: keep the first point of every level (left) and the last one (right, reversed)"
     )

@@ -88,6 +88,8 @@ pub fn newton(
     start: f64,
     settings: NewtonSettings,
 ) -> NewtonRoot {
+    // Unused until you write the body:
+    let _ = (&f, &df, &start, &settings);
     todo!(
         "trim: up to max_iterations steps h = f/f', x −= h; return once |h| < epsilon; stop if h is not finite"
     )
@@ -111,6 +113,8 @@ pub fn newton(
 /// curve, a non-finite point or a non-finite `uv` is never inside.
 #[must_use]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
+    // Unused until you write the body:
+    let _ = (&curve, &uv, &settings);
     todo!(
         "trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs"
     )
@@ -210,6 +214,8 @@ impl NewtonTrim {
 impl Trim for NewtonTrim {
     /// Inside the upper half or inside the lower half (Listing 11).
     fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!("trim: between the crossings of the upper curve, or of the lower curve")
     }
 }
@@ -239,6 +245,8 @@ impl Trim for NestedNewtonTrim {
     /// (Listing 12 omits it there, so where Newton finds no inner root
     /// the ring came out wrong).
     fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!(
             "trim: per half, between the outer curve's crossings and not between the inner curve's"
         )

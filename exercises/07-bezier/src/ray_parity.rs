@@ -109,6 +109,8 @@ impl TrimRegion {
     /// with a NaN or infinite coordinate is never inside.
     #[must_use]
     pub fn contains(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!(
             "trim_loop: reject non-finite uv; add crossing_parity of every curve of every loop; odd is inside"
         )
@@ -132,6 +134,8 @@ impl Trim for TrimRegion {
 /// subdivision never runs on NaN.
 #[must_use]
 pub fn crossing_parity(points: &[DVec2], a: DVec2) -> bool {
+    // Unused until you write the body:
+    let _ = (&points, &a);
     todo!(
         "trim_loop: shift so a is the origin; classify by the convex hull; split at ½ where undecided"
     )

@@ -12,6 +12,7 @@ use canvas::{Canvas, Rgba};
 use glam::{DVec2, DVec3};
 
 use crate::basics::{BezierError, Trim};
+#[allow(unused_imports)]
 use crate::zbuffer::{Camera, Fragment, RasterVertex, rasterize_triangle};
 
 /// The ambient colour (Listing 13: `ambientColor = vec3(0.1)`).
@@ -83,6 +84,8 @@ pub fn checker(uv: DVec2) -> DVec3 {
 /// is in world space with the eye given.
 #[must_use]
 pub fn phong(normal: DVec3, position: DVec3, eye: DVec3, diffuse: DVec3) -> DVec3 {
+    // Unused until you write the body:
+    let _ = (&normal, &position, &eye, &diffuse);
     todo!("render: ambient · diffuse plus, per light, φ · diffuse + ψ · specular as in Listing 13")
 }
 
@@ -108,6 +111,8 @@ pub fn render_surface(
     trim: &dyn Trim,
     settings: &RenderSettings,
 ) -> Result<(), BezierError> {
+    // Unused until you write the body:
+    let _ = (&canvas, &surface, &trim, &settings);
     todo!(
         "render: check the level; sample the grid; project; two triangles per cell; discard trimmed, shade the rest"
     )

@@ -46,6 +46,8 @@ impl IntervalTrim {
 impl Trim for IntervalTrim {
     /// `min.x ≤ u ≤ max.x` and `min.y ≤ v ≤ max.y` (boundary trimmed).
     fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!("trim: inclusive comparisons in u and in v, as the seed's shader")
     }
 }
@@ -77,6 +79,8 @@ impl CircleTrim {
 impl Trim for CircleTrim {
     /// `|uv − centre| < radius` (GLSL `distance`; the boundary is kept).
     fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!("trim: strict comparison of the distance with the radius, as the seed's shader")
     }
 }
@@ -108,6 +112,8 @@ impl EllipseTrim {
 impl Trim for EllipseTrim {
     /// `(u − c₁)²/a² + (v − c₂)²/b² ≤ 1` (seed eq. 14; boundary trimmed).
     fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
         todo!("trim: evaluate eq. 14 and compare with ≤ 1")
     }
 }

@@ -24,6 +24,7 @@
 
 use glam::{DVec2, DVec3};
 
+#[allow(unused_imports)]
 use crate::basics::{BezierError, MAX_DEGREE, check_parameter};
 use crate::control_net::ControlNet;
 
@@ -57,6 +58,8 @@ pub struct SurfacePoint {
 /// [`BezierError::ParameterOutOfRange`] for `u` or `v` NaN or outside
 /// `[0, 1]` (the net itself is valid by construction).
 pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+    // Unused until you write the body:
+    let _ = (&net, &uv);
     todo!("surface: check u, v; de Casteljau each column at u; de Casteljau the results at v")
 }
 
@@ -67,6 +70,8 @@ pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 /// # Errors
 /// As [`evaluate_u_then_v`].
 pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+    // Unused until you write the body:
+    let _ = (&net, &uv);
     todo!("surface: check u, v; de Casteljau each row at v; de Casteljau the results at u")
 }
 
@@ -89,6 +94,8 @@ pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 /// # Errors
 /// As [`evaluate_u_then_v`].
 pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, BezierError> {
+    // Unused until you write the body:
+    let _ = (&net, &uv);
     todo!(
         "surface: reduce rows at v then at u (keep n·(r1 − r0)); columns at u then at v (keep m·(q1 − q0))"
     )
@@ -109,12 +116,15 @@ pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, 
 /// [`BezierError::DegenerateNormal`] if the normal is undefined at the
 /// nudged point too (a net collapsed to a curve or a point).
 pub fn normal(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+    // Unused until you write the body:
+    let _ = (&net, &uv);
     todo!(
         "surface: normalise ∂u × ∂v; if degenerate retry once nudged towards (½, ½); else DegenerateNormal"
     )
 }
 
 /// Checks both parameters.
+#[allow(dead_code)]
 fn check_uv(uv: DVec2) -> Result<(), BezierError> {
     check_parameter("u", uv.x)?;
     check_parameter("v", uv.y)

@@ -48,6 +48,8 @@ use crate::knots::{KnotVector, NurbsError};
 /// oracle for the fast [`basis_funs`], not for production.
 #[must_use]
 pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
+    // Unused until you write the body:
+    let _ = (&knots, &i, &p, &u);
     todo!("basis: the recursion with N_{{i,p−1}} (not the seed's N_{{i,p}}) and 0/0 = 0")
 }
 
@@ -60,6 +62,8 @@ pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
 /// Errors: `u` outside the domain `[u_p, u_{n+1}]` or NaN
 /// ([`NurbsError::OutOfDomain`]).
 pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
+    // Unused until you write the body:
+    let _ = (&knots, &u);
     todo!("basis: binary search for u_s ≤ u < u_{{s+1}}; the domain's end belongs to span n")
 }
 
@@ -75,6 +79,8 @@ pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
 /// Errors: `s` not in `p ..= n` ([`NurbsError::BadSpan`]); `u` outside
 /// `[u_s, u_{s+1}]` or NaN ([`NurbsError::OutOfDomain`]).
 pub fn basis_funs(knots: &KnotVector, span: usize, u: f64) -> Result<Vec<f64>, NurbsError> {
+    // Unused until you write the body:
+    let _ = (&knots, &span, &u);
     todo!("basis: A2.2, the triangle of left/right differences")
 }
 
@@ -96,5 +102,7 @@ pub fn ders_basis_funs(
     u: f64,
     order: usize,
 ) -> Result<Vec<Vec<f64>>, NurbsError> {
+    // Unused until you write the body:
+    let _ = (&knots, &span, &u, &order);
     todo!("basis: A2.3, the triangle ndu, then the derivative recurrences with a[2][p+1]")
 }

@@ -32,9 +32,12 @@
 //!   7 control points = 2 cubic Bézier pieces sharing P₃
 //! ```
 
+#[allow(unused_imports)]
 use glam::DVec4;
 
+#[allow(unused_imports)]
 use crate::knots::{Domain, KnotVector, NurbsError};
+#[allow(unused_imports)]
 use crate::net::{BezierPatch, ControlNet, NurbsCurve, NurbsSurface};
 
 impl NurbsCurve {
@@ -49,6 +52,8 @@ impl NurbsCurve {
     /// not supported); `u`'s multiplicity would exceed the degree
     /// ([`NurbsError::MultiplicityTooHigh`]).
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<NurbsCurve, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&u, &times);
         todo!("knot_insertion: A5.1 on the homogeneous points, r rounds of αᵢ Pᵢ + (1 − αᵢ) Pᵢ₋₁")
     }
 }
@@ -60,6 +65,8 @@ impl NurbsSurface {
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
     pub fn insert_knot_u(&self, u: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&u, &times);
         todo!("knot_insertion: insert into every column (a curve in u) of the net")
     }
 
@@ -69,6 +76,8 @@ impl NurbsSurface {
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
     pub fn insert_knot_v(&self, v: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&v, &times);
         todo!("knot_insertion: insert into every row (a curve in v) of the net")
     }
 

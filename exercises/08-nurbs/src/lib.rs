@@ -6,65 +6,26 @@
 //!
 //! `knots` and `net` are given (read them first: they fix the conventions,
 //! homogeneous points `Pʷ = (w·P, w)` and nets with rows along `u`). Each
-//! other module is one task. You edit the files in `src/`; with the
-//! `reference` feature the tutor's solutions in `reference/08-nurbs/src/`
-//! are compiled instead, against the very same tests. (Unused-variable
-//! warnings are silenced in your files until you fill them in.)
+//! other module is one task. You edit the files in `src/`: what you build,
+//! test and grade is always your own code.
 #![warn(missing_docs)]
 
 /// Given: knot vectors, their domain, and the errors of this crate.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/knots.rs"
-)]
 pub mod knots;
 
 /// Given: homogeneous points, control nets, curve, surface and patch types.
-#[cfg_attr(feature = "reference", path = "../../../reference/08-nurbs/src/net.rs")]
 pub mod net;
 
 /// Task 1: Bernstein polynomials, rational Bézier curves and surfaces.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/rational_bezier.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod rational_bezier;
 
 /// Task 2: the B-spline basis — Cox-de Boor, span search, A2.2 and A2.3.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/basis.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod basis;
 
 /// Task 3: NURBS curves and surfaces — points, derivatives, normals, grids.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/nurbs.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod nurbs;
 
 /// Task 4: knot insertion (Boehm) and Bézier decomposition of surfaces.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/08-nurbs/src/knot_insertion.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod knot_insertion;
 
 pub use knots::{Breakpoint, Domain, KnotVector, MAX_GRID_POINTS, NurbsError};

@@ -28,9 +28,12 @@
 //! evaluation as private helpers (task `basis` writes the same
 //! algorithms; copy them, do not call them).
 
+#[allow(unused_imports)]
 use glam::{DVec3, DVec4};
 
+#[allow(unused_imports)]
 use crate::knots::{KnotVector, MAX_GRID_POINTS, NurbsError};
+#[allow(unused_imports)]
 use crate::net::{CurvePoint, NurbsCurve, NurbsSurface, SurfacePoint, project};
 
 /// Tangents whose cross product is shorter than this fraction of
@@ -48,6 +51,8 @@ impl NurbsCurve {
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
     pub fn point(&self, u: f64) -> Result<DVec3, NurbsError> {
+        // Unused until you write the body:
+        let _ = &u;
         todo!("nurbs: span, basis, a weighted sum of p + 1 homogeneous points, project")
     }
 
@@ -59,6 +64,8 @@ impl NurbsCurve {
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
     pub fn derivative(&self, u: f64) -> Result<CurvePoint, NurbsError> {
+        // Unused until you write the body:
+        let _ = &u;
         todo!("nurbs: homogeneous value and derivative from N and N′, then C′ = (A′ − w′C)/w")
     }
 }
@@ -72,6 +79,8 @@ impl NurbsSurface {
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
     pub fn point(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&u, &v);
         todo!("nurbs: spans and bases in u and v, the (p+1)(q+1) weighted sum, project")
     }
 
@@ -80,6 +89,8 @@ impl NurbsSurface {
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
     pub fn derivatives(&self, u: f64, v: f64) -> Result<SurfacePoint, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&u, &v);
         todo!("nurbs: Sʷ, Sʷ_u, Sʷ_v from bases and their derivatives, then the quotient rule")
     }
 
@@ -91,6 +102,8 @@ impl NurbsSurface {
     /// parallel or zero tangents, as at the pole of a sphere
     /// ([`NurbsError::DegenerateNormal`], see [`PARALLEL_TOLERANCE`]).
     pub fn normal(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&u, &v);
         todo!("nurbs: the cross product of the tangents, refused when they are parallel")
     }
 
@@ -111,6 +124,8 @@ impl NurbsSurface {
         samples_u: usize,
         samples_v: usize,
     ) -> Result<Vec<DVec3>, NurbsError> {
+        // Unused until you write the body:
+        let _ = (&samples_u, &samples_v);
         todo!("nurbs: bases once per uᵢ and vⱼ, the u sums once per row, q + 1 products per point")
     }
 }

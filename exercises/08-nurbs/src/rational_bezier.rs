@@ -22,7 +22,9 @@
 
 use glam::{DVec3, DVec4};
 
+#[allow(unused_imports)]
 use crate::knots::{Domain, NurbsError};
+#[allow(unused_imports)]
 use crate::net::{ControlNet, check_homogeneous, project};
 
 /// The Bernstein polynomial `B_{i,n}(u) = C(n, i) uⁱ (1 − u)ⁿ⁻ⁱ`
@@ -35,6 +37,8 @@ use crate::net::{ControlNet, check_homogeneous, project};
 /// overflows to infinity or NaN.
 #[must_use]
 pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
+    // Unused until you write the body:
+    let _ = (&n, &i, &u);
     todo!("rational_bezier: the binomial coefficient times uⁱ (1 − u)ⁿ⁻ⁱ")
 }
 
@@ -50,6 +54,8 @@ pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
 /// finite and `> 0` ([`NurbsError::BadWeight`]), a non-finite point, or `u`
 /// outside `[0, 1]` or NaN ([`NurbsError::OutOfDomain`]).
 pub fn rational_bezier_point(points: &[DVec4], u: f64) -> Result<DVec3, NurbsError> {
+    // Unused until you write the body:
+    let _ = (&points, &u);
     todo!("rational_bezier: check the input, run de Casteljau on the homogeneous points, project")
 }
 
@@ -69,6 +75,8 @@ pub fn rational_bezier_surface_point(
     u: f64,
     v: f64,
 ) -> Result<DVec3, NurbsError> {
+    // Unused until you write the body:
+    let _ = (&net, &u, &v);
     todo!(
         "rational_bezier: de Casteljau along v on every row, then along u on the results, project"
     )

@@ -33,8 +33,10 @@
 //! evaluation shader does (`interpolate3D`); the PN paper's quadratic
 //! normal patch is a refinement left out here.
 
+#[allow(unused_imports)]
 use glam::{DVec2, DVec3};
 
+#[allow(unused_imports)]
 use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
@@ -69,6 +71,8 @@ pub struct PnTriangle {
 /// caller keeps `u + v + w = 1`; other values extrapolate the polynomial).
 #[must_use]
 pub fn evaluate(t: &CubicBezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
+    // Unused until you write the body:
+    let _ = (&t, &u, &v, &w);
     todo!("bezier_triangle: the ten Bernstein terms of (4.1)")
 }
 
@@ -81,6 +85,8 @@ pub fn evaluate(t: &CubicBezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
 /// [`TessError::NonFinite`] for a non-finite position or normal, and for a
 /// normal that cannot be normalised (zero).
 pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTriangle, TessError> {
+    // Unused until you write the body:
+    let _ = (&positions, &normals);
     todo!("bezier_triangle: corners, edge thirds projected onto the tangent planes, then b111")
 }
 
@@ -91,6 +97,8 @@ pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTrian
 /// counter-clockwise `P1, P2, P3` gives counter-clockwise triangles).
 #[must_use]
 pub fn tessellate_pn(pn: &PnTriangle, domain: &TriangleDomain) -> Mesh {
+    // Unused until you write the body:
+    let _ = (&pn, &domain);
     todo!(
         "bezier_triangle: evaluate every domain point, interpolate the normals, keep the triangles"
     )

@@ -15,6 +15,7 @@
 //!          V10                 triangles that share it (Figure 2.7)
 //! ```
 
+#[allow(unused_imports)]
 use glam::DVec3;
 
 use crate::bezier::SurfacePoint;
@@ -138,6 +139,8 @@ impl EdgeTest {
 /// `|N2 − N12| > t1` (distances of unit normals).
 #[must_use]
 pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t1);
     todo!("fully_adaptive: compare both end normals with the midpoint normal")
 }
 
@@ -146,6 +149,8 @@ pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
 /// fails, which is the same "or".)
 #[must_use]
 pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t1, &t2);
     todo!("fully_adaptive: (2.1), or the end normals differ by more than t2")
 }
 
@@ -155,6 +160,8 @@ pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
 /// `N'` is not normalised.
 #[must_use]
 pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t3);
     todo!("fully_adaptive: mean of the end and opposite normals against N12")
 }
 
@@ -163,6 +170,8 @@ pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
 /// neighbourhood ([`EdgeContext::ring`]); an empty ring never splits.
 #[must_use]
 pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t3);
     todo!("fully_adaptive: mean normal of the ring against N12")
 }
 
@@ -178,6 +187,8 @@ pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
 /// the vectors are normalised, as the text describes.
 #[must_use]
 pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t1);
     todo!("fully_adaptive: angle of each sub-chord against the chord")
 }
 
@@ -191,6 +202,8 @@ pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// describes.
 #[must_use]
 pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t1);
     todo!("fully_adaptive: the unit edge against both end normals")
 }
 
@@ -201,5 +214,7 @@ pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// with a zero umbrella does not split.
 #[must_use]
 pub fn umbrella_flat(edge: &EdgeContext, t1: f64) -> bool {
+    // Unused until you write the body:
+    let _ = (&edge, &t1);
     todo!("fully_adaptive: unit umbrella vector at each end against its normal")
 }

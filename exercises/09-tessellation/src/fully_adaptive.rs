@@ -30,9 +30,12 @@
 //! get one more than the largest level of the edges they come from. An
 //! edge at `max_depth` is never split, so refinement ends.
 
+#[allow(unused_imports)]
 use std::collections::HashMap;
 
+#[allow(unused_imports)]
 use crate::bezier::{BezierPatch, SurfacePoint};
+#[allow(unused_imports)]
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
 use crate::mesh::Mesh;
@@ -70,5 +73,7 @@ pub fn refine(
     test: EdgeTest,
     max_depth: u32,
 ) -> Result<Mesh, TessError> {
+    // Unused until you write the body:
+    let _ = (&patch, &initial, &test, &max_depth);
     todo!("fully_adaptive: the seed's work list, a generation at a time, edges decided once")
 }

@@ -37,12 +37,15 @@
 //! seed leaves the estimate open ("depends on the viewpoint and the shape");
 //! a screen-size estimate would use projected control points instead.
 
+#[allow(unused_imports)]
 use glam::{DVec2, DVec3};
 
+#[allow(unused_imports)]
 use crate::bezier::{BezierPatch, SurfacePoint};
 use crate::error::TessError;
 use crate::mesh::Mesh;
 use crate::patch_grid::PatchGrid;
+#[allow(unused_imports)]
 use crate::stitch::stitch;
 
 /// The most segments a curve or a patch direction gets, however curved.
@@ -64,6 +67,8 @@ pub const MIN_INNER_SEGMENTS: usize = 2;
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number, [`TessError::NonFinite`] for a non-finite control point.
 pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessError> {
+    // Unused until you write the body:
+    let _ = (&control, &tolerance);
     todo!("per_patch: apply the chord bound to the largest second difference")
 }
 
@@ -76,6 +81,8 @@ pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessEr
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
 pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
+    // Unused until you write the body:
+    let _ = (&patch, &tolerance);
     todo!("per_patch: the curve bound along the columns (u) and rows (v)")
 }
 
@@ -97,5 +104,7 @@ pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
 pub fn tessellate_patch_grid(grid: &PatchGrid, tolerance: f64) -> Result<Mesh, TessError> {
+    // Unused until you write the body:
+    let _ = (&grid, &tolerance);
     todo!("per_patch: share corners and boundary-curve points, then grid + zipped ring per patch")
 }

@@ -50,6 +50,7 @@
 
 use glam::DVec2;
 
+#[allow(unused_imports)]
 use crate::stitch::stitch;
 
 /// `GL_MAX_TESS_GEN_LEVEL`: the largest level (64 is the minimum every
@@ -97,6 +98,8 @@ pub fn embed([u, v, _]: [f64; 3]) -> DVec2 {
 /// (see the module table). NaN clamps to the lower end.
 #[must_use]
 pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
+    // Unused until you write the body:
+    let _ = (&level, &spacing);
     todo!("primitive_generator: clamp per spacing, round up to an integer / even / odd n")
 }
 
@@ -106,6 +109,8 @@ pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
 /// `d_(n−i) = 1 − d_i`.
 #[must_use]
 pub fn subdivide_edge(level: f64, spacing: Spacing) -> Vec<f64> {
+    // Unused until you write the body:
+    let _ = (&level, &spacing);
     todo!(
         "primitive_generator: n equal segments, or n − 2 of length 1/f and two short ones at the ends"
     )
@@ -113,6 +118,7 @@ pub fn subdivide_edge(level: f64, spacing: Spacing) -> Vec<f64> {
 
 /// Levels that the specification treats as `1 + ε` (an inner level of 1
 /// when some other level is above 1).
+#[allow(dead_code)]
 const ONE_PLUS_EPSILON: f64 = 1.0 + f64::EPSILON;
 
 /// The primitive generator for `layout(quads)`: domain points and
@@ -129,6 +135,8 @@ const ONE_PLUS_EPSILON: f64 = 1.0 + f64::EPSILON;
 /// `u = 0`, each counter-clockwise), then the inner grid row by row.
 #[must_use]
 pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDomain {
+    // Unused until you write the body:
+    let _ = (&inner, &outer, &spacing);
     todo!(
         "primitive_generator: outer edges by the outer levels, inner grid by the inner levels, zip the ring"
     )
@@ -149,6 +157,8 @@ pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDo
 /// corner towards `(0,0,1)` and runs counter-clockwise.
 #[must_use]
 pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> TriangleDomain {
+    // Unused until you write the body:
+    let _ = (&inner, &outer, &spacing);
     todo!(
         "primitive_generator: concentric rings from the inner level, outer edges by the outer levels, zip"
     )

@@ -11,8 +11,10 @@
 //!     └──────────────▶ u    (n_u = 3, n_v = 2)
 //! ```
 
+#[allow(unused_imports)]
 use glam::DVec2;
 
+#[allow(unused_imports)]
 use crate::bezier::{BezierPatch, MAX_RESOLUTION};
 use crate::error::TessError;
 use crate::mesh::Mesh;
@@ -29,5 +31,7 @@ use crate::mesh::Mesh;
 /// [`TessError::Resolution`] if `n_u` or `n_v` is 0 or above
 /// [`MAX_RESOLUTION`].
 pub fn tessellate_uniform(patch: &BezierPatch, n_u: usize, n_v: usize) -> Result<Mesh, TessError> {
+    // Unused until you write the body:
+    let _ = (&patch, &n_u, &n_v);
     todo!("uniform: sample the (n_u+1)×(n_v+1) grid, then two triangles per cell")
 }

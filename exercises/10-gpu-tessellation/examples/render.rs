@@ -4,8 +4,11 @@
 //! the primitive generator, your evaluation pass, your shading and trimming.
 //!
 //! ```text
-//! cargo run -p gpu-tessellation --example render --features reference
+//! cargo run -p gpu-tessellation --example render
 //! ```
+//!
+//! (Tutors see the solutions' figures by running it in the workspace that
+//! `cargo xtask stage --reference DIR` writes.)
 
 use std::path::PathBuf;
 

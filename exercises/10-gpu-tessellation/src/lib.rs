@@ -6,11 +6,9 @@
 //! to this crate.
 //!
 //! Your code is WGSL inside Rust string functions (and one Rust function);
-//! the given modules paste it between their own WGSL, run it on the GPU
-//! (or on a software adapter such as lavapipe) and read the results back.
-//! With the `reference` feature the tutor's solutions in
-//! `reference/10-gpu-tessellation/src/` are compiled instead, against the
-//! very same tests.
+//! the given modules paste it between their own WGSL, run it on the GPU (or
+//! on a software adapter such as lavapipe) and read the results back. What
+//! you build, test and grade is always your own code.
 //!
 //! ```text
 //!  patches ─▶ control pass (task 1) ─▶ levels ─▶ domain (given, CPU)
@@ -31,47 +29,15 @@ pub mod render;
 pub mod shaders;
 
 /// Task 1: tessellation levels per patch, uniform or adaptive (WGSL).
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/10-gpu-tessellation/src/control.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod control;
 
 /// Task 3: de Casteljau for bicubic patches and Bézier triangles (WGSL).
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/10-gpu-tessellation/src/evaluation.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod evaluation;
 
 /// Task 4: Phong shading with two lights and a texture (WGSL), wireframe edges.
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/10-gpu-tessellation/src/shading.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod shading;
 
 /// Task 5: trimming by rectangle, circle, ellipse and Newton (WGSL).
-#[cfg_attr(
-    feature = "reference",
-    path = "../../../reference/10-gpu-tessellation/src/trimming.rs"
-)]
-#[cfg_attr(
-    not(feature = "reference"),
-    allow(unused_variables, unused_mut, unused_imports, dead_code)
-)]
 pub mod trimming;
 
 /// Why a pass could not run.

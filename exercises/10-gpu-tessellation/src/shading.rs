@@ -37,5 +37,7 @@ pub fn shading_wgsl() -> &'static str {
 /// of the form `[a, a]`). Empty input gives no edges.
 #[must_use]
 pub fn wireframe_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
+    // Unused until you write the body:
+    let _ = &triangles;
     todo!("render: collect each triangle edge once as [min, max], sorted")
 }

@@ -58,14 +58,8 @@ struct Profile {
     test: bool,
 }
 
-/// Builds `topic`'s tests in the workspace at `root`, with `--features
-/// reference` when `reference` is set.
-pub fn build(
-    root: &Path,
-    topic: &Topic,
-    reference: bool,
-    target_dir: Option<&Path>,
-) -> Result<Build> {
+/// Builds `topic`'s tests in the workspace at `root`.
+pub fn build(root: &Path, topic: &Topic, target_dir: Option<&Path>) -> Result<Build> {
     let mut command = cargo();
     command
         .current_dir(root)
@@ -78,9 +72,6 @@ pub fn build(
             "never",
         ])
         .arg("--message-format=json-render-diagnostics");
-    if reference {
-        command.args(["--features", "reference"]);
-    }
     if let Some(dir) = target_dir {
         command.arg("--target-dir").arg(dir);
     }

@@ -33,6 +33,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 pub use report::{Edition, Report, TaskStatus, TestStatus};
 
+use crate::stage;
+pub use crate::stage::Overlay;
 use crate::topics::{self, Topic};
 use build::{Build, TestBinary};
 use outcome::Exit;
@@ -49,7 +51,7 @@ pub struct GradeOptions {
     pub root: PathBuf,
     /// Topics by folder name, short name, package or number; empty: all.
     pub topics: Vec<String>,
-    /// Grade the reference solutions (`--features reference`).
+    /// Grade the reference solutions, staged over the stubs (see `stage`).
     pub reference: bool,
     /// Where the report files, logs and images go.
     pub out: PathBuf,
@@ -84,7 +86,44 @@ pub fn default_jobs() -> usize {
 /// Grades, writes `report.json`, `results.json`, `junit.xml` and `report.html` into
 /// `options.out`, and returns the report. Student code failing in any way
 /// is part of the report; `Err` means grading itself could not run.
+///
+/// The student code is graded in the checkout itself; the reference
+/// solutions in the stage (see `stage`), built in the stage's cache.
 pub fn grade(options: &GradeOptions) -> Result<Report> {
+    if options.reference {
+        grade_staged(options, Overlay::Reference)
+    } else {
+        let mut report = grade_tree(options, Edition::Student)?;
+        report.root = std::path::absolute(&options.root)
+            .with_context(|| format!("cannot find {}", options.root.display()))?;
+        export::write_all(&report, &options.out)?;
+        Ok(report)
+    }
+}
+
+/// Grades `options.root` staged with `overlay` (see `stage`), built in the
+/// stage's cache unless `options.target_dir` says otherwise, and writes
+/// the report files.
+pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Report> {
+    let root = std::path::absolute(&options.root)
+        .with_context(|| format!("cannot find {}", options.root.display()))?;
+    let staged = stage::stage(&root, overlay, options.target_dir.as_deref())?;
+    let mut in_stage = options.clone();
+    in_stage.root.clone_from(&staged.root);
+    in_stage.target_dir = Some(staged.target_dir.clone());
+    let edition = match overlay {
+        Overlay::Reference => Edition::Reference,
+        Overlay::Own | Overlay::Submission(_) => Edition::Student,
+    };
+    let mut report = grade_tree(&in_stage, edition)?;
+    report.root = root;
+    export::write_all(&report, &options.out)?;
+    Ok(report)
+}
+
+/// Grades the course at `options.root` as it is, building it into
+/// `options.target_dir`; writes no report files.
+fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
     let started = Instant::now();
     let root = std::path::absolute(&options.root)
         .with_context(|| format!("cannot find {}", options.root.display()))?;
@@ -101,11 +140,6 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
     if topics.iter().any(|topic| topic.sheet.gpu) {
         crate::setup::ensure_vulkan();
     }
-    let edition = if options.reference {
-        Edition::Reference
-    } else {
-        Edition::Student
-    };
 
     // Build every topic first: cargo serialises builds anyway.
     let mut plans = Vec::new();
@@ -120,12 +154,7 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
             }
         }
         let spinner = spinner(format!("building {}", topic.name));
-        let build = build::build(
-            &root,
-            topic,
-            options.reference,
-            options.target_dir.as_deref(),
-        );
+        let build = build::build(&root, topic, options.target_dir.as_deref());
         spinner.finish_and_clear();
         plans.push(plan(&root, &out, topic, build?));
     }
@@ -172,7 +201,6 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
         integrity: None,
         topics,
     };
-    export::write_all(&report, &out)?;
     Ok(report)
 }
 

@@ -30,7 +30,7 @@ pub const SCHEMA: u32 = 1;
 pub enum Edition {
     /// `exercises/*/src`: the student's code.
     Student,
-    /// `--features reference`: the tutor's solutions.
+    /// `--reference`: the tutor's solutions, staged over the stubs.
     Reference,
 }
 

@@ -6,12 +6,13 @@
 //! snapshots, the task sheets (they hold the points), the manifests, the
 //! tooling — is the course's. So a submission is never built where it
 //! lies: its `src/` folders are laid over a copy of the official course,
-//! the *stage*, and the stage is graded.
+//! the *stage* (see `stage`, which also stages the reference), and the
+//! stage is graded.
 //!
 //! ```text
-//!   official course ──copy (no target/, .git/, reference/)──┐
-//!                                                           ├──> stage ──grade──> report
-//!   submission ──exercises/*/src/ only──────────────────────┘
+//!   official course ──(no target/, .git/, reference/)──┐
+//!                                                      ├──sync──> stage ──grade──> report
+//!   submission ──exercises/*/src/ only─────────────────┘
 //! ```
 //!
 //! The grading files of the submission are compared with the official ones
@@ -19,23 +20,25 @@
 //! *flagged* in every report (the table, `report.html`, `report.json`,
 //! Gradescope's output). Nothing in the submission is ever written to.
 //!
-//! Each submission is graded into `<out>/<name>/` (its stage is
-//! `<out>/<name>/stage/`, its build `<out>/.build/`). A folder whose
-//! subfolders are checkouts is a class: each is graded in turn, and
-//! `<out>/gradebook.csv` and `gradebook.json` list the scores.
+//! Each submission is graded into `<out>/<name>/`, in the one stage of the
+//! course, whose build cache all submissions share; the snapshots it
+//! failed are kept in `<out>/<name>/snapshots/` (insta's `.snap.new`
+//! files, at their paths in the course). A folder whose subfolders are
+//! checkouts is a class: each is graded in turn, and `<out>/gradebook.csv`
+//! and `gradebook.json` list the scores.
 
 use std::fmt::Write as _;
 use std::fs;
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use serde::Serialize;
 
-use super::report::{self, Report};
+use super::report::{self, Edition, Report};
 use super::{GradeOptions, table};
-
-/// Folders never copied or compared: build output, history, solutions.
-const SKIPPED_FOLDERS: [&str; 3] = ["target", ".git", "reference"];
+use crate::release;
+use crate::stage::{self, Files, Overlay, Source, files_under, is_student_file};
+use crate::topics::{self, Topic};
 
 /// What differs between a submission and the official course, in the
 /// files that take part in grading (paths relative to the course root).
@@ -53,6 +56,12 @@ pub struct Integrity {
 }
 
 impl Integrity {
+    /// How many files differ.
+    #[must_use]
+    pub fn count(&self) -> usize {
+        self.changed.len() + self.missing.len() + self.added.len()
+    }
+
     /// Whether anything differs: the submission is flagged.
     #[must_use]
     pub fn flagged(&self) -> bool {
@@ -88,13 +97,6 @@ impl Integrity {
     }
 }
 
-/// Whether a path (relative to a course root) is the student's: inside
-/// `exercises/<topic>/src/`.
-fn is_student_file(relative: &Path) -> bool {
-    let parts: Vec<Component<'_>> = relative.components().collect();
-    parts.len() >= 3 && parts[0].as_os_str() == "exercises" && parts[2].as_os_str() == "src"
-}
-
 /// Whether a path takes part in grading: the manifests, `.cargo/`, the
 /// course library, the tooling, and every exercise file outside `src/`.
 fn is_grading_file(relative: &Path) -> bool {
@@ -103,7 +105,9 @@ fn is_grading_file(relative: &Path) -> bool {
     };
     let first = first.as_os_str();
     let top_level = relative.components().count() == 1;
-    (top_level && (first == "Cargo.toml" || first == "Cargo.lock"))
+    // Not `Cargo.lock`: the stage builds with the course's, and cargo
+    // rewrites a student's when it resolves for them.
+    (top_level && first == "Cargo.toml")
         || first == ".cargo"
         || first == "crates"
         || first == "xtask"
@@ -112,58 +116,56 @@ fn is_grading_file(relative: &Path) -> bool {
             && !is_student_file(relative))
 }
 
-/// Every file under `root`, relative to it and sorted, skipping
-/// [`SKIPPED_FOLDERS`] at any depth.
-fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
-    fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
-        let entries =
-            fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
-        for entry in entries {
-            let entry = entry.with_context(|| format!("cannot read {}", dir.display()))?;
-            let path = entry.path();
-            let kind = entry
-                .file_type()
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            if kind.is_dir() {
-                if !SKIPPED_FOLDERS.iter().any(|s| entry.file_name() == *s) {
-                    walk(root, &path, files)?;
-                }
-            } else if kind.is_file() {
-                let relative = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
-                files.push(relative);
-            }
-            // Symbolic links are neither copied nor followed: a link in a
-            // submission could point anywhere.
-        }
-        Ok(())
-    }
-    let mut files = Vec::new();
-    walk(root, root, &mut files)?;
-    files.sort();
-    Ok(files)
+/// The topics (folder names) of the official course that a submission
+/// holds.
+fn submitted_topics(official: &Path, submission: &Path) -> Result<Vec<Topic>> {
+    Ok(topics::discover(official)?
+        .into_iter()
+        .filter(|topic| submission.join("exercises").join(&topic.name).is_dir())
+        .collect())
 }
 
-/// Compares the submission's grading files with the official ones.
+/// Compares the submission's grading files with the official ones: those
+/// of the whole course, or of the student edition of the topics it holds
+/// (`cargo xtask release`), whichever it is closer to.
 pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
+    let course: Files = files_under(official)?
+        .into_iter()
+        .map(|file| {
+            let source = Source::File(official.join(&file));
+            (file, source)
+        })
+        .collect();
+    let mut integrity = compare(official, &course, submission)?;
+    let topics = submitted_topics(official, submission)?;
+    if integrity.flagged() && !topics.is_empty() {
+        let (edition, _) = release::edition_files(official, &topics)?;
+        let against_edition = compare(official, &edition, submission)?;
+        if against_edition.count() < integrity.count() {
+            integrity = against_edition;
+        }
+    }
+    Ok(integrity)
+}
+
+/// Compares the submission's grading files with `expected`.
+fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integrity> {
     let theirs: Vec<PathBuf> = files_under(submission)?
         .into_iter()
         .filter(|f| is_grading_file(f))
         .collect();
-    let ours: Vec<PathBuf> = files_under(official)?
-        .into_iter()
-        .filter(|f| is_grading_file(f))
+    let ours: Vec<&(PathBuf, Source)> = expected
+        .iter()
+        .filter(|(file, _)| is_grading_file(file))
         .collect();
     let mut integrity = Integrity {
         official: official.to_path_buf(),
         ..Integrity::default()
     };
-    for file in &ours {
-        let official_file = official.join(file);
+    for (file, source) in &ours {
         match fs::read(submission.join(file)) {
             Ok(bytes) => {
-                let expected = fs::read(&official_file)
-                    .with_context(|| format!("cannot read {}", official_file.display()))?;
-                if bytes != expected {
+                if bytes != source.read()? {
                     integrity.changed.push(file.clone());
                 }
             }
@@ -172,55 +174,9 @@ pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
     }
     integrity.added = theirs
         .into_iter()
-        .filter(|f| ours.binary_search(f).is_err())
+        .filter(|f| !ours.iter().any(|(file, _)| file == f))
         .collect();
     Ok(integrity)
-}
-
-/// Builds the stage: the official course without its solutions, with the
-/// submission's `exercises/*/src/` in place of the stubs.
-pub fn stage(official: &Path, submission: &Path, stage: &Path) -> Result<()> {
-    if stage.exists() {
-        fs::remove_dir_all(stage).with_context(|| format!("cannot clear {}", stage.display()))?;
-    }
-    let copy = |from: &Path, to: &Path| -> Result<()> {
-        if let Some(parent) = to.parent() {
-            fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create {}", parent.display()))?;
-        }
-        fs::copy(from, to)
-            .map(drop)
-            .with_context(|| format!("cannot copy {} to {}", from.display(), to.display()))
-    };
-    for file in files_under(official)? {
-        if !is_student_file(&file) {
-            copy(&official.join(&file), &stage.join(&file))?;
-        }
-    }
-    // The student's folders replace the stubs whole, so that a module the
-    // student added comes along and a stub they deleted stays deleted.
-    let exercises = official.join("exercises");
-    let topics =
-        fs::read_dir(&exercises).with_context(|| format!("cannot read {}", exercises.display()))?;
-    for topic in topics {
-        let topic = topic.with_context(|| format!("cannot read {}", exercises.display()))?;
-        let relative = Path::new("exercises").join(topic.file_name()).join("src");
-        let theirs = submission.join(&relative);
-        if !theirs.is_dir() {
-            // Nothing handed in for this topic: the stubs stay.
-            for file in files_under(&official.join(&relative))? {
-                copy(
-                    &official.join(&relative).join(&file),
-                    &stage.join(&relative).join(&file),
-                )?;
-            }
-            continue;
-        }
-        for file in files_under(&theirs)? {
-            copy(&theirs.join(&file), &stage.join(&relative).join(&file))?;
-        }
-    }
-    Ok(())
 }
 
 /// Whether `dir` looks like a course checkout.
@@ -229,28 +185,30 @@ fn is_checkout(dir: &Path) -> bool {
 }
 
 /// Grades one submission against the official course at `official`:
-/// compare, stage under `<options.out>/stage`, grade the stage into
-/// `options.out`, and print the table. The report files are written again
-/// with the submission's path and its integrity.
-///
-/// `build` is cargo's target folder for the stage. Submissions share one
-/// (the stages have the official lock file, so dependencies are built
-/// once for a whole class), and it must not contain the stage: cargo
-/// records the sources of a package inside its target folder relative to
-/// that folder, and would take one submission's files for another's.
-pub fn grade_one(
-    official: &Path,
-    submission: &Path,
-    options: &GradeOptions,
-    build: &Path,
-) -> Result<Report> {
+/// compare, stage, grade the stage into `options.out`, keep its failed
+/// snapshots, and print the table. The report files carry the
+/// submission's path and its integrity.
+pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> Result<Report> {
     let integrity = check(official, submission)?;
-    let stage_dir = options.out.join("stage");
-    stage(official, submission, &stage_dir)?;
-    let mut staged = options.clone();
-    staged.root.clone_from(&stage_dir);
-    staged.target_dir = Some(build.to_path_buf());
-    let mut report = super::grade(&staged)?;
+    let mut options = options.clone();
+    if options.topics.is_empty() {
+        // An edition of some topics is graded on those alone.
+        options.topics = submitted_topics(official, submission)?
+            .into_iter()
+            .map(|t| t.name)
+            .collect();
+    }
+    let options = &options;
+    let staged = stage::stage(
+        official,
+        Overlay::Submission(submission),
+        options.target_dir.as_deref(),
+    )?;
+    let mut in_stage = options.clone();
+    in_stage.root.clone_from(&staged.root);
+    in_stage.target_dir = Some(staged.target_dir.clone());
+    let mut report = super::grade_tree(&in_stage, Edition::Student)?;
+    keep_pending_snapshots(&staged.root, &options.out.join("snapshots"))?;
     report.root = submission.to_path_buf();
     report.integrity = Some(integrity);
     super::export::write_all(&report, &options.out)?;
@@ -259,6 +217,27 @@ pub fn grade_one(
         table::render(&report, &options.out, table::Style::detect(), true)
     );
     Ok(report)
+}
+
+/// Copies insta's pending snapshots (`.snap.new`, `.pending-snap`) out of
+/// the stage, which the next submission's sync clears, into `into`.
+fn keep_pending_snapshots(stage_root: &Path, into: &Path) -> Result<()> {
+    if into.exists() {
+        fs::remove_dir_all(into).with_context(|| format!("cannot clear {}", into.display()))?;
+    }
+    for file in files_under(stage_root)? {
+        let name = file.to_string_lossy();
+        if name.ends_with(".snap.new") || name.ends_with(".pending-snap") {
+            let to = into.join(&file);
+            if let Some(parent) = to.parent() {
+                fs::create_dir_all(parent)
+                    .with_context(|| format!("cannot create {}", parent.display()))?;
+            }
+            fs::copy(stage_root.join(&file), &to)
+                .with_context(|| format!("cannot copy {}", file.display()))?;
+        }
+    }
+    Ok(())
 }
 
 /// One row of the gradebook.
@@ -279,10 +258,6 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
     let dir = dir
         .canonicalize()
         .with_context(|| format!("cannot find the submission {}", dir.display()))?;
-    let build = options
-        .target_dir
-        .clone()
-        .unwrap_or_else(|| options.out.join(".build"));
     let out_for = |submission: &Path| {
         let name = submission.file_name().map_or_else(
             || "submission".to_owned(),
@@ -294,7 +269,7 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
     };
     if is_checkout(&dir) {
         let (_, one) = out_for(&dir);
-        grade_one(official, &dir, &one, &build)?;
+        grade_one(official, &dir, &one)?;
         return Ok(());
     }
     let mut submissions: Vec<PathBuf> = fs::read_dir(&dir)
@@ -313,7 +288,7 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
     for (i, submission) in submissions.iter().enumerate() {
         let (name, one) = out_for(submission);
         println!("==> [{}/{}] {name}", i + 1, submissions.len());
-        let report = grade_one(official, submission, &one, &build)?;
+        let report = grade_one(official, submission, &one)?;
         let integrity = report.integrity.as_ref();
         rows.push(GradebookRow {
             submission: name,
@@ -403,22 +378,9 @@ mod tests {
     use super::*;
 
     #[test]
-    fn only_exercise_sources_are_the_students() {
-        assert!(is_student_file(Path::new("exercises/01-lines/src/dda.rs")));
-        assert!(is_student_file(Path::new(
-            "exercises/01-lines/src/sub/x.rs"
-        )));
-        assert!(!is_student_file(Path::new(
-            "exercises/01-lines/tests/dda.rs"
-        )));
-        assert!(!is_student_file(Path::new("exercises/src/x.rs")));
-    }
-
-    #[test]
     fn grading_files_are_everything_the_grader_builds_or_reads() {
         for file in [
             "Cargo.toml",
-            "Cargo.lock",
             ".cargo/config.toml",
             "crates/testkit/src/raster.rs",
             "xtask/src/main.rs",
@@ -431,6 +393,7 @@ mod tests {
         }
         for file in [
             "README.md",
+            "Cargo.lock",
             "notes.txt",
             "exercises/01-lines/src/dda.rs",
             "exercises/README.md",

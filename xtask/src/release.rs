@@ -1,0 +1,396 @@
+//! `cargo xtask release DIR [--topics 01..=03]`: writes the edition
+//! students get, ready to push as a repository of its own.
+//!
+//! The edition is the course without what only its authors need: no
+//! `reference/`, no benchmarks (`xtask/bench`), no tests of the tooling
+//! (`xtask/tests`, whose fixtures hold solutions), no CI script or
+//! benchmark figures; of the topics only those released, and of the course
+//! library only the crates they need (found through their path
+//! dependencies). The root `Cargo.toml` and `README.md` drop the lines
+//! between a `course only` opening and closing marker
+//! (`# BEGIN COURSE ONLY` … `# END COURSE ONLY`, and the same words in an
+//! HTML comment), the README its table rows and layout lines of what is
+//! not released, and its test command is cargo's own. The
+//! lock file is trimmed by cargo to the packages left, so that a student's
+//! first build changes nothing in it.
+//!
+//! Releasing again into the same folder updates it in place (its `.git`
+//! stays): the next commit there is the new edition.
+
+use std::collections::{BTreeSet, HashMap};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail, ensure};
+use serde::Deserialize;
+
+use crate::cargo::{self, cargo};
+use crate::stage::{self, Files, Source};
+use crate::topics::{self, Topic};
+
+/// Paths (relative to the course root) that only the course's authors
+/// need: never released.
+const COURSE_ONLY: [&str; 4] = [".ci", "BENCHMARKS.md", "xtask/bench", "xtask/tests"];
+
+/// What a release holds.
+#[derive(Debug)]
+pub struct Release {
+    /// The folder it was written to.
+    pub dir: PathBuf,
+    /// The released topics (folder names), in course order.
+    pub topics: Vec<String>,
+    /// The course-library crates they need (folder names under `crates/`).
+    pub crates: Vec<String>,
+}
+
+/// The topics a `--topics` list selects: names as `cargo xtask grade`
+/// takes them, or a range of numbers `01..=03` / `01..04`; empty: all.
+pub fn select_topics(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
+    let all = topics::discover(root)?;
+    let mut names = Vec::new();
+    for selector in wanted.iter().flat_map(|w| w.split(',')) {
+        let selector = selector.trim();
+        if let Some((from, to, inclusive)) = selector
+            .split_once("..=")
+            .map(|(a, b)| (a, b, true))
+            .or_else(|| selector.split_once("..").map(|(a, b)| (a, b, false)))
+        {
+            let number = |text: &str| {
+                text.trim()
+                    .parse::<u32>()
+                    .with_context(|| format!("`{selector}`: `{text}` is not a topic number"))
+            };
+            let (from, to) = (number(from)?, number(to)?);
+            let in_range = |n: u32| n >= from && (n < to || (inclusive && n == to));
+            let before = names.len();
+            for topic in &all {
+                if topic_number(topic).is_some_and(in_range) {
+                    names.push(topic.name.clone());
+                }
+            }
+            ensure!(names.len() > before, "`{selector}` selects no topic");
+        } else {
+            names.extend(
+                topics::select(root, &[selector.to_owned()])?
+                    .into_iter()
+                    .map(|t| t.name),
+            );
+        }
+    }
+    Ok(all
+        .into_iter()
+        .filter(|topic| names.is_empty() || names.contains(&topic.name))
+        .collect())
+}
+
+/// `01` of `01-lines`.
+fn topic_number(topic: &Topic) -> Option<u32> {
+    topic.name.split('-').next()?.parse().ok()
+}
+
+#[derive(Deserialize)]
+struct Metadata {
+    packages: Vec<Package>,
+}
+
+#[derive(Deserialize)]
+struct Package {
+    manifest_path: PathBuf,
+    dependencies: Vec<Dependency>,
+}
+
+#[derive(Deserialize)]
+struct Dependency {
+    #[serde(default)]
+    path: Option<PathBuf>,
+}
+
+/// The folders under `crates/` that `topics` and the tooling need, directly
+/// or through each other.
+fn needed_crates(root: &Path, topics: &[Topic]) -> Result<Vec<String>> {
+    let mut command = cargo();
+    command.current_dir(root).args([
+        "metadata",
+        "--format-version",
+        "1",
+        "--no-deps",
+        "--offline",
+    ]);
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+    ensure!(
+        output.status.success(),
+        "`{}` failed: {}",
+        cargo::display(&command),
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    let metadata: Metadata =
+        serde_json::from_slice(&output.stdout).context("cannot read cargo's metadata")?;
+    let deps: HashMap<PathBuf, Vec<PathBuf>> = metadata
+        .packages
+        .into_iter()
+        .filter_map(|p| {
+            let dir = p.manifest_path.parent()?.to_path_buf();
+            Some((
+                dir,
+                p.dependencies.into_iter().filter_map(|d| d.path).collect(),
+            ))
+        })
+        .collect();
+    let library = root.join("crates");
+    let mut todo: Vec<PathBuf> = topics.iter().map(|t| t.dir.clone()).collect();
+    todo.push(root.join("xtask"));
+    let mut seen = BTreeSet::new();
+    let mut crates = BTreeSet::new();
+    while let Some(dir) = todo.pop() {
+        if !seen.insert(dir.clone()) {
+            continue;
+        }
+        if let Ok(relative) = dir.strip_prefix(&library) {
+            crates.insert(relative.to_string_lossy().into_owned());
+        }
+        todo.extend(deps.get(&dir).into_iter().flatten().cloned());
+    }
+    Ok(crates.into_iter().collect())
+}
+
+/// `text` without the lines from one containing `begin` to the next one
+/// containing `end` (both included).
+fn drop_marked(text: &str, begin: &str, end: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut dropping = false;
+    for line in text.split_inclusive('\n') {
+        if !dropping && line.contains(begin) {
+            dropping = true;
+        } else if dropping && line.contains(end) {
+            dropping = false;
+        } else if !dropping {
+            out.push_str(line);
+        }
+    }
+    out
+}
+
+/// The root manifest of the edition.
+fn manifest(text: &str, crates: &[String], all_crates: &[String]) -> String {
+    let text = drop_marked(text, "# BEGIN COURSE ONLY", "# END COURSE ONLY");
+    text.lines()
+        .filter(|line| {
+            // `gpu = { path = "crates/gpu" }` of a crate not released.
+            !all_crates
+                .iter()
+                .any(|c| !crates.contains(c) && line.contains(&format!("path = \"crates/{c}\"")))
+        })
+        .map(|line| format!("{line}\n"))
+        .collect()
+}
+
+/// Lines of the course's README that say something else in an edition,
+/// where the test command is cargo's own.
+const README_REPLACEMENTS: [(&str, &str); 2] = [
+    (
+        "# the project's test suite (course authors, CI)",
+        "# the tests alone, as cargo shows them",
+    ),
+    ("cargo xtask test", "cargo test"),
+];
+
+/// The README of the edition: without the course-only parts, the layout
+/// lines of what it lacks and the table rows of topics not released.
+fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String]) -> String {
+    let text = drop_marked(text, "<!-- course only -->", "<!-- /course only -->");
+    let absent_topic = |line: &str| {
+        line.starts_with('|')
+            && all_topics
+                .iter()
+                .any(|t| !topics.contains(t) && line.contains(&format!("exercises/{t}/")))
+    };
+    let absent_layout = |line: &str| {
+        line.starts_with("reference/")
+            || line.starts_with("xtask/bench")
+            || line
+                .strip_prefix("crates/")
+                .and_then(|rest| rest.split_whitespace().next())
+                .is_some_and(|name| !crates.iter().any(|c| c == name))
+    };
+    text.lines()
+        .filter(|line| !absent_topic(line) && !absent_layout(line))
+        .map(|line| {
+            let line = README_REPLACEMENTS
+                .iter()
+                .find(|(from, _)| line == *from)
+                .map_or(line, |(_, to)| *to);
+            format!("{line}\n")
+        })
+        .collect()
+}
+
+/// The files of the edition of `topics` and the course-library crates it
+/// holds, without its lock file (which cargo trims when writing it).
+pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String>)> {
+    let all_topics: Vec<String> = topics::discover(root)?
+        .into_iter()
+        .map(|t| t.name)
+        .collect();
+    let crates = needed_crates(root, topics)?;
+    let library = root.join("crates");
+    let all_crates: Vec<String> = if library.is_dir() {
+        fs::read_dir(&library)
+            .with_context(|| format!("cannot read {}", library.display()))?
+            .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let names: Vec<String> = topics.iter().map(|t| t.name.clone()).collect();
+    let released = |file: &Path| {
+        let mut parts = file.components().map(|c| c.as_os_str().to_string_lossy());
+        let first = parts.next().unwrap_or_default();
+        let second = parts.next().unwrap_or_default();
+        if COURSE_ONLY.iter().any(|only| file.starts_with(only)) {
+            return false;
+        }
+        match first.as_ref() {
+            "exercises" => names.iter().any(|n| *n == second),
+            "crates" => crates.iter().any(|c| *c == second),
+            _ => true,
+        }
+    };
+    let mut files = Files::new();
+    for file in stage::files_under(root)? {
+        if !released(&file) {
+            continue;
+        }
+        let source = root.join(&file);
+        let source = match file.to_str() {
+            Some("Cargo.toml") => {
+                Source::Text(manifest(&read(&source)?, &crates, &all_crates).into_bytes())
+            }
+            Some("README.md") => {
+                Source::Text(readme(&read(&source)?, &names, &all_topics, &crates).into_bytes())
+            }
+            _ => Source::File(source),
+        };
+        files.push((file, source));
+    }
+    Ok((files, crates))
+}
+
+/// Writes the edition of `topics` (empty: all) into `dir`.
+pub fn write(root: &Path, dir: &Path, wanted: &[String]) -> Result<Release> {
+    if !root.join("reference").is_dir() {
+        bail!(
+            "{} is a student edition already: it has no reference/",
+            root.display()
+        );
+    }
+    let topics = select_topics(root, wanted)?;
+    ensure!(!topics.is_empty(), "no topics to release");
+    let (mut files, crates) = edition_files(root, &topics)?;
+    // The course's lock file, trimmed by cargo below.
+    files.retain(|(to, _)| to != Path::new("Cargo.lock"));
+    files.push((
+        PathBuf::from("Cargo.lock"),
+        Source::File(root.join("Cargo.lock")),
+    ));
+    files.sort();
+    stage::claim(dir)?;
+    stage::sync(&files, dir)?;
+    trim_lock_file(dir)?;
+    Ok(Release {
+        dir: dir.to_path_buf(),
+        topics: topics.into_iter().map(|t| t.name).collect(),
+        crates,
+    })
+}
+
+/// Lets cargo drop the packages the edition no longer uses from its lock
+/// file, without touching the versions of the others.
+fn trim_lock_file(dir: &Path) -> Result<()> {
+    // Offline first; cargo needs the manifests of every platform's
+    // packages, which a machine that never built for Windows may lack.
+    let mut output = None;
+    for offline in [true, false] {
+        let mut command = cargo();
+        command
+            .current_dir(dir)
+            .args(["metadata", "--format-version", "1"])
+            .stdout(std::process::Stdio::null());
+        if offline {
+            command.arg("--offline");
+        }
+        let result = command
+            .output()
+            .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+        let success = result.status.success();
+        output = Some((command, result));
+        if success {
+            break;
+        }
+    }
+    let (command, output) = output.expect("ran at least once");
+    ensure!(
+        output.status.success(),
+        "the edition in {} does not load: `{}` failed: {}",
+        dir.display(),
+        cargo::display(&command),
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    Ok(())
+}
+
+fn read(path: &Path) -> Result<String> {
+    fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
+}
+
+/// `cargo xtask release DIR [--topics ...]`.
+pub fn run(root: &Path, dir: &Path, topics: &[String]) -> Result<()> {
+    let dir = stage::outside_course(root, dir)?;
+    let release = write(root, &dir, topics)?;
+    println!(
+        "wrote the student edition to {}\n  topics: {}\n  course library: {}",
+        release.dir.display(),
+        release.topics.join(", "),
+        release.crates.join(", ")
+    );
+    println!(
+        "to publish it: cd {} && git init && git add -A && git commit -m \"Course edition\"",
+        release.dir.display()
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn marked_lines_are_dropped_with_their_markers() {
+        let text = "a\n# BEGIN COURSE ONLY\nb\n# END COURSE ONLY\nc\n";
+        assert_eq!(
+            drop_marked(text, "# BEGIN COURSE ONLY", "# END COURSE ONLY"),
+            "a\nc\n"
+        );
+    }
+
+    #[test]
+    fn the_manifest_loses_crates_not_released() {
+        let text = "canvas = { path = \"crates/canvas\" }\ngpu = { path = \"crates/gpu\" }\nglam = \"0.34\"\n";
+        let all = ["canvas".to_owned(), "gpu".to_owned()];
+        assert_eq!(
+            manifest(text, &all[..1], &all),
+            "canvas = { path = \"crates/canvas\" }\nglam = \"0.34\"\n"
+        );
+    }
+
+    #[test]
+    fn the_readme_loses_rows_of_topics_not_released() {
+        let text = "| 01 | [`exercises/01-lines/README.md`](exercises/01-lines/README.md) |\n| 02 | [x](exercises/02-circles/README.md) |\ntext about exercises/02-circles/\n";
+        let all = ["01-lines".to_owned(), "02-circles".to_owned()];
+        assert_eq!(
+            readme(text, &all[..1], &all, &[]),
+            "| 01 | [`exercises/01-lines/README.md`](exercises/01-lines/README.md) |\ntext about exercises/02-circles/\n"
+        );
+    }
+}

@@ -1,0 +1,424 @@
+//! Stages: a copy of the course in which other code is laid over the
+//! student files, so that one test suite meets three kinds of code.
+//!
+//! ```text
+//!   course (no target/, .git/, reference/) ──┐
+//!   reference/*/src  or  a submission's      ├──sync──> target/xtask/stage ──cargo──> target/xtask/build
+//!   exercises/*/src  over exercises/*/src ───┘
+//! ```
+//!
+//! Grading the reference, the course's own tests, the benchmarks and the
+//! grading of submissions all build a stage; a student's own `cargo test`
+//! and `cargo xtask grade` build the checkout itself. Nothing decides
+//! which code is compiled but which files are staged: no Cargo feature,
+//! no `#[path]` switch.
+//!
+//! **One stage, one build cache.** Every staged edition is synced into the
+//! same folder, `target/xtask/stage`, and built into `target/xtask/build`.
+//! Syncing writes a file only when its contents differ and deletes what
+//! the edition lacks, so switching from the reference to a submission
+//! rebuilds just the crates whose files changed. It has to be one folder:
+//! cargo names a workspace's artifacts by their paths *relative* to the
+//! workspace root and trusts modification times, so two stages at
+//! different paths sharing one target folder could each take the other's
+//! artifacts for their own. For the same reason the build folder lies
+//! beside the stage, not around it, and apart from the checkout's own
+//! `target/debug`. A lock file keeps two `cargo xtask` runs from syncing
+//! the stage at once.
+
+use std::fs::{self, File};
+use std::path::{Component, Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+
+/// Folders never copied, compared or deleted, at any depth: build output
+/// and history.
+pub const SKIPPED_FOLDERS: [&str; 2] = ["target", ".git"];
+/// The solutions: skipped at the top of a course (a fixture course inside
+/// the tooling may have a `reference/` of its own).
+pub const SOLUTIONS: &str = "reference";
+
+/// Where the stage and its build cache live, under the checkout.
+const STAGE_HOME: [&str; 2] = ["target", "xtask"];
+
+/// A file written into a folder that a sync may later empty: its presence
+/// says the folder is the tooling's to rewrite.
+pub const STAGE_MARKER: &str = ".course-stage";
+
+/// Where a staged file's contents come from.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Source {
+    /// A file to copy.
+    File(PathBuf),
+    /// Contents made by the tooling (a rewritten manifest).
+    Text(Vec<u8>),
+}
+
+impl Source {
+    /// The contents.
+    pub fn read(&self) -> Result<Vec<u8>> {
+        match self {
+            Source::File(path) => {
+                fs::read(path).with_context(|| format!("cannot read {}", path.display()))
+            }
+            Source::Text(text) => Ok(text.clone()),
+        }
+    }
+}
+
+/// The files of a tree: (path in it, contents), sorted by path.
+pub type Files = Vec<(PathBuf, Source)>;
+
+/// A synced stage, locked for as long as this value lives.
+#[derive(Debug)]
+pub struct Stage {
+    /// The staged course: a cargo workspace.
+    pub root: PathBuf,
+    /// cargo's `--target-dir` for it.
+    pub target_dir: PathBuf,
+    _lock: File,
+}
+
+/// What a stage holds in `exercises/*/src`.
+#[derive(Debug, Clone, Copy)]
+pub enum Overlay<'a> {
+    /// The checkout's own student files (the stubs, in the course repository).
+    Own,
+    /// `reference/*/src` laid over the student files.
+    Reference,
+    /// Another checkout's `exercises/*/src`, each topic's folder whole (a
+    /// module the student added comes along, a stub they deleted stays
+    /// deleted); a topic it lacks keeps the course's stubs.
+    Submission(&'a Path),
+}
+
+/// Every file under `root`, relative to it and sorted, skipping
+/// [`SKIPPED_FOLDERS`] at any depth and [`SOLUTIONS`] at the top. Symbolic links are neither listed nor
+/// followed: one in a submission could point anywhere.
+pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
+    fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
+        let entries =
+            fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
+        for entry in entries {
+            let entry = entry.with_context(|| format!("cannot read {}", dir.display()))?;
+            let path = entry.path();
+            let kind = entry
+                .file_type()
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            if kind.is_dir() {
+                let name = entry.file_name();
+                let solutions = dir == root && name == SOLUTIONS;
+                if !solutions && !SKIPPED_FOLDERS.iter().any(|s| name == *s) {
+                    walk(root, &path, files)?;
+                }
+            } else if kind.is_file() {
+                let relative = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
+                files.push(relative);
+            }
+        }
+        Ok(())
+    }
+    let mut files = Vec::new();
+    if root.is_dir() {
+        walk(root, root, &mut files)?;
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// Whether a path (relative to a course root) is a student's: inside
+/// `exercises/<topic>/src/`.
+#[must_use]
+pub fn is_student_file(relative: &Path) -> bool {
+    let parts: Vec<Component<'_>> = relative.components().collect();
+    parts.len() >= 3 && parts[0].as_os_str() == "exercises" && parts[2].as_os_str() == "src"
+}
+
+/// The files of an edition of the course at `root`: (path in the stage,
+/// file to copy), sorted by the former.
+pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
+    let mut files: Files = files_under(root)?
+        .into_iter()
+        .map(|file| (file.clone(), Source::File(root.join(file))))
+        .collect();
+    match overlay {
+        Overlay::Own => {}
+        Overlay::Reference => {
+            let reference = root.join("reference");
+            if !reference.is_dir() {
+                bail!(
+                    "{} does not exist: this is a student edition, which has no solutions",
+                    reference.display()
+                );
+            }
+            for file in files_under(&reference)? {
+                // reference/<topic>/src/<file> → exercises/<topic>/src/<file>
+                let staged = Path::new("exercises").join(&file);
+                if is_student_file(&staged) {
+                    let source = reference.join(&file);
+                    files.retain(|(to, _)| *to != staged);
+                    files.push((staged, Source::File(source)));
+                }
+            }
+        }
+        Overlay::Submission(submission) => {
+            let exercises = root.join("exercises");
+            let topics = fs::read_dir(&exercises)
+                .with_context(|| format!("cannot read {}", exercises.display()))?;
+            for topic in topics {
+                let topic =
+                    topic.with_context(|| format!("cannot read {}", exercises.display()))?;
+                let src = Path::new("exercises").join(topic.file_name()).join("src");
+                let theirs = submission.join(&src);
+                if !theirs.is_dir() {
+                    continue; // nothing handed in: the stubs stay
+                }
+                files.retain(|(to, _)| !to.starts_with(&src));
+                for file in files_under(&theirs)? {
+                    files.push((src.join(&file), Source::File(theirs.join(&file))));
+                }
+            }
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// Makes `dest` hold exactly `files` (besides [`SKIPPED_FOLDERS`] and the
+/// [`STAGE_MARKER`]): writes a file only when its contents differ, removes
+/// the others and the folders they leave empty. Returns how many files
+/// were written and removed.
+pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, usize)> {
+    fs::create_dir_all(dest).with_context(|| format!("cannot create {}", dest.display()))?;
+    let mut written = 0;
+    for (to, from) in files {
+        let contents = from.read()?;
+        let target = dest.join(to);
+        if fs::read(&target).is_ok_and(|old| old == contents) {
+            continue;
+        }
+        if let Some(parent) = target.parent() {
+            fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        fs::write(&target, contents)
+            .with_context(|| format!("cannot write {}", target.display()))?;
+        written += 1;
+    }
+    let mut removed = 0;
+    let wanted: std::collections::HashSet<&Path> =
+        files.iter().map(|(to, _)| to.as_path()).collect();
+    for file in files_under(dest)? {
+        if !wanted.contains(file.as_path()) && file != Path::new(STAGE_MARKER) {
+            let path = dest.join(&file);
+            fs::remove_file(&path).with_context(|| format!("cannot remove {}", path.display()))?;
+            removed += 1;
+            // Folders left empty go too (`remove_dir` refuses non-empty ones).
+            let mut parent = path.parent();
+            while let Some(dir) = parent.filter(|dir| *dir != dest) {
+                if fs::remove_dir(dir).is_err() {
+                    break;
+                }
+                parent = dir.parent();
+            }
+        }
+    }
+    Ok((written, removed))
+}
+
+/// Refuses to sync into `dir` unless it is empty, missing, or marked as
+/// written by this tooling; then marks it.
+pub fn claim(dir: &Path) -> Result<()> {
+    if dir.exists() {
+        let mut entries =
+            fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
+        let empty = entries.next().is_none();
+        if !empty && !dir.join(STAGE_MARKER).is_file() {
+            bail!(
+                "{} exists and was not written by `cargo xtask`; choose a new or empty folder",
+                dir.display()
+            );
+        }
+    }
+    fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    fs::write(
+        dir.join(STAGE_MARKER),
+        "Written by `cargo xtask`: files here are replaced on the next run.\n",
+    )
+    .with_context(|| format!("cannot write in {}", dir.display()))
+}
+
+/// `<root>/target/xtask`: where the checkout at `root` keeps its stage.
+#[must_use]
+pub fn home(root: &Path) -> PathBuf {
+    STAGE_HOME
+        .iter()
+        .fold(root.to_path_buf(), |p, part| p.join(part))
+}
+
+/// Syncs the stage of the checkout at `root` to hold `overlay` and locks
+/// it. `target_dir` overrides where it is built.
+pub fn stage(root: &Path, overlay: Overlay<'_>, target_dir: Option<&Path>) -> Result<Stage> {
+    stage_in(&home(root), root, overlay, target_dir)
+}
+
+/// [`stage`] with the stage kept in `home` (`home/stage`, built in
+/// `home/build`) rather than in `root`'s own.
+pub fn stage_in(
+    home: &Path,
+    root: &Path,
+    overlay: Overlay<'_>,
+    target_dir: Option<&Path>,
+) -> Result<Stage> {
+    fs::create_dir_all(&home).with_context(|| format!("cannot create {}", home.display()))?;
+    let lock_path = home.join("stage.lock");
+    let lock = File::create(&lock_path)
+        .with_context(|| format!("cannot create {}", lock_path.display()))?;
+    if lock.try_lock().is_err() {
+        eprintln!("waiting for another `cargo xtask` to finish with the stage ...");
+        lock.lock()
+            .with_context(|| format!("cannot lock {}", lock_path.display()))?;
+    }
+    let stage_root = home.join("stage");
+    let files = plan(root, overlay)?;
+    claim(&stage_root)?;
+    sync(&files, &stage_root)?;
+    Ok(Stage {
+        root: stage_root,
+        target_dir: target_dir.map_or_else(|| home.join("build"), Path::to_path_buf),
+        _lock: lock,
+    })
+}
+
+/// `dir` made absolute, if it lies outside the course at `root` (or in its
+/// build output): a folder inside would be copied into itself.
+pub fn outside_course(root: &Path, dir: &Path) -> Result<PathBuf> {
+    let dir = std::path::absolute(dir).with_context(|| format!("cannot find {}", dir.display()))?;
+    if dir.starts_with(root) && !dir.starts_with(root.join("target")) {
+        bail!(
+            "{} lies inside the course; choose a folder outside it",
+            dir.display()
+        );
+    }
+    Ok(dir)
+}
+
+/// `cargo xtask stage --reference DIR`: the solution workspace, written
+/// to `DIR` for a tutor's editor (a folder of its own, with its own build).
+pub fn write_reference(root: &Path, dir: &Path) -> Result<()> {
+    let dir = outside_course(root, dir)?;
+    let files = plan(root, Overlay::Reference)?;
+    claim(&dir)?;
+    let (written, removed) = sync(&files, &dir)?;
+    println!(
+        "wrote the solution workspace to {} ({written} file(s) written, {removed} removed)",
+        dir.display()
+    );
+    println!("open it in your editor; `cargo test` there runs the official tests on the solutions");
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("xtask-stage-{name}-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        dir
+    }
+
+    fn write(path: &Path, text: &str) {
+        fs::create_dir_all(path.parent().unwrap()).unwrap();
+        fs::write(path, text).unwrap();
+    }
+
+    #[test]
+    fn student_files_are_those_under_an_exercise_src() {
+        assert!(is_student_file(Path::new("exercises/01-lines/src/dda.rs")));
+        assert!(is_student_file(Path::new(
+            "exercises/01-lines/src/sub/x.rs"
+        )));
+        assert!(!is_student_file(Path::new(
+            "exercises/01-lines/tests/dda.rs"
+        )));
+        assert!(!is_student_file(Path::new("exercises/src/x.rs")));
+    }
+
+    #[test]
+    fn the_reference_overlay_replaces_only_solution_files() {
+        let course = scratch("course");
+        write(&course.join("Cargo.toml"), "[workspace]");
+        write(
+            &course.join("exercises/01-a/src/lib.rs"),
+            "pub mod x; pub mod given;",
+        );
+        write(&course.join("exercises/01-a/src/x.rs"), "stub");
+        write(&course.join("exercises/01-a/src/given.rs"), "given");
+        write(&course.join("reference/01-a/src/x.rs"), "solution");
+        write(&course.join("target/debug/junk"), "junk");
+        let files = plan(&course, Overlay::Reference).unwrap();
+        let staged: Vec<(String, String)> = files
+            .iter()
+            .map(|(to, from)| {
+                let text = String::from_utf8(from.read().unwrap()).unwrap();
+                (to.display().to_string(), text)
+            })
+            .collect();
+        assert_eq!(
+            staged,
+            [
+                ("Cargo.toml", "[workspace]"),
+                ("exercises/01-a/src/given.rs", "given"),
+                ("exercises/01-a/src/lib.rs", "pub mod x; pub mod given;"),
+                ("exercises/01-a/src/x.rs", "solution"),
+            ]
+            .map(|(a, b)| (a.to_owned(), b.to_owned()))
+        );
+        assert!(plan(&course.join("exercises"), Overlay::Reference).is_err());
+        fs::remove_dir_all(&course).unwrap();
+    }
+
+    #[test]
+    fn sync_writes_changes_only_and_removes_what_is_gone() {
+        let from = scratch("from");
+        let dest = scratch("dest");
+        write(&from.join("a.rs"), "a");
+        write(&from.join("b/c.rs"), "c");
+        let files = vec![
+            (PathBuf::from("a.rs"), Source::File(from.join("a.rs"))),
+            (PathBuf::from("b/c.rs"), Source::File(from.join("b/c.rs"))),
+        ];
+        assert_eq!(sync(&files, &dest).unwrap(), (2, 0));
+        let before = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
+        write(&dest.join("old/gone.rs"), "gone");
+        write(&dest.join("target/kept"), "build output");
+        assert_eq!(sync(&files, &dest).unwrap(), (0, 1));
+        let after = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
+        assert_eq!(before, after, "an unchanged file keeps its time");
+        assert!(!dest.join("old").exists(), "emptied folders are removed");
+        assert!(dest.join("target/kept").exists(), "build output is kept");
+        write(&from.join("a.rs"), "a2");
+        assert_eq!(sync(&files, &dest).unwrap(), (1, 0));
+        assert_eq!(fs::read_to_string(dest.join("a.rs")).unwrap(), "a2");
+        fs::remove_dir_all(&from).unwrap();
+        fs::remove_dir_all(&dest).unwrap();
+    }
+
+    #[test]
+    fn a_folder_not_written_by_xtask_is_never_claimed() {
+        let dir = scratch("claim");
+        write(&dir.join("notes.txt"), "mine");
+        let error = claim(&dir).unwrap_err().to_string();
+        assert!(
+            error.contains("was not written by `cargo xtask`"),
+            "{error}"
+        );
+        assert!(dir.join("notes.txt").exists());
+        fs::remove_file(dir.join("notes.txt")).unwrap();
+        claim(&dir).unwrap();
+        write(&dir.join("notes.txt"), "ours now");
+        claim(&dir).unwrap();
+        fs::remove_dir_all(&dir).unwrap();
+    }
+}
