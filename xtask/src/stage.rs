@@ -270,7 +270,7 @@ pub fn stage_in(
     overlay: Overlay<'_>,
     target_dir: Option<&Path>,
 ) -> Result<Stage> {
-    fs::create_dir_all(&home).with_context(|| format!("cannot create {}", home.display()))?;
+    fs::create_dir_all(home).with_context(|| format!("cannot create {}", home.display()))?;
     let lock_path = home.join("stage.lock");
     let lock = File::create(&lock_path)
         .with_context(|| format!("cannot create {}", lock_path.display()))?;

@@ -343,6 +343,29 @@ fn sync_topic(
         return Ok(());
     }
     let ids: Vec<&str> = topic.sheet.tasks.iter().map(|t| t.id.as_str()).collect();
+    // A plain crate: which code is compiled is decided by what is staged,
+    // never by a switch in the crate root or a feature in its manifest.
+    let crate_root = exercise_src.join(CRATE_ROOT);
+    if let Ok(text) = fs::read_to_string(&crate_root) {
+        for (number, line) in text.lines().enumerate() {
+            if line.contains("#[path") || line.contains("cfg_attr(") {
+                outcome.errors.push(format!(
+                    "{}:{}: a crate root declares its modules plainly (`pub mod x;`), without `#[path]` or `cfg_attr`",
+                    relative(&crate_root),
+                    number + 1
+                ));
+            }
+        }
+    }
+    let manifest = topic.dir.join("Cargo.toml");
+    if fs::read_to_string(&manifest)
+        .is_ok_and(|text| text.lines().any(|l| l.trim() == "[features]"))
+    {
+        outcome.errors.push(format!(
+            "{}: an exercise crate has no features (a feature would be unified across the workspace and switch the code students build)",
+            relative(&manifest)
+        ));
+    }
     let reference_files = rust_files(&reference_src)?;
     for file in &reference_files {
         let source_path = reference_src.join(file);

@@ -3,14 +3,16 @@
 //!
 //! 1. the student stubs are exactly what `reference/` generates;
 //! 2. every workspace test passes against the reference solutions;
-//! 3. graded with `--reference`, every task gets full points;
-//! 4. graded as shipped (the stubs), the course scores 0, compiles and the
+//! 3. the reference solutions are clippy-clean (`-D warnings`, all targets
+//!    and features: the benchmarks too);
+//! 4. graded with `--reference`, every task gets full points;
+//! 5. graded as shipped (the stubs), the course scores 0, compiles and the
 //!    grader finishes;
-//! 5. the student edition that `cargo xtask release` writes builds on its
+//! 6. the student edition that `cargo xtask release` writes builds on its
 //!    own: `cargo test` there fails only at `todo!()`, `cargo clippy
 //!    --all-targets` is clean, `cargo xtask grade` works.
 //!
-//! Steps 2 to 5 build in the stage (see `stage`), one build cache for the
+//! Steps 2 to 6 build in the stage (see `stage`), one build cache for the
 //! reference, the stubs and the edition: switching between them rebuilds
 //! only the crates whose files differ.
 //!
@@ -46,6 +48,10 @@ pub fn run(root: &Path) -> Result<()> {
         (
             "workspace tests pass against the reference solutions",
             Box::new(|| workspace_tests(root)),
+        ),
+        (
+            "reference solutions are clippy-clean",
+            Box::new(|| reference_clippy(root)),
         ),
         (
             "reference solutions score full points",
@@ -129,6 +135,37 @@ fn workspace_tests(root: &Path) -> Result<String> {
         cargo::display(&command)
     );
     Ok("all tests pass with reference/ staged over the stubs".to_owned())
+}
+
+fn reference_clippy(root: &Path) -> Result<String> {
+    let staged = stage::stage(root, Overlay::Reference, None)?;
+    let mut command = cargo();
+    command
+        .current_dir(&staged.root)
+        .env("CARGO_TARGET_DIR", &staged.target_dir)
+        .args([
+            "clippy",
+            "--workspace",
+            "--all-targets",
+            "--all-features",
+            "--",
+            "-D",
+            "warnings",
+        ]);
+    println!(
+        "$ {}   (in {})",
+        cargo::display(&command),
+        staged.root.display()
+    );
+    let status = command
+        .status()
+        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+    ensure!(
+        status.success(),
+        "`{}` failed ({status})",
+        cargo::display(&command)
+    );
+    Ok("no warnings in the solutions, the benchmarks or the tooling".to_owned())
 }
 
 fn grade_into(root: &Path, overlay: Overlay<'_>, folder: &str) -> Result<Report> {

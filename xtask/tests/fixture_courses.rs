@@ -419,6 +419,28 @@ fn stubs_are_checked_generated_and_score_zero() {
     fs::remove_file(root.join("reference/02-broken/src/given.rs")).unwrap();
     fs::remove_file(root.join("exercises/02-broken/src/given.rs")).unwrap();
 
+    // Crate roots are plain: a `#[path]` switch is an error.
+    let lib = root.join("exercises/02-broken/src/lib.rs");
+    let plain = fs::read_to_string(&lib).unwrap();
+    fs::write(
+        &lib,
+        plain.replace(
+            "pub mod value;",
+            "#[cfg_attr(feature = \"reference\", path = \"../../../reference/02-broken/src/value.rs\")]\npub mod value;",
+        ),
+    )
+    .unwrap();
+    let switched = xtask(&root, &["stubs", "--check"]);
+    assert!(!switched.status.success());
+    assert!(
+        stdout(&switched).contains(
+            "exercises/02-broken/src/lib.rs:3: a crate root declares its modules plainly"
+        ),
+        "{}",
+        stdout(&switched)
+    );
+    fs::write(&lib, plain).unwrap();
+
     // Untouched stubs compile, score 0, and every failure names its todo.
     let (_, report, _) = grade(&root, "grade", &["01", "broken"]);
     assert_eq!(report["score"], 0.0);
@@ -469,13 +491,14 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/5]",
-        "==> [2/5]",
-        "==> [3/5]",
-        "==> [4/5]",
-        "==> [5/5] the student edition",
+        "==> [1/6]",
+        "==> [2/6]",
+        "==> [3/6] reference solutions are clippy-clean",
+        "==> [4/6]",
+        "==> [5/6]",
+        "==> [6/6] the student edition",
         "==> summary",
-        "all 5 steps passed",
+        "all 6 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
@@ -505,8 +528,8 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     );
     assert!(text.contains("`negates` passes against the stub"), "{text}");
     assert!(
-        text.contains("2 of 5 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("2 of 5 steps failed"),
+        text.contains("2 of 6 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("2 of 6 steps failed"),
         "{text}"
     );
 }
