@@ -288,12 +288,14 @@ pub fn write(root: &Path, dir: &Path, wanted: &[String]) -> Result<Release> {
     let topics = select_topics(root, wanted)?;
     ensure!(!topics.is_empty(), "no topics to release");
     let (mut files, crates) = edition_files(root, &topics)?;
-    // The course's lock file, trimmed by cargo below.
+    // The course's lock file (if it has one), trimmed by cargo below.
     files.retain(|(to, _)| to != Path::new("Cargo.lock"));
-    files.push((
-        PathBuf::from("Cargo.lock"),
-        Source::File(root.join("Cargo.lock")),
-    ));
+    if root.join("Cargo.lock").is_file() {
+        files.push((
+            PathBuf::from("Cargo.lock"),
+            Source::File(root.join("Cargo.lock")),
+        ));
+    }
     files.sort();
     stage::claim(dir)?;
     stage::sync(&files, dir)?;

@@ -8,10 +8,16 @@
 //! - [`image`]: compare a canvas with a reference PNG within a tolerance,
 //!   writing `yours.png`, `reference.png` and `difference.png`;
 //! - [`strategies`]: proptest strategies for points, pixels, lines and
-//!   colours, including hostile values (NaN, infinities, 1e30).
+//!   colours, including hostile values (NaN, infinities, 1e30);
+//! - [`pixels`]: collecting what a rasterizer plots, expected pixels as
+//!   literal grids ([`grid!`]), duplicates and counts;
+//! - [`oracles`]: values by their definitions (binomials, Bernstein
+//!   polynomials), never by the algorithms the tasks teach.
 #![warn(missing_docs)]
 
 pub mod image;
+pub mod oracles;
+pub mod pixels;
 pub mod raster;
 pub mod strategies;
 

@@ -99,7 +99,7 @@ fn clamped_bezier_knots_give_the_bernstein_basis() {
             assert_eq!(span, p, "a Bézier curve has a single span");
             let values = basis_funs(&knots, span, u).unwrap();
             for (i, &value) in values.iter().enumerate() {
-                let expected = common::bernstein(p, i, u);
+                let expected = common::bernstein(i, p, u);
                 assert!(
                     (value - expected).abs() < TOLERANCE,
                     "p = {p}, i = {i}, u = {u}"

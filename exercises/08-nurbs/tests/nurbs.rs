@@ -80,7 +80,7 @@ fn bezier_knots_give_the_rational_bezier_curve() {
         let u = f64::from(k) / 16.0;
         let (mut num, mut den) = (DVec3::ZERO, 0.0);
         for (i, p) in points.iter().enumerate() {
-            let b = common::bernstein(3, i, u);
+            let b = common::bernstein(i, 3, u);
             num += b * p.truncate();
             den += b * p.w;
         }

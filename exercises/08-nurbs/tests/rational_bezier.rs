@@ -22,7 +22,7 @@ fn curve_by_definition(points: &[DVec4], u: f64) -> DVec3 {
     let n = points.len() - 1;
     let (mut num, mut den) = (DVec3::ZERO, 0.0);
     for (i, p) in points.iter().enumerate() {
-        let b = common::bernstein(n, i, u);
+        let b = common::bernstein(i, n, u);
         num += b * p.truncate(); // p.xyz is already w·P
         den += b * p.w;
     }
@@ -210,7 +210,7 @@ proptest! {
         let values: Vec<f64> = (0..=n).map(|i| bernstein(n, i, u)).collect();
         for (i, &b) in values.iter().enumerate() {
             prop_assert!(b >= 0.0, "B_{{{i},{n}}}({u}) = {b}");
-            let expected = common::bernstein(n, i, u);
+            let expected = common::bernstein(i, n, u);
             prop_assert!((b - expected).abs() <= 1e-12, "B_{{{i},{n}}}({u}) = {b}, expected {expected}");
         }
         let sum: f64 = values.iter().sum();

@@ -1,6 +1,6 @@
 //! What the tests compare with: lines by their definition, computed
 //! directly and exactly, not by the incremental algorithms you write.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use canvas::{Canvas, Pixel, Rgba, Viewport};
 
@@ -79,19 +79,7 @@ pub fn has_tie(from: Pixel, to: Pixel) -> bool {
     dm != 0 && (0..=dm.abs()).any(|k| (2 * dn * k).rem_euclid(2 * dm.abs()) == dm.abs())
 }
 
-/// Collects the pixels a pixel-plotting line function draws, in order.
-pub fn collect(draw: impl FnOnce(&mut dyn FnMut(Pixel))) -> Vec<Pixel> {
-    let mut pixels = Vec::new();
-    draw(&mut |p| pixels.push(p));
-    pixels
-}
-
-/// Collects `(pixel, intensity)` pairs from an antialiased line function.
-pub fn collect_weighted(draw: impl FnOnce(&mut dyn FnMut(Pixel, f32))) -> Vec<(Pixel, f32)> {
-    let mut pixels = Vec::new();
-    draw(&mut |p, w| pixels.push((p, w)));
-    pixels
-}
+pub use testkit::pixels::{collect, collect_weighted};
 
 /// The eight octants' characteristic lines from the origin of a 17 × 17
 /// canvas centred on `(8, 8)`, plus the axis directions, as

@@ -1,7 +1,7 @@
 //! What the tests compare with: circles, filled circles and ellipses by
 //! their definitions, computed directly in exact integer arithmetic, not
 //! by the incremental algorithms you write.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use std::collections::BTreeSet;
 
@@ -44,20 +44,7 @@ pub const HAND_CIRCLES: [(i32, &[&str]); 5] = [
 /// The pixels marked `#` in a grid whose rows are listed top row first
 /// and whose middle character is `centre` (odd widths and heights).
 pub fn grid_pixels(centre: Pixel, rows: &[&str]) -> Vec<Pixel> {
-    let (half_w, half_h) = ((rows[0].len() / 2) as i32, (rows.len() / 2) as i32);
-    let mut pixels = Vec::new();
-    for (r, row) in rows.iter().enumerate() {
-        assert_eq!(row.len(), rows[0].len(), "ragged grid");
-        for (c, ch) in row.chars().enumerate() {
-            if ch == '#' {
-                pixels.push(Pixel::new(
-                    centre.x - half_w + c as i32,
-                    centre.y + half_h - r as i32,
-                ));
-            }
-        }
-    }
-    pixels
+    testkit::pixels::grid_pixels(testkit::pixels::origin_of_centred(centre, rows), rows)
 }
 
 /// Whether a shape reaching `rx` pixels left and right and `ry` up and
@@ -222,26 +209,7 @@ pub fn offset(centre: Pixel, x: i64, y: i64) -> Pixel {
     )
 }
 
-/// Collects the pixels a pixel-plotting function draws, in order.
-pub fn collect(draw: impl FnOnce(&mut dyn FnMut(Pixel))) -> Vec<Pixel> {
-    let mut pixels = Vec::new();
-    draw(&mut |p| pixels.push(p));
-    pixels
-}
-
-/// Counts the pixels a function draws without keeping them (for input
-/// that must draw nothing, where a wrong answer could be huge).
-pub fn count(draw: impl FnOnce(&mut dyn FnMut(Pixel))) -> u64 {
-    let mut n = 0;
-    draw(&mut |_| n += 1);
-    n
-}
-
-/// The first pixel that occurs twice, if any.
-pub fn first_duplicate(pixels: &[Pixel]) -> Option<Pixel> {
-    let mut seen = BTreeSet::new();
-    pixels.iter().copied().find(|&p| !seen.insert(p))
-}
+pub use testkit::pixels::{collect, count, first_duplicate};
 
 /// The first pixel whose mirror image about `centre` is missing: mirrored
 /// at both axes, and with `diagonals` also at both diagonals.

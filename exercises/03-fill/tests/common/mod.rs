@@ -1,6 +1,6 @@
 //! What the tests compare with: coverage by its definition, decided pixel
 //! by pixel in exact integer arithmetic, not by the algorithms you write.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -9,53 +9,7 @@ use canvas::{Canvas, Fragment, MAX_COORD, Pixel, Rgba, Vec2, Viewport};
 /// The colour used for test drawings.
 pub const INK: Rgba = Rgba::WHITE;
 
-/// Calls `draw` with a `plot` closure and returns the pixels in order.
-pub fn collect(draw: impl FnOnce(&mut dyn FnMut(Pixel))) -> Vec<Pixel> {
-    let mut pixels = Vec::new();
-    draw(&mut |p| pixels.push(p));
-    pixels
-}
-
-/// Calls `draw` with a fragment `plot` closure and returns the fragments.
-pub fn collect_fragments(draw: impl FnOnce(&mut dyn FnMut(Fragment))) -> Vec<Fragment> {
-    let mut fragments = Vec::new();
-    draw(&mut |f| fragments.push(f));
-    fragments
-}
-
-/// The first pixel that occurs twice.
-pub fn first_duplicate(pixels: &[Pixel]) -> Option<Pixel> {
-    let mut seen = BTreeSet::new();
-    pixels.iter().copied().find(|&p| !seen.insert(p))
-}
-
-/// How often each pixel occurs.
-pub fn counts(pixels: &[Pixel]) -> BTreeMap<Pixel, u32> {
-    let mut map = BTreeMap::new();
-    for &p in pixels {
-        *map.entry(p).or_insert(0) += 1;
-    }
-    map
-}
-
-/// The pixels of a grid written top row first, `#` for a pixel, whose
-/// bottom-left character is pixel `origin`.
-pub fn grid_pixels(origin: Pixel, rows: &[&str]) -> Vec<Pixel> {
-    let height = rows.len() as i32;
-    let mut pixels = Vec::new();
-    for (r, row) in rows.iter().enumerate() {
-        assert_eq!(row.len(), rows[0].len(), "ragged grid");
-        for (c, ch) in row.chars().enumerate() {
-            if ch == '#' {
-                pixels.push(Pixel::new(
-                    origin.x + c as i32,
-                    origin.y + height - 1 - r as i32,
-                ));
-            }
-        }
-    }
-    pixels
-}
+pub use testkit::pixels::{collect, collect_fragments, counts, first_duplicate, grid_pixels};
 
 /// Every pixel of a (small) viewport.
 pub fn viewport_pixels(viewport: Viewport) -> impl Iterator<Item = Pixel> {

@@ -2,7 +2,7 @@
 //! definition (Pascal's triangle and the double Bernstein sum, no de
 //! Casteljau), exact trim regions, and the picture of a trimmed surface
 //! drawn with the given rasterizer — not by the algorithms you write.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use bezier::render::{SurfaceSample, checker};
 use bezier::zbuffer::{Camera, RasterVertex, rasterize_triangle};
@@ -10,23 +10,7 @@ use bezier::{ControlNet, Trim};
 use canvas::{Canvas, Rgba};
 use glam::{DVec2, DVec3};
 
-/// `C(n, i)` from Pascal's triangle, in integers.
-pub fn pascal(n: usize, i: usize) -> u64 {
-    let mut row = vec![1_u64];
-    for _ in 0..n {
-        let mut next = vec![1_u64; row.len() + 1];
-        for k in 1..row.len() {
-            next[k] = row[k - 1] + row[k];
-        }
-        row = next;
-    }
-    row[i]
-}
-
-/// `B_{i,n}(t)` by its definition, for any real `t`.
-pub fn bernstein_def(i: usize, n: usize, t: f64) -> f64 {
-    pascal(n, i) as f64 * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
-}
+pub use testkit::oracles::{bernstein as bernstein_def, binomial as pascal};
 
 /// `Σ B_{i,n}(t) P_i` for 2-D points.
 pub fn curve2(points: &[DVec2], t: f64) -> DVec2 {

@@ -3,28 +3,14 @@
 //! *all* basis functions, sums over the whole control net), never the
 //! algorithms you write; the shapes with exactly known answers (circle,
 //! torus); and a small z-buffered triangle renderer for the pictures.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec3, DVec4};
 use nurbs::{ControlNet, KnotVector, NurbsCurve, NurbsSurface, homogeneous};
 use proptest::prelude::*;
 
-/// `C(n, k)` as an `f64`, by the multiplicative formula.
-pub fn binomial(n: usize, k: usize) -> f64 {
-    if k > n {
-        return 0.0;
-    }
-    (1..=k).fold(1.0, |c, j| c * (n + 1 - j) as f64 / j as f64)
-}
-
-/// The Bernstein polynomial from its formula (seed 001, (1.2)).
-pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
-    if i > n {
-        return 0.0;
-    }
-    binomial(n, i) * u.powi(i as i32) * (1.0 - u).powi((n - i) as i32)
-}
+pub use testkit::oracles::bernstein;
 
 /// `N_{i,p}(u)` by the definition (half-open steps; the last non-empty
 /// step of the domain closed at its end, so that the basis sums to 1 at
@@ -88,7 +74,7 @@ pub fn bezier_patch_point(net: &ControlNet, s: f64, t: f64) -> DVec3 {
     let mut sum = DVec4::ZERO;
     for i in 0..=p {
         for j in 0..=q {
-            sum += net.get(i, j) * (bernstein(p, i, s) * bernstein(q, j, t));
+            sum += net.get(i, j) * (bernstein(i, p, s) * bernstein(j, q, t));
         }
     }
     sum.truncate() / sum.w

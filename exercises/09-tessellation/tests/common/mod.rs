@@ -1,7 +1,7 @@
 //! What the tests compare with: surfaces evaluated by the explicit
 //! Bernstein sums (not by de Casteljau), meshes checked edge by edge, and
 //! parameter-plane areas, all written independently of the tasks.
-#![allow(dead_code)] // each test file uses a different part
+#![allow(dead_code, unused_imports)] // each test file uses a different part
 
 use std::collections::HashMap;
 
@@ -13,15 +13,7 @@ use tessellation::{DVec2, DVec3};
 /// Positions computed two ways agree to this (coordinates of order 10).
 pub const POSITION_TOLERANCE: f64 = 1e-9;
 
-/// `n choose k` as a float.
-pub fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-}
-
-/// The Bernstein polynomial `B_i,n(t)` (seed 001, equation (1.2)).
-pub fn bernstein(i: usize, n: usize, t: f64) -> f64 {
-    binomial(n, i) * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
-}
+pub use testkit::oracles::bernstein;
 
 /// `S(u, v)` by the double Bernstein sum of Definition 1.1.4.
 pub fn bernstein_surface(patch: &BezierPatch, uv: DVec2) -> DVec3 {
