@@ -511,7 +511,8 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "no solutions in the edition"
     );
 
-    // A "stub" that already solves its task breaks steps 1 and 4.
+    // A "stub" that already solves its task breaks steps 1, 5 and 6 (the
+    // edition students get would pay for it too).
     let stub = root.join("exercises/01-tiny/src/ops.rs");
     let text = fs::read_to_string(&stub).unwrap();
     fs::write(
@@ -528,8 +529,12 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     );
     assert!(text.contains("`negates` passes against the stub"), "{text}");
     assert!(
-        text.contains("2 of 6 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("2 of 6 steps failed"),
+        text.contains("`cargo xtask grade 01-tiny` in the edition scores 1.0 instead of 0"),
+        "{text}"
+    );
+    assert!(
+        text.contains("3 of 6 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("3 of 6 steps failed"),
         "{text}"
     );
 }
