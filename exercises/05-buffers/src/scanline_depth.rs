@@ -30,10 +30,12 @@ pub enum ScanlineError {
     Degenerate,
 }
 
-/// Where a scanline crosses a triangle: the points `a` (on the short edge
-/// 1–2) and `b` (on the long edge 1–3), with the seed's names.
+/// The two ends of the span where a scanline crosses a triangle: the
+/// points `a` (on the short edge 1–2) and `b` (on the long edge 1–3), with
+/// the seed's names, each with its depth. (The pixels between them are a
+/// [`canvas::Span`]; this is the continuous crossing they come from.)
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Span {
+pub struct SpanEnds {
     /// The scanline's `y`.
     pub y: f64,
     /// `(x_a, z_a)`: the crossing with edge 1–2.
@@ -62,7 +64,7 @@ pub struct Span {
 /// `None` when `ys` lies outside `[lo.y, hi.y]`, when the triangle has no
 /// height (`lo.y = hi.y`) or when any input is not finite.
 #[must_use]
-pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<Span> {
+pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<SpanEnds> {
     // Unused until you write the body:
     let _ = (&triangle, &ys);
     todo!(
@@ -80,7 +82,7 @@ pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<Span> {
 /// no width (`x_a = x_b`, at a vertex) the formula divides by zero — a
 /// case the seed does not mention — and `z_a` is returned.
 #[must_use]
-pub fn depth_in_span(span: &Span, x_p: f64) -> f64 {
+pub fn depth_in_span(span: &SpanEnds, x_p: f64) -> f64 {
     // Unused until you write the body:
     let _ = (&span, &x_p);
     todo!("scanline_depth: apply the z_p formula; return z_a for a span of zero width")

@@ -2,7 +2,7 @@
 //! intersections and incrementally from the plane equation.
 
 use buffers::scanline_depth::{
-    DepthPlane, ScanlineError, Span, depth_in_span, incremental_depths, span_at,
+    DepthPlane, ScanlineError, SpanEnds, depth_in_span, incremental_depths, span_at,
 };
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
@@ -84,7 +84,7 @@ fn vertex_order_does_not_change_the_span() {
 
 #[test]
 fn depth_in_span_follows_the_zp_formula() {
-    let span = Span {
+    let span = SpanEnds {
         y: 0.0,
         a: DVec2::new(2.0, 0.5),
         b: DVec2::new(10.0, 0.1),
@@ -97,13 +97,13 @@ fn depth_in_span_follows_the_zp_formula() {
     let known = span_at(known_triangle(), 1.0).unwrap();
     assert!(close(depth_in_span(&known, 3.0), 10.0, 1e-14));
     // A span of zero width (at a vertex) gives z_a, never NaN.
-    let point = Span {
+    let point = SpanEnds {
         y: 0.0,
         a: DVec2::new(4.0, 0.25),
         b: DVec2::new(4.0, 0.25),
     };
     assert_eq!(depth_in_span(&point, 4.0), 0.25);
-    let edge_on = Span {
+    let edge_on = SpanEnds {
         y: 0.0,
         a: DVec2::new(4.0, 0.25),
         b: DVec2::new(4.0, 0.75),

@@ -3,7 +3,7 @@
 //! algorithm needs convex primitives).
 //!
 //! A convex solid meets a line in one segment or not at all. Along a
-//! viewing ray `o + t·d` that segment is the [`Span`] `[near, far]`:
+//! viewing ray `o + t·d` that segment is the [`RayInterval`] `[near, far]`:
 //! `near` is where the ray enters through a *front face*, `far` where it
 //! leaves through a *back face*. Everything the renderers need from a
 //! primitive is this span; it is exact, so "rasterizing" a primitive is
@@ -121,17 +121,17 @@ impl Ray {
 /// (a front face) and leaves at depth `far` (a back face), `near < far`.
 /// Both are finite for a unit direction: a slab the ray runs parallel to
 /// gives the whole line, but some other slab (or the round side of a
-/// cylinder) is crossed and bounds the span.
+/// cylinder) is crossed and bounds the interval.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Span {
+pub struct RayInterval {
     /// Depth of the front face.
     pub near: f32,
     /// Depth of the back face.
     pub far: f32,
 }
 
-impl Span {
-    /// The common part of two spans, `None` when it is empty or a point.
+impl RayInterval {
+    /// The common part of two intervals, `None` when it is empty or a point.
     #[must_use]
     fn clip(self, other: Self) -> Option<Self> {
         let near = self.near.max(other.near);
@@ -147,14 +147,14 @@ impl Span {
 }
 
 /// The span of the slab `lo ≤ x ≤ hi` along a 1-D ray `x = o + t·d`.
-fn slab(o: f32, d: f32, lo: f32, hi: f32) -> Option<Span> {
+fn slab(o: f32, d: f32, lo: f32, hi: f32) -> Option<RayInterval> {
     if d.abs() < PARALLEL_EPSILON {
         // Parallel: all of the line or none of it.
-        return (lo <= o && o <= hi).then_some(Span::ALL);
+        return (lo <= o && o <= hi).then_some(RayInterval::ALL);
     }
     let (t0, t1) = ((lo - o) / d, (hi - o) / d);
     let (near, far) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
-    (near < far).then_some(Span { near, far })
+    (near < far).then_some(RayInterval { near, far })
 }
 
 impl Primitive {
@@ -241,7 +241,7 @@ impl Primitive {
     ///              across the axis) intersected with the slab along it
     /// ```
     #[must_use]
-    pub fn span(&self, ray: &Ray) -> Option<Span> {
+    pub fn interval(&self, ray: &Ray) -> Option<RayInterval> {
         let (o, d) = (ray.origin, ray.direction);
         match *self {
             Self::Cuboid { min, max } => slab(o.x, d.x, min.x, max.x)?
@@ -256,7 +256,7 @@ impl Primitive {
                     return None;
                 }
                 let root = discriminant.sqrt();
-                Some(Span {
+                Some(RayInterval {
                     near: -b - root,
                     far: -b + root,
                 })
@@ -274,7 +274,7 @@ impl Primitive {
                 let d_across = d - d.dot(e) * e;
                 let a = d_across.length_squared();
                 let tube = if a < PARALLEL_EPSILON * PARALLEL_EPSILON {
-                    (o_across.length_squared() <= radius * radius).then_some(Span::ALL)?
+                    (o_across.length_squared() <= radius * radius).then_some(RayInterval::ALL)?
                 } else {
                     let b = o_across.dot(d_across);
                     let c = o_across.length_squared() - radius * radius;
@@ -283,7 +283,7 @@ impl Primitive {
                         return None;
                     }
                     let root = discriminant.sqrt();
-                    Span {
+                    RayInterval {
                         near: (-b - root) / a,
                         far: (-b + root) / a,
                     }

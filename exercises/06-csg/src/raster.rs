@@ -359,7 +359,7 @@ impl Framebuffer {
     pub fn draw(&mut self, primitive: &Primitive, surface: Surface, state: &State) {
         let camera = self.camera;
         for (i, p) in camera.pixels().enumerate() {
-            let Some(span) = primitive.span(&camera.ray(p)) else {
+            let Some(span) = primitive.interval(&camera.ray(p)) else {
                 continue;
             };
             let depth = match surface.face {

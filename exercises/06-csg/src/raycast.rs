@@ -52,7 +52,7 @@ impl IntervalSet {
     #[must_use]
     pub fn of_primitive(index: usize, primitive: &Primitive, ray: &Ray) -> Self {
         let intervals = primitive
-            .span(ray)
+            .interval(ray)
             .map(|span| Interval {
                 enter: Boundary {
                     t: span.near,

@@ -38,7 +38,7 @@ fn a_single_primitive_shows_its_front_face() {
     let (frame, tests) = rendered(&model, camera);
     assert_eq!(tests, 0, "nothing to test a single primitive against");
     for p in camera.pixels() {
-        let expected = ball.span(&camera.ray(p)).map(|s| {
+        let expected = ball.interval(&camera.ray(p)).map(|s| {
             (
                 s.near,
                 Surface {

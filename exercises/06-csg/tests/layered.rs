@@ -70,7 +70,7 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
         let count = product
             .literals
             .iter()
-            .filter(|l| model.primitives()[l.primitive].span(&ray).is_some())
+            .filter(|l| model.primitives()[l.primitive].interval(&ray).is_some())
             .count();
         assert_eq!(buffer.stencil(p), Some(count as u8), "{p:?}");
         assert_eq!(buffer.surface(p), None, "colour writes are off");

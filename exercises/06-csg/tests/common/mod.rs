@@ -211,7 +211,7 @@ pub fn depth_complexity(model: &Model, product: &Product, camera: &Camera) -> u8
             product
                 .literals
                 .iter()
-                .filter(|l| model.primitives()[l.primitive].span(&ray).is_some())
+                .filter(|l| model.primitives()[l.primitive].interval(&ray).is_some())
                 .count() as u8
         })
         .max()
