@@ -120,7 +120,10 @@ fn reason(task: &Value) -> String {
 
 fn grade(root: &Path, out: &str, extra: &[&str]) -> (Output, Value, Duration) {
     let out = root.join("target").join(out);
-    let mut args = vec!["grade", "--out", out.to_str().unwrap(), "--jobs", "4"];
+    let mut args = vec!["grade", "--out", out.to_str().unwrap()];
+    if !extra.contains(&"--jobs") {
+        args.extend(["--jobs", "4"]);
+    }
     args.extend(extra);
     let started = Instant::now();
     let output = xtask(root, &args);
@@ -262,7 +265,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     );
 
     assert_eq!(report["score"], 3.75);
-    assert_eq!(report["max_score"], 16.5);
+    assert_eq!(report["max_score"], 19.5);
 
     // The terminal: a table, a total, the first failure of each task.
     let text = stdout(&output);
@@ -275,20 +278,27 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "{ok_row}"
     );
     assert!(text.contains("total"), "{text}");
-    assert!(text.contains("3.8 / 16.5"), "{text}");
+    assert!(text.contains("3.8 / 19.5"), "{text}");
     assert!(text.contains("compile error"), "{text}");
     assert!(text.contains("minimal failing input:\n    n = 3"), "{text}");
     assert!(
         text.contains("raster diff (expected vs yours):\n    0 |##-"),
         "{text}"
     );
-    assert!(!text.contains('\x1b'), "NO_COLOR and a pipe mean no colour");
+    assert!(
+        !text.contains('\x1b'),
+        "no colour (NO_COLOR, a pipe) and no escape from student code"
+    );
+    assert!(
+        text.contains("reason:  panicked: \\u{1b}[2J\\u{1b}[Htotal 20.0 / 20"),
+        "student text is shown escaped: {text}"
+    );
 
     // Gradescope's shape: one entry per task.
     let results = read_json(&root.join("target/grade/results.json"));
     assert_eq!(results["score"], 3.75);
     let tests = results["tests"].as_array().unwrap();
-    assert_eq!(tests.len(), 13);
+    assert_eq!(tests.len(), 16);
     assert_eq!(tests[0]["name"], "01-hostile / ok: Works");
     assert_eq!(tests[0]["status"], "passed");
     assert_eq!(tests[1]["status"], "failed");
@@ -302,7 +312,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     // JUnit: one suite per topic, escaped.
     let junit = fs::read_to_string(root.join("target/grade/junit.xml")).unwrap();
     assert!(junit.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites"));
-    assert_eq!(junit.matches("<testsuite ").count(), 3);
+    assert_eq!(junit.matches("<testsuite ").count(), 4);
     assert!(
         junit.contains("<failure message=\"timed out after 3 s (infinite loop?)\""),
         "{junit}"
@@ -312,8 +322,9 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         !junit.contains("thread 'halves"),
         "quotes are escaped in text too"
     );
-    // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test, a task without tests.
-    assert_eq!(junit.matches("<testcase ").count(), 20, "{junit}");
+    // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test,
+    // a task without tests, 5 tests in 04.
+    assert_eq!(junit.matches("<testcase ").count(), 25, "{junit}");
     assert_eq!(
         junit.matches("<testcase ").count(),
         junit.matches("</testcase>").count()
@@ -324,11 +335,57 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     // HTML: every topic and task, the first failure escaped, compile errors shown.
     let html = fs::read_to_string(root.join("target/grade/report.html")).unwrap();
     assert!(html.starts_with("<!DOCTYPE html>"), "{html}");
-    assert_eq!(html.matches("<h2>").count(), 3, "{html}");
+    assert_eq!(html.matches("<h2>").count(), 4, "{html}");
     assert!(html.contains("href=\"#01-hostile--ok\""), "{html}");
     assert!(html.contains("7 / 2 rounds down"), "{html}");
     assert!(html.contains("does not compile"), "{html}");
     assert!(!html.contains("thread 'halves"), "quotes are escaped");
+}
+
+/// Processes whose command line holds `marker`, by `ps`.
+fn processes_with(marker: &str) -> Vec<String> {
+    let ps = Command::new("ps")
+        .args(["-eo", "pid,args"])
+        .output()
+        .expect("ps runs");
+    String::from_utf8_lossy(&ps.stdout)
+        .lines()
+        .filter(|line| line.contains(marker))
+        .map(str::to_owned)
+        .collect()
+}
+
+#[test]
+fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
+    let root = fixture("hostile", "tricks");
+    let (_, report, elapsed) = grade(&root, "grade", &["tricks", "--jobs", "1"]);
+
+    // The sleeps a test started and left running die with it.
+    let spawns = task(&report, "04-tricks", "spawns");
+    assert_eq!(spawns["score"], 0.0);
+    let left = processes_with("sleep 299.123");
+    assert!(left.is_empty(), "processes outlived their test: {left:?}");
+
+    // Once a test of a task timed out, its other tests are not run.
+    let stalls = task(&report, "04-tricks", "stalls");
+    let reasons: Vec<&str> = stalls["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| t["reason"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        reasons,
+        [
+            "timed out after 3 s (infinite loop?)",
+            "not run: an earlier test of this task timed out after 3 s",
+            "not run: an earlier test of this task timed out after 3 s",
+        ]
+    );
+    assert!(
+        elapsed < HOSTILE_TIME_LIMIT * 2 + Duration::from_secs(20),
+        "three looping tests took {elapsed:?}"
+    );
 }
 
 #[test]

@@ -366,6 +366,7 @@ fn spinner(message: String) -> ProgressBar {
 /// Runs the given tests `jobs` at a time, with a progress bar on stderr
 /// (hidden when stderr is not a terminal).
 fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Vec<Finished>> {
+    run::stop_tests_on_interrupt();
     let bar = ProgressBar::new(jobs.len() as u64).with_style(
         ProgressStyle::with_template(
             "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
@@ -376,6 +377,9 @@ fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Ve
     let next = AtomicUsize::new(0);
     let results: Mutex<Vec<Option<Result<Finished>>>> =
         Mutex::new((0..jobs.len()).map(|_| None).collect());
+    // Fail fast: the tasks (plan, task) one of whose tests timed out; their
+    // tests not started yet are not run.
+    let timed_out: Mutex<std::collections::HashSet<(usize, usize)>> = Mutex::default();
     std::thread::scope(|scope| {
         for _ in 0..threads.min(jobs.len()) {
             scope.spawn(|| {
@@ -388,7 +392,16 @@ fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Ve
                     let test = &plan.tests[t];
                     bar.set_message(format!("{} {}", plan.topic.name, test.name));
                     let command = test.command.as_ref().expect("only runnable tests are jobs");
-                    let result = command.run();
+                    let key = (p, test.task);
+                    let skip = timed_out.lock().expect("no worker panics").contains(&key);
+                    let result = if skip {
+                        Ok(Finished::not_run())
+                    } else {
+                        command.run()
+                    };
+                    if result.as_ref().is_ok_and(|f| f.exit.timed_out) {
+                        timed_out.lock().expect("no worker panics").insert(key);
+                    }
                     results.lock().expect("no worker panics")[index] = Some(result);
                     bar.inc(1);
                 }
@@ -509,6 +522,7 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         TestStatus::Failed
     };
     let images = list_files(&test.images_dir);
+    let ran = !run.exit.not_run;
     let relative = |path: PathBuf| {
         path.strip_prefix(out)
             .map(Path::to_path_buf)
@@ -525,7 +539,10 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         duration_s: report::round2(run.duration.as_secs_f64()),
         exit: run.exit,
         output: (status == TestStatus::Failed).then(|| excerpt(&run.output)),
-        log: test.command.map(|command| relative(command.log)),
+        log: test
+            .command
+            .filter(|_| ran)
+            .map(|command| relative(command.log)),
         images_dir: (!images.is_empty()).then(|| relative(test.images_dir)),
         images,
     }

@@ -53,6 +53,9 @@ pub struct Exit {
     pub timed_out: bool,
     /// The grader killed it for printing more than this many bytes.
     pub output_limit: Option<u64>,
+    /// Not run: an earlier test of the same task timed out, and a task
+    /// that loops once is not given the time limit again for every test.
+    pub not_run: bool,
 }
 
 /// The verdict on one test run.
@@ -187,7 +190,12 @@ pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
             verdict.snapshot_diff = snapshot.diff;
         }
     }
-    let reason = if exit.timed_out {
+    let reason = if exit.not_run {
+        format!(
+            "not run: an earlier test of this task timed out after {} s",
+            seconds(time_limit_s)
+        )
+    } else if exit.timed_out {
         format!(
             "timed out after {} s (infinite loop?)",
             seconds(time_limit_s)

@@ -7,12 +7,21 @@
 //! it at the wall-clock limit or when the log grows past [`OUTPUT_LIMIT`].
 //! On Unix the address space is capped with `ulimit -v` in a tiny `sh`
 //! wrapper that then `exec`s the test, so the limit needs no unsafe code.
+//! The test leads a process group of its own, and when it ends (or is
+//! killed) the whole group is killed: a process it started and left
+//! running does not outlive it. (A process that leaves the group with
+//! `setsid` escapes this; closing that is the sandbox's work.) Because the
+//! groups are not the terminal's, Ctrl-C reaches the grader alone: its
+//! handler ([`stop_tests_on_interrupt`]) kills every running group, then
+//! exits.
 
+use std::collections::BTreeSet;
 use std::ffi::OsString;
 use std::fs::{self, File};
 use std::io::{Read as _, Seek as _, SeekFrom};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::{Mutex, Once};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
@@ -28,6 +37,30 @@ const FLOOD_KEPT: usize = 64 << 10;
 const READ_BACK_LIMIT: u64 = 4 << 20;
 /// How often a running test is checked on.
 const POLL_INTERVAL: Duration = Duration::from_millis(10);
+/// The exit code after an interrupt (128 + SIGINT, as shells report it).
+const INTERRUPTED_EXIT_CODE: i32 = 130;
+
+/// The process groups of the tests running now.
+static RUNNING: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
+
+/// Makes Ctrl-C (and SIGTERM) kill every running test's process group
+/// before the grader exits; once per process, later calls do nothing.
+pub fn stop_tests_on_interrupt() {
+    static INSTALL: Once = Once::new();
+    INSTALL.call_once(|| {
+        let installed = ctrlc::set_handler(|| {
+            let groups = RUNNING.lock().map(|g| g.clone()).unwrap_or_default();
+            for pgid in groups {
+                kill_group(pgid);
+            }
+            eprintln!("\ninterrupted: the running tests were stopped");
+            std::process::exit(INTERRUPTED_EXIT_CODE);
+        });
+        if let Err(error) = installed {
+            eprintln!("warning: Ctrl-C will not stop running tests: {error}");
+        }
+    });
+}
 
 /// One test to run.
 #[derive(Debug, Clone)]
@@ -61,6 +94,21 @@ pub struct Finished {
     pub output: String,
 }
 
+impl Finished {
+    /// A test that was not started (see [`Exit::not_run`]).
+    #[must_use]
+    pub fn not_run() -> Self {
+        Self {
+            exit: Exit {
+                not_run: true,
+                ..Exit::default()
+            },
+            duration: Duration::ZERO,
+            output: String::new(),
+        }
+    }
+}
+
 impl TestCommand {
     fn command(&self) -> Command {
         let args = [
@@ -90,6 +138,11 @@ impl TestCommand {
             command
         };
         command.current_dir(&self.cwd).stdin(Stdio::null());
+        #[cfg(unix)]
+        {
+            use std::os::unix::process::CommandExt as _;
+            command.process_group(0);
+        }
         for name in &self.env_remove {
             command.env_remove(name);
         }
@@ -114,6 +167,9 @@ impl TestCommand {
             .stderr(log_err)
             .spawn()
             .with_context(|| format!("cannot start {}", self.executable.display()))?;
+        if let Ok(mut running) = RUNNING.lock() {
+            running.insert(child.id());
+        }
         let mut exit = Exit::default();
         let status = loop {
             if let Some(status) = child.try_wait().context("cannot wait for a test")? {
@@ -130,6 +186,10 @@ impl TestCommand {
             std::thread::sleep(POLL_INTERVAL);
         };
         let duration = start.elapsed();
+        kill_group(child.id());
+        if let Ok(mut running) = RUNNING.lock() {
+            running.remove(&child.id());
+        }
         exit.code = status.code();
         exit.signal = signal(&status);
         let mut output = read_tail(&self.log)?;
@@ -155,6 +215,22 @@ impl TestCommand {
         })
     }
 }
+
+/// Kills what is left of the process group `pgid` (the test's own, see
+/// [`TestCommand::command`]); nothing left is fine.
+#[cfg(unix)]
+fn kill_group(pgid: u32) {
+    let _ = Command::new("sh")
+        .arg("-c")
+        .arg(format!("kill -KILL -{pgid} 2>/dev/null"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status();
+}
+
+#[cfg(not(unix))]
+fn kill_group(_: u32) {}
 
 fn kill(child: &mut Child) -> Result<ExitStatus> {
     // It may have ended between `try_wait` and now; `wait` tells either way.

@@ -287,7 +287,12 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
     let mut rows = Vec::new();
     for (i, submission) in submissions.iter().enumerate() {
         let (name, one) = out_for(submission);
-        println!("==> [{}/{}] {name}", i + 1, submissions.len());
+        println!(
+            "==> [{}/{}] {}",
+            i + 1,
+            submissions.len(),
+            table::shown(&name)
+        );
         let report = grade_one(official, submission, &one)?;
         let integrity = report.integrity.as_ref();
         rows.push(GradebookRow {
@@ -323,7 +328,10 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
         .map(|r| r.submission.as_str())
         .collect();
     if !flagged.is_empty() {
-        println!("flagged (grading files changed): {}", flagged.join(", "));
+        println!(
+            "flagged (grading files changed): {}",
+            table::shown(&flagged.join(", "))
+        );
     }
     Ok(())
 }

@@ -104,10 +104,27 @@ fn indented(text: &str, indent: &str) -> String {
         if line.trim().is_empty() {
             "\n".to_owned()
         } else {
-            format!("{indent}{line}\n")
+            format!("{indent}{}\n", shown(line))
         }
     };
     text.lines().map(line).collect()
+}
+
+/// Text from a test or the compiler (which quotes student code) as it may
+/// reach a terminal: every control character but tab and line break
+/// written as its escape (`\u{1b}`), so that student code cannot move the
+/// cursor, clear the screen or recolour the table.
+#[must_use]
+pub fn shown(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() && c != '\n' && c != '\t' {
+            out.push_str(&c.escape_unicode().to_string());
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// The whole terminal output for a report; `details` adds the first
@@ -205,7 +222,11 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
         }
         for error in &topic.errors {
             let _ = writeln!(text);
-            let _ = writeln!(text, "{}", style.warn(&format!("{}: {error}", topic.name)));
+            let _ = writeln!(
+                text,
+                "{}",
+                style.warn(&format!("{}: {}", topic.name, shown(error)))
+            );
         }
         for task in &topic.tasks {
             if let Some(error) = &task.error {
@@ -213,7 +234,7 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
                 let _ = writeln!(
                     text,
                     "{}",
-                    style.warn(&format!("{} / {}: {error}", topic.name, task.id))
+                    style.warn(&format!("{} / {}: {}", topic.name, task.id, shown(error)))
                 );
             }
             if details && task.status == TaskStatus::Fail {
@@ -226,7 +247,7 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
         let _ = writeln!(
             text,
             "{}",
-            style.warn(&format!("FLAGGED: {}", integrity.summary()))
+            style.warn(&format!("FLAGGED: {}", shown(&integrity.summary())))
         );
     }
     let _ = writeln!(text);
@@ -255,15 +276,19 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
             task.id, task.failed
         ))
     );
-    let _ = writeln!(text, "  test:    {}", style.bold(&test.name));
+    let _ = writeln!(text, "  test:    {}", style.bold(&shown(&test.name)));
     if let Some(location) = &test.panic_location {
-        let _ = writeln!(text, "  at:      {location}");
+        let _ = writeln!(text, "  at:      {}", shown(location));
     }
     if let Some(reason) = &test.reason {
         let mut lines = reason.lines();
-        let _ = writeln!(text, "  reason:  {}", lines.next().unwrap_or_default());
+        let _ = writeln!(
+            text,
+            "  reason:  {}",
+            shown(lines.next().unwrap_or_default())
+        );
         for line in lines {
-            let _ = writeln!(text, "           {line}");
+            let _ = writeln!(text, "           {}", shown(line));
         }
     }
     if let Some(input) = &test.minimal_input {
@@ -301,5 +326,16 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
                 others.len()
             ))
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_characters_reach_the_terminal_escaped() {
+        assert_eq!(shown("a\u{1b}[2Jb\tc\nd\u{7}"), "a\\u{1b}[2Jb\tc\nd\\u{7}");
+        assert_eq!(indented("x\u{1b}[H", "  "), "  x\\u{1b}[H\n");
     }
 }
