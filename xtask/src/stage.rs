@@ -86,9 +86,9 @@ pub enum Overlay<'a> {
     Own,
     /// `reference/*/src` laid over the student files.
     Reference,
-    /// Another checkout's `exercises/*/src`, each topic's folder whole (a
-    /// module the student added comes along, a stub they deleted stays
-    /// deleted); a topic it lacks keeps the course's stubs.
+    /// Another checkout's task files (see [`task_files`]) laid over the
+    /// stubs; everything else, `lib.rs` and given code included, stays the
+    /// course's. A task file the submission lacks keeps its stub.
     Submission(&'a Path),
 }
 
@@ -134,6 +134,33 @@ pub fn is_student_file(relative: &Path) -> bool {
     parts.len() >= 3 && parts[0].as_os_str() == "exercises" && parts[2].as_os_str() == "src"
 }
 
+/// The task files of the course at `root` (paths relative to it): the
+/// files of `exercises/*/src` that hold a task, i.e. those with a solution
+/// in `reference/`; in an edition without `reference/`, those whose stub
+/// holds a `todo!`. These alone are a student's in a submission.
+pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
+    let reference = root.join("reference");
+    let mut tasks = Vec::new();
+    if reference.is_dir() {
+        for file in files_under(&reference)? {
+            let staged = Path::new("exercises").join(&file);
+            if is_student_file(&staged) {
+                tasks.push(staged);
+            }
+        }
+    } else {
+        for file in files_under(root)? {
+            if is_student_file(&file)
+                && fs::read_to_string(root.join(&file)).is_ok_and(|text| text.contains("todo!("))
+            {
+                tasks.push(file);
+            }
+        }
+    }
+    tasks.sort();
+    Ok(tasks)
+}
+
 /// The files of an edition of the course at `root`: (path in the stage,
 /// file to copy), sorted by the former.
 pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
@@ -162,20 +189,13 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
             }
         }
         Overlay::Submission(submission) => {
-            let exercises = root.join("exercises");
-            let topics = fs::read_dir(&exercises)
-                .with_context(|| format!("cannot read {}", exercises.display()))?;
-            for topic in topics {
-                let topic =
-                    topic.with_context(|| format!("cannot read {}", exercises.display()))?;
-                let src = Path::new("exercises").join(topic.file_name()).join("src");
-                let theirs = submission.join(&src);
-                if !theirs.is_dir() {
-                    continue; // nothing handed in: the stubs stay
-                }
-                files.retain(|(to, _)| !to.starts_with(&src));
-                for file in files_under(&theirs)? {
-                    files.push((src.join(&file), Source::File(theirs.join(&file))));
+            for task_file in task_files(root)? {
+                let theirs = submission.join(&task_file);
+                // A plain file only: a link could point anywhere.
+                let is_file = fs::symlink_metadata(&theirs).is_ok_and(|m| m.is_file());
+                if is_file {
+                    files.retain(|(to, _)| *to != task_file);
+                    files.push((task_file, Source::File(theirs)));
                 }
             }
         }
@@ -270,6 +290,21 @@ pub fn stage_in(
     overlay: Overlay<'_>,
     target_dir: Option<&Path>,
 ) -> Result<Stage> {
+    let lock = lock_stage(home)?;
+    let files = plan(root, overlay)?;
+    stage_files(home, &files, target_dir, lock)
+}
+
+/// The stage of the checkout at `root` holding `files` (a plan made by
+/// [`plan`] and then changed), locked.
+pub fn stage_plan(root: &Path, files: &Files, target_dir: Option<&Path>) -> Result<Stage> {
+    let home = home(root);
+    let lock = lock_stage(&home)?;
+    stage_files(&home, files, target_dir, lock)
+}
+
+/// Takes the lock of the stage in `home`, waiting for another run.
+fn lock_stage(home: &Path) -> Result<File> {
     fs::create_dir_all(home).with_context(|| format!("cannot create {}", home.display()))?;
     let lock_path = home.join("stage.lock");
     let lock = File::create(&lock_path)
@@ -279,10 +314,14 @@ pub fn stage_in(
         lock.lock()
             .with_context(|| format!("cannot lock {}", lock_path.display()))?;
     }
+    Ok(lock)
+}
+
+/// Syncs the stage in `home` to hold `files`, already locked by `lock`.
+fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File) -> Result<Stage> {
     let stage_root = home.join("stage");
-    let files = plan(root, overlay)?;
     claim(&stage_root)?;
-    sync(&files, &stage_root)?;
+    sync(files, &stage_root)?;
     Ok(Stage {
         root: stage_root,
         target_dir: target_dir.map_or_else(|| home.join("build"), Path::to_path_buf),

@@ -29,7 +29,7 @@ use anyhow::{Context, Result, bail};
 
 use crate::topics::{self, Topic};
 
-mod quiet;
+pub mod quiet;
 
 /// Opens a solution region; may be followed by `<task>: <instruction>`.
 const BEGIN_MARKER: &str = "// BEGIN SOLUTION";

@@ -599,13 +599,15 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
 #[test]
 fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     let official = fixture("tiny", "official");
-    // A class of two: anna solved `double` and made `negate`'s test pass
-    // without solving it; ben handed in the stubs untouched.
+    // A class of four: anna solved `double`, made `negate`'s test pass
+    // without solving it and edited lib.rs; ben handed in the stubs
+    // untouched; cy compiles the official solution in by `#[path]`, dee
+    // reads it with `include_str!`.
     let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("tiny-class");
     if class.exists() {
         fs::remove_dir_all(&class).unwrap();
     }
-    for name in ["anna", "ben"] {
+    for name in ["anna", "ben", "cy", "dee"] {
         copy_dir(
             &official.join("exercises"),
             &class.join(name).join("exercises"),
@@ -625,6 +627,24 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     .unwrap();
     fs::write(anna.join("tests/negate.rs"), "#[test]\nfn negates() {}\n").unwrap();
     fs::write(anna.join("tests/extra.rs"), "#[test]\nfn free() {}\n").unwrap();
+    fs::write(anna.join("src/lib.rs"), "pub mod ops;\npub mod extra;\n").unwrap();
+    let solution = official.join("reference/01-tiny/src/ops.rs");
+    fs::write(
+        class.join("cy/exercises/01-tiny/src/ops.rs"),
+        format!(
+            "#[path = {:?}]\nmod solution;\npub fn double(x: i32) -> i32 {{ solution::double(x) }}\npub fn negate(x: i32) -> i32 {{ solution::negate(x) }}\n",
+            solution.display().to_string()
+        ),
+    )
+    .unwrap();
+    fs::write(
+        class.join("dee/exercises/01-tiny/src/ops.rs"),
+        format!(
+            "const LEAK: () = panic!(\"{{}}\", include_str!({:?}));\npub fn double(x: i32) -> i32 {{ let () = LEAK; x * 2 }}\npub fn negate(x: i32) -> i32 {{ -x }}\n",
+            solution.display().to_string()
+        ),
+    )
+    .unwrap();
 
     let out = official.join("target/class");
     let output = xtask(
@@ -650,6 +670,29 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         anna_report["root"].as_str().unwrap().ends_with("anna"),
         "the report names the submission, not the stage"
     );
+    assert_eq!(
+        integrity["not_graded"][0], "exercises/01-tiny/src/lib.rs",
+        "the course's lib.rs was used"
+    );
+    for cheat in ["cy", "dee"] {
+        let report = read_json(&out.join(cheat).join("report.json"));
+        assert_eq!(
+            report["score"], 0.0,
+            "{cheat}: the solution was not compiled in"
+        );
+        let why = topic(&report, "01-tiny")["compile_error"]
+            .as_str()
+            .unwrap()
+            .to_owned();
+        assert!(
+            why.starts_with("not compiled: task code may not reach other files at compile time\nexercises/01-tiny/src/ops.rs:1: "),
+            "{cheat}: {why}"
+        );
+        assert!(
+            !why.contains("BEGIN SOLUTION"),
+            "{cheat}: the solution leaked: {why}"
+        );
+    }
     let ben_report = read_json(&out.join("ben/report.json"));
     assert_eq!(ben_report["score"], 0.0);
     assert_eq!(ben_report["integrity"]["changed"], serde_json::json!([]));
@@ -660,11 +703,14 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         csv,
         "submission,score,max_score,complete,flagged,01-tiny\n\
          anna,2,3,true,true,2\n\
-         ben,0,3,true,false,0\n"
+         ben,0,3,true,false,0\n\
+         cy,0,3,false,false,0\n\
+         dee,0,3,false,false,0\n"
     );
     let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
     assert!(html.contains("Flagged"), "{html}");
     // Nothing was written into the submissions.
     assert!(!class.join("anna/target").exists());
     assert!(!class.join("ben/target").exists());
+    assert!(!class.join("cy/target").exists());
 }

@@ -13,6 +13,7 @@
 
 mod build;
 mod export;
+mod forbidden;
 mod html;
 mod outcome;
 mod report;

@@ -34,7 +34,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use serde::Serialize;
 
-use super::report::{self, Edition, Report};
+use super::report::{self, Edition, Report, TaskStatus};
 use super::{GradeOptions, table};
 use crate::release;
 use crate::stage::{self, Files, Overlay, Source, files_under, is_student_file};
@@ -53,6 +53,11 @@ pub struct Integrity {
     /// Grading files the submission has and the course does not (e.g. an
     /// extra test file); they are not used.
     pub added: Vec<PathBuf>,
+    /// Files in the submission's `src/` folders that are not task files
+    /// and differ from the course's (an edited `lib.rs`, an added module):
+    /// not graded, the course's are used. Not a reason to flag.
+    #[serde(default)]
+    pub not_graded: Vec<PathBuf>,
 }
 
 impl Integrity {
@@ -145,6 +150,16 @@ pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
             integrity = against_edition;
         }
     }
+    let tasks = stage::task_files(official)?;
+    for file in files_under(submission)? {
+        if is_student_file(&file) && !tasks.contains(&file) {
+            let same = fs::read(official.join(&file))
+                .is_ok_and(|ours| fs::read(submission.join(&file)).is_ok_and(|t| t == ours));
+            if !same {
+                integrity.not_graded.push(file);
+            }
+        }
+    }
     Ok(integrity)
 }
 
@@ -199,15 +214,37 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
             .collect();
     }
     let options = &options;
-    let staged = stage::stage(
-        official,
-        Overlay::Submission(submission),
-        options.target_dir.as_deref(),
-    )?;
+    // A task file that reaches other files at compile time is not
+    // compiled: its stub is staged instead, and its topic scores 0.
+    let mut files = stage::plan(official, Overlay::Submission(submission))?;
+    let mut refused: Vec<(String, Vec<String>)> = Vec::new();
+    for task_file in stage::task_files(official)? {
+        let Ok(text) = fs::read_to_string(submission.join(&task_file)) else {
+            continue;
+        };
+        let uses = super::forbidden::uses(&text);
+        if uses.is_empty() {
+            continue;
+        }
+        let topic = task_file
+            .components()
+            .nth(1)
+            .map(|c| c.as_os_str().to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let shown = task_file.display().to_string();
+        refused.push((topic, uses.iter().map(|u| format!("{shown}:{u}")).collect()));
+        files.retain(|(to, _)| *to != task_file);
+        files.push((task_file.clone(), Source::File(official.join(&task_file))));
+    }
+    files.sort();
+    let staged = stage::stage_plan(official, &files, options.target_dir.as_deref())?;
     let mut in_stage = options.clone();
     in_stage.root.clone_from(&staged.root);
     in_stage.target_dir = Some(staged.target_dir.clone());
     let mut report = super::grade_tree(&in_stage, Edition::Student)?;
+    for (topic, uses) in refused {
+        refuse(&mut report, &topic, &uses);
+    }
     keep_pending_snapshots(&staged.root, &options.out.join("snapshots"))?;
     report.root = submission.to_path_buf();
     report.integrity = Some(integrity);
@@ -217,6 +254,32 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
         table::render(&report, &options.out, table::Style::detect(), true)
     );
     Ok(report)
+}
+
+/// Scores the topic `name` 0 as not compiled, for the forbidden `uses` of
+/// its task files.
+fn refuse(report: &mut Report, name: &str, uses: &[String]) {
+    let Some(topic) = report.topics.iter_mut().find(|t| t.name == name) else {
+        return;
+    };
+    let reason = format!(
+        "not compiled: task code may not reach other files at compile time\n{}",
+        uses.join("\n")
+    );
+    topic.compile_error = Some(match topic.compile_error.take() {
+        Some(more) => format!("{reason}\n\n{more}"),
+        None => reason,
+    });
+    for task in &mut topic.tasks {
+        task.status = TaskStatus::CompileError;
+        task.score = 0.0;
+        task.error = None;
+        task.tests.clear();
+        (task.passed, task.failed, task.ignored) = (0, 0, 0);
+    }
+    topic.score = 0.0;
+    report.score = report::round2(report.topics.iter().map(|t| t.score).sum());
+    report.complete = false;
 }
 
 /// Copies insta's pending snapshots (`.snap.new`, `.pending-snap`) out of

@@ -242,6 +242,26 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
             }
         }
     }
+    if let Some(integrity) = report
+        .integrity
+        .as_ref()
+        .filter(|i| !i.not_graded.is_empty())
+    {
+        let files: Vec<String> = integrity
+            .not_graded
+            .iter()
+            .map(|f| shown(&f.to_string_lossy()))
+            .collect();
+        let _ = writeln!(text);
+        let _ = writeln!(
+            text,
+            "{}",
+            style.dim(&format!(
+                "not graded (only task files are taken from a submission; the course's were used): {}",
+                files.join(", ")
+            ))
+        );
+    }
     if let Some(integrity) = report.integrity.as_ref().filter(|i| i.flagged()) {
         let _ = writeln!(text);
         let _ = writeln!(

@@ -31,7 +31,7 @@ const BORROW_COMMENT: &str = "// Unused until you write the body:";
 /// `source` with every comment and the contents of every string and
 /// character literal replaced by spaces (line breaks kept), so that byte
 /// offsets and line numbers stay those of `source`.
-fn mask(source: &str) -> String {
+pub fn mask(source: &str) -> String {
     let bytes = source.as_bytes();
     let mut out = bytes.to_vec();
     let blank = |out: &mut Vec<u8>, from: usize, to: usize| {
@@ -127,7 +127,7 @@ fn is_raw_string_start(bytes: &[u8], i: usize) -> bool {
 }
 
 /// Whether `word` occurs in `text` as a whole identifier.
-fn has_word(text: &str, word: &str) -> bool {
+pub fn has_word(text: &str, word: &str) -> bool {
     let is_ident = |c: char| c.is_alphanumeric() || c == '_';
     text.match_indices(word).any(|(at, _)| {
         let before = text[..at].chars().next_back();
