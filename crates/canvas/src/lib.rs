@@ -33,16 +33,21 @@
 //! - **Coordinates are limited to ±[`MAX_COORD`]**: beyond that an `f32`
 //!   can no longer hold every pixel position, and rasterizers document
 //!   what they do with such input (usually: draw nothing).
+//! - **From NDC to pixels** is the viewport transform, written once in
+//!   [`ndc`]: [`ndc_to_pixel`] for the course's pipeline, [`ndc_to_window`]
+//!   where CPU code must agree with a GPU.
 #![warn(missing_docs)]
 
 mod ascii;
 mod canvas;
 mod colour;
+pub mod ndc;
 mod pixel;
 
 pub use ascii::{ASCII_LEGEND, ascii_grid, ink_char};
 pub use canvas::{Canvas, CanvasError, DEPTH_CLEAR, Fragment, STENCIL_BITS, STENCIL_CLEAR, Vertex};
 pub use colour::Rgba;
+pub use ndc::{ndc_depth, ndc_to_pixel, ndc_to_window};
 pub use pixel::{MAX_COORD, Pixel, Span, Viewport, round_half_away, within_limits};
 
 /// Re-exported so that exercise crates use the same vector types as the library.

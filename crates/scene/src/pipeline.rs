@@ -120,7 +120,8 @@ impl Pipeline {
     /// ```
     ///
     /// NDC `−1` and `+1` land on the centres of the outermost pixels, so a
-    /// clipped polygon never rounds to a pixel off the canvas.
+    /// clipped polygon never rounds to a pixel off the canvas
+    /// ([`canvas::ndc_to_pixel`], the course's viewport transform).
     ///
     /// The divide is done even for `w ≤ 0` (a point behind the eye, which
     /// clipping would have removed): its picture is mirrored through the
@@ -129,9 +130,8 @@ impl Pipeline {
     #[must_use]
     pub fn screen(&self, v: ClipVertex) -> Option<Vertex> {
         let ndc = v.position.truncate() / v.position.w;
-        let size = Vec2::new(self.width as f32, self.height as f32) - 1.0;
-        let pixel = (ndc.truncate() + 1.0) * 0.5 * size.max(Vec2::ZERO);
-        let depth = (ndc.z + 1.0) * 0.5;
+        let pixel = canvas::ndc_to_pixel(ndc.truncate(), self.width, self.height);
+        let depth = canvas::ndc_depth(ndc.z);
         (pixel.is_finite() && depth.is_finite()).then(|| Vertex::new(pixel, depth, v.colour))
     }
 

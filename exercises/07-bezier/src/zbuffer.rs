@@ -57,11 +57,9 @@ impl Camera {
         }
         let scale = (self.fov_y_degrees.to_radians() * 0.5).tan();
         let ndc = DVec2::new(r.dot(d) / (z * scale * aspect), s.dot(d) / (z * scale));
-        let screen = DVec3::new(
-            (ndc.x + 1.0) * 0.5 * f64::from(width) - 0.5,
-            (ndc.y + 1.0) * 0.5 * f64::from(height) - 0.5,
-            Self::FAR / (Self::FAR - Self::NEAR) * (1.0 - Self::NEAR / z),
-        );
+        // OpenGL's viewport transform: NDC ±1 on the edges of the canvas.
+        let pixel = canvas::ndc_to_window(ndc, width, height);
+        let screen = pixel.extend(Self::FAR / (Self::FAR - Self::NEAR) * (1.0 - Self::NEAR / z));
         screen.is_finite().then_some(screen)
     }
 }

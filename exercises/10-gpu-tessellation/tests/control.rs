@@ -32,7 +32,14 @@ fn cpu_levels(patch: &BezierPatch, view_proj: Mat4, pixels_per_segment: f64) -> 
     let m: DMat4 = view_proj.as_dmat4();
     let project = |k: usize| {
         let c = m * DVec4::from((patch.points[k].as_dvec3(), 1.0));
-        (c.w > 1e-6).then(|| c.truncate().truncate() / c.w * 0.5 * VIEWPORT.as_dvec2())
+        // The GPU's viewport transform: the same pixels the shader measures in.
+        (c.w > 1e-6).then(|| {
+            canvas::ndc_to_window(
+                c.truncate().truncate() / c.w,
+                VIEWPORT.x as u32,
+                VIEWPORT.y as u32,
+            )
+        })
     };
     let outer = BOUNDARIES.map(|b| {
         let pts: Option<Vec<_>> = b.iter().map(|&k| project(k)).collect();
