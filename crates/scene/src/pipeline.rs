@@ -4,7 +4,7 @@
 
 use canvas::{Canvas, Rgba, Vertex};
 use glam::camera::rh::{proj::opengl, view};
-use glam::{Mat4, Vec2, Vec3};
+use glam::{Mat4, Vec3};
 
 use crate::{ClipVertex, Mesh, raster};
 
