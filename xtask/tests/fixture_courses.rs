@@ -602,12 +602,13 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     // A class of four: anna solved `double`, made `negate`'s test pass
     // without solving it and edited lib.rs; ben handed in the stubs
     // untouched; cy compiles the official solution in by `#[path]`, dee
-    // reads it with `include_str!`.
+    // reads it with `include_str!`; eve's code rewrites a test of the
+    // stage and the course's own task sheet while it runs.
     let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("tiny-class");
     if class.exists() {
         fs::remove_dir_all(&class).unwrap();
     }
-    for name in ["anna", "ben", "cy", "dee"] {
+    for name in ["anna", "ben", "cy", "dee", "eve"] {
         copy_dir(
             &official.join("exercises"),
             &class.join(name).join("exercises"),
@@ -646,6 +647,16 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     )
     .unwrap();
 
+    let sheet = official.join("exercises/01-tiny/README.md");
+    let official_sheet = fs::read_to_string(&sheet).unwrap();
+    fs::write(
+        class.join("eve/exercises/01-tiny/src/ops.rs"),
+        format!(
+            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{ x }}\n",
+            sheet.display().to_string()
+        ),
+    )
+    .unwrap();
     let out = official.join("target/class");
     let output = xtask(
         &official,
@@ -693,6 +704,21 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
             "{cheat}: the solution leaked: {why}"
         );
     }
+    // Eve's tests changed official files: flagged, 0, and named.
+    let eve = read_json(&out.join("eve/report.json"));
+    assert_eq!(eve["score"], 0.0, "double passed, but eve scores nothing");
+    assert_eq!(
+        eve["integrity"]["tampered"],
+        serde_json::json!([
+            "exercises/01-tiny/README.md",
+            "stage/exercises/01-tiny/tests/negate.rs"
+        ])
+    );
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains("changed files of the course itself"),
+        "{output:?}"
+    );
+    assert_ne!(fs::read_to_string(&sheet).unwrap(), official_sheet);
     let ben_report = read_json(&out.join("ben/report.json"));
     assert_eq!(ben_report["score"], 0.0);
     assert_eq!(ben_report["integrity"]["changed"], serde_json::json!([]));
@@ -705,7 +731,8 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
          anna,2,3,true,true,2\n\
          ben,0,3,true,false,0\n\
          cy,0,3,false,false,0\n\
-         dee,0,3,false,false,0\n"
+         dee,0,3,false,false,0\n\
+         eve,0,3,false,true,0\n"
     );
     let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
     assert!(html.contains("Flagged"), "{html}");

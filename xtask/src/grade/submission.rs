@@ -53,6 +53,11 @@ pub struct Integrity {
     /// Grading files the submission has and the course does not (e.g. an
     /// extra test file); they are not used.
     pub added: Vec<PathBuf>,
+    /// Files the submission's tests changed while they ran: official files
+    /// in the stage or in the course itself (restored afterwards). The
+    /// submission scores 0 and is flagged.
+    #[serde(default)]
+    pub tampered: Vec<PathBuf>,
     /// Files in the submission's `src/` folders that are not task files
     /// and differ from the course's (an edited `lib.rs`, an added module):
     /// not graded, the course's are used. Not a reason to flag.
@@ -64,13 +69,16 @@ impl Integrity {
     /// How many files differ.
     #[must_use]
     pub fn count(&self) -> usize {
-        self.changed.len() + self.missing.len() + self.added.len()
+        self.changed.len() + self.missing.len() + self.added.len() + self.tampered.len()
     }
 
     /// Whether anything differs: the submission is flagged.
     #[must_use]
     pub fn flagged(&self) -> bool {
-        !(self.changed.is_empty() && self.missing.is_empty() && self.added.is_empty())
+        !(self.changed.is_empty()
+            && self.missing.is_empty()
+            && self.added.is_empty()
+            && self.tampered.is_empty())
     }
 
     /// One line for people, e.g. "2 grading files differ from the official
@@ -82,6 +90,7 @@ impl Integrity {
             ("changed", &self.changed),
             ("missing", &self.missing),
             ("added", &self.added),
+            ("changed by its tests while grading", &self.tampered),
         ] {
             if files.is_empty() {
                 continue;
@@ -94,7 +103,7 @@ impl Integrity {
             }
             parts.push(part);
         }
-        let count = self.changed.len() + self.missing.len() + self.added.len();
+        let count = self.count();
         format!(
             "{count} grading file(s) differ from the official course, which was used instead ({})",
             parts.join("; ")
@@ -237,7 +246,12 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
         files.push((task_file.clone(), Source::File(official.join(&task_file))));
     }
     files.sort();
+    let course_before = contents_of(official)?;
     let staged = stage::stage_plan(official, &files, options.target_dir.as_deref())?;
+    let planned: Vec<(PathBuf, Vec<u8>)> = files
+        .iter()
+        .map(|(to, from)| Ok((to.clone(), from.read()?)))
+        .collect::<Result<_>>()?;
     let mut in_stage = options.clone();
     in_stage.root.clone_from(&staged.root);
     in_stage.target_dir = Some(staged.target_dir.clone());
@@ -246,6 +260,24 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
         refuse(&mut report, &topic, &uses);
     }
     keep_pending_snapshots(&staged.root, &options.out.join("snapshots"))?;
+    let mut integrity = integrity;
+    integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
+    if !integrity.tampered.is_empty() {
+        zero_for_tampering(&mut report, &integrity.tampered);
+        let in_course: Vec<String> = integrity
+            .tampered
+            .iter()
+            .filter(|f| !f.starts_with("stage"))
+            .map(|f| table::shown(&slashed(f)))
+            .collect();
+        if !in_course.is_empty() {
+            eprintln!(
+                "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
+                table::shown(&submission.display().to_string()),
+                in_course.join(", ")
+            );
+        }
+    }
     report.root = submission.to_path_buf();
     report.integrity = Some(integrity);
     super::export::write_all(&report, &options.out)?;
@@ -254,6 +286,91 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
         table::render(&report, &options.out, table::Style::detect(), true)
     );
     Ok(report)
+}
+
+/// Every grading file of the course at `root` with its contents.
+fn contents_of(root: &Path) -> Result<Vec<(PathBuf, Vec<u8>)>> {
+    files_under(root)?
+        .into_iter()
+        .filter(|file| is_grading_file(file))
+        .map(|file| {
+            let bytes = fs::read(root.join(&file))
+                .with_context(|| format!("cannot read {}", root.join(&file).display()))?;
+            Ok((file, bytes))
+        })
+        .collect()
+}
+
+/// What the tests changed while they ran: grading files of the course at
+/// `official` that differ from `before` (left as they are, for the tutor
+/// to look at: the grader never rewrites the course), and files of the
+/// stage that differ from its plan (the next sync puts them back).
+/// Pending snapshots, which insta writes beside the official ones, are
+/// the one thing tests may add (and cargo a lock file, where the course
+/// has none).
+fn tampered(
+    official: &Path,
+    before: &[(PathBuf, Vec<u8>)],
+    stage_root: &Path,
+    plan: &[(PathBuf, Vec<u8>)],
+) -> Result<Vec<PathBuf>> {
+    let mut changed = Vec::new();
+    for (file, bytes) in before {
+        if fs::read(official.join(file)).ok().as_deref() != Some(bytes.as_slice()) {
+            changed.push(file.clone());
+        }
+    }
+    for file in files_under(official)?
+        .into_iter()
+        .filter(|f| is_grading_file(f))
+    {
+        if !before.iter().any(|(f, _)| *f == file) {
+            changed.push(file);
+        }
+    }
+    let is_pending = |file: &Path| {
+        let name = file.to_string_lossy();
+        name.ends_with(".snap.new") || name.ends_with(".pending-snap")
+    };
+    for (file, bytes) in plan {
+        if fs::read(stage_root.join(file)).ok().as_deref() != Some(bytes.as_slice()) {
+            changed.push(Path::new("stage").join(file));
+        }
+    }
+    let cargos =
+        |file: &Path| file == Path::new("Cargo.lock") || file == Path::new(stage::STAGE_MARKER);
+    for file in files_under(stage_root)? {
+        let planned = plan.iter().any(|(f, _)| *f == file);
+        if !planned && !is_pending(&file) && !cargos(&file) {
+            changed.push(Path::new("stage").join(file));
+        }
+    }
+    changed.sort();
+    changed.dedup();
+    Ok(changed)
+}
+
+/// Scores every topic of a submission whose tests changed official files 0.
+fn zero_for_tampering(report: &mut Report, files: &[PathBuf]) {
+    let shown: Vec<String> = files.iter().take(5).map(|f| slashed(f)).collect();
+    let reason = format!(
+        "scored 0: its tests changed official files while grading ({}{})",
+        shown.join(", "),
+        if files.len() > shown.len() {
+            ", ..."
+        } else {
+            ""
+        }
+    );
+    for topic in &mut report.topics {
+        topic.errors.push(reason.clone());
+        for task in &mut topic.tasks {
+            task.score = 0.0;
+        }
+        topic.score = 0.0;
+    }
+    report.score = 0.0;
+    report.complete = false;
 }
 
 /// Scores the topic `name` 0 as not compiled, for the forbidden `uses` of
