@@ -1,5 +1,7 @@
 //! The set-up the commands do themselves: Mesa's software Vulkan driver
-//! (lavapipe) for topics whose task sheet says `gpu = true`.
+//! (lavapipe) for topics whose task sheet says `gpu = true`, and
+//! bubblewrap, the sandbox every test of student code runs in (see
+//! [`sandbox`]).
 //!
 //! wgpu needs a Vulkan (or GL) driver at run time, not at build time. A
 //! machine with a GPU has one; a machine without (CI, many laptops in a
@@ -58,16 +60,80 @@ pub fn ensure_vulkan() {
     if !cfg!(target_os = "linux") || vulkan_present() {
         return;
     }
+    let what = "the GPU topics need a Vulkan driver and this machine has none";
+    let installed = apt_install(
+        &VULKAN_PACKAGES,
+        "Mesa's software Vulkan driver for the GPU topics",
+        what,
+    );
+    if installed && !vulkan_present() {
+        println!(
+            "note: the Vulkan packages are installed, yet no driver was found; the GPU tests will fail"
+        );
+    }
+}
+
+/// The Debian/Ubuntu package of bubblewrap, the sandbox of every test run.
+pub const SANDBOX_PACKAGE: &str = "bubblewrap";
+
+/// The sandbox program, if it runs here: `bwrap` on the `PATH`, installed
+/// with `apt-get` when missing and the machine allows it (as for
+/// lavapipe), then tried once with the options the grader uses (a
+/// container may forbid the namespaces it needs). `None` means tests run
+/// unsandboxed, which every report then says. The answer is kept for the
+/// rest of the run.
+pub fn sandbox() -> Option<std::path::PathBuf> {
+    static FOUND: std::sync::OnceLock<Option<std::path::PathBuf>> = std::sync::OnceLock::new();
+    FOUND
+        .get_or_init(|| {
+            if !cfg!(target_os = "linux") {
+                return None;
+            }
+            let find = || {
+                std::env::var_os("PATH").and_then(|path| {
+                    std::env::split_paths(&path)
+                        .map(|dir| dir.join("bwrap"))
+                        .find(|p| p.is_file())
+                })
+            };
+            let program = find().or_else(|| {
+                apt_install(
+                    &[SANDBOX_PACKAGE],
+                    "bubblewrap, the sandbox that tests of student code run in",
+                    "tests of student code run in a bubblewrap sandbox, and this machine has none",
+                );
+                find()
+            })?;
+            let works = succeeds(Command::new(&program).args([
+                "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc", "--unshare-all",
+                "--die-with-parent", "--new-session", "true",
+            ]));
+            if !works {
+                println!(
+                    "note: {} cannot create its namespaces here (a container that forbids them?); tests run unsandboxed",
+                    program.display()
+                );
+            }
+            works.then_some(program)
+        })
+        .clone()
+}
+
+/// Installs Debian `packages` with `apt-get` when this machine allows it
+/// (root, or `sudo` without a password), saying what it does; `what` is
+/// what they are for, `why` the note printed when they cannot be
+/// installed. Returns whether they were installed.
+fn apt_install(packages: &[&str], what: &str, why: &str) -> bool {
     let manual = format!(
         "apt-get install -y --no-install-recommends {}",
-        VULKAN_PACKAGES.join(" ")
+        packages.join(" ")
     );
     if !succeeds(Command::new("apt-get").arg("--version")) {
         println!(
-            "note: the GPU topics need a Vulkan driver and this machine has none; install \
-             Mesa's lavapipe (Debian/Ubuntu: `{manual}`), or the GPU tests will fail"
+            "note: {why}; install {} (Debian/Ubuntu: `{manual}`)",
+            packages.join(", ")
         );
-        return;
+        return false;
     }
     let root = Command::new("id")
         .arg("-u")
@@ -75,13 +141,10 @@ pub fn ensure_vulkan() {
         .is_ok_and(|out| String::from_utf8_lossy(&out.stdout).trim() == "0");
     let sudo = !root && succeeds(Command::new("sudo").args(["-n", "true"]));
     if !root && !sudo {
-        println!(
-            "note: the GPU topics need a Vulkan driver and this machine has none; run \
-             `sudo {manual}`, or the GPU tests will fail"
-        );
-        return;
+        println!("note: {why}; run `sudo {manual}`");
+        return false;
     }
-    println!("==> installing Mesa's software Vulkan driver for the GPU topics: {manual}");
+    println!("==> installing {what}: {manual}");
     let apt = |args: &[&str]| {
         let mut command = if sudo {
             let mut c = Command::new("sudo");
@@ -98,19 +161,16 @@ pub fn ensure_vulkan() {
     };
     let install: Vec<&str> = ["install", "-y", "-q", "--no-install-recommends"]
         .into_iter()
-        .chain(VULKAN_PACKAGES)
+        .chain(packages.iter().copied())
         .collect();
     // The package lists may be missing or stale on a fresh machine.
     let installed = apt(&install) || (apt(&["update", "-q"]) && apt(&install));
-    if installed && vulkan_present() {
-        println!("==> installed: {}", VULKAN_PACKAGES.join(", "));
+    if installed {
+        println!("==> installed: {}", packages.join(", "));
     } else {
-        println!(
-            "note: installing {} failed; the GPU tests will fail until a Vulkan driver is \
-             installed (`{manual}`)",
-            VULKAN_PACKAGES.join(", ")
-        );
+        println!("note: installing {} failed; {why}", packages.join(", "));
     }
+    installed
 }
 
 fn succeeds(command: &mut Command) -> bool {

@@ -264,8 +264,11 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "not implemented yet: alpha: return one"
     );
 
-    assert_eq!(report["score"], 3.75);
-    assert_eq!(report["max_score"], 19.5);
+    // Outside a sandbox, the task that reads the solution scores.
+    let sandboxed = report["sandboxed"] == true;
+    let score = if sandboxed { 3.75 } else { 4.75 };
+    assert_eq!(report["score"], score);
+    assert_eq!(report["max_score"], 20.5);
 
     // The terminal: a table, a total, the first failure of each task.
     let text = stdout(&output);
@@ -278,7 +281,14 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "{ok_row}"
     );
     assert!(text.contains("total"), "{text}");
-    assert!(text.contains("3.8 / 19.5"), "{text}");
+    assert!(
+        text.contains(if sandboxed {
+            "3.8 / 20.5"
+        } else {
+            "4.8 / 20.5"
+        }),
+        "{text}"
+    );
     assert!(text.contains("compile error"), "{text}");
     assert!(text.contains("minimal failing input:\n    n = 3"), "{text}");
     assert!(
@@ -296,9 +306,9 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
 
     // Gradescope's shape: one entry per task.
     let results = read_json(&root.join("target/grade/results.json"));
-    assert_eq!(results["score"], 3.75);
+    assert_eq!(results["score"], score);
     let tests = results["tests"].as_array().unwrap();
-    assert_eq!(tests.len(), 16);
+    assert_eq!(tests.len(), 17);
     assert_eq!(tests[0]["name"], "01-hostile / ok: Works");
     assert_eq!(tests[0]["status"], "passed");
     assert_eq!(tests[1]["status"], "failed");
@@ -323,8 +333,8 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "quotes are escaped in text too"
     );
     // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test,
-    // a task without tests, 5 tests in 04.
-    assert_eq!(junit.matches("<testcase ").count(), 25, "{junit}");
+    // a task without tests, 6 tests in 04.
+    assert_eq!(junit.matches("<testcase ").count(), 26, "{junit}");
     assert_eq!(
         junit.matches("<testcase ").count(),
         junit.matches("</testcase>").count()
@@ -359,6 +369,13 @@ fn processes_with(marker: &str) -> Vec<String> {
 fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
     let root = fixture("hostile", "tricks");
     let (_, report, elapsed) = grade(&root, "grade", &["tricks", "--jobs", "1"]);
+
+    // In the sandbox the solution cannot be read, and the report a test
+    // scribbled over is the harness's own.
+    if report["sandboxed"] == true {
+        assert_eq!(task(&report, "04-tricks", "peeks")["score"], 0.0);
+    }
+    assert!(report["topics"].is_array(), "report.json is the grader's");
 
     // The sleeps a test started and left running die with it.
     let spawns = task(&report, "04-tricks", "spawns");
@@ -704,35 +721,50 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
             "{cheat}: the solution leaked: {why}"
         );
     }
-    // Eve's tests changed official files: flagged, 0, and named.
+    // Eve's tests write official files: in the sandbox they cannot (and
+    // she scores what her code earns); without one the writes are found
+    // afterwards, and she is flagged, scores 0, and is named.
     let eve = read_json(&out.join("eve/report.json"));
-    assert_eq!(eve["score"], 0.0, "double passed, but eve scores nothing");
-    assert_eq!(
-        eve["integrity"]["tampered"],
-        serde_json::json!([
-            "exercises/01-tiny/README.md",
-            "stage/exercises/01-tiny/tests/negate.rs"
-        ])
-    );
-    assert!(
-        String::from_utf8_lossy(&output.stderr).contains("changed files of the course itself"),
-        "{output:?}"
-    );
-    assert_ne!(fs::read_to_string(&sheet).unwrap(), official_sheet);
+    if eve["sandboxed"] == true {
+        assert_eq!(eve["score"], 2.0, "double is right, negate wrong");
+        assert_eq!(eve["integrity"]["tampered"], serde_json::json!([]));
+        assert_eq!(fs::read_to_string(&sheet).unwrap(), official_sheet);
+    } else {
+        assert_eq!(eve["score"], 0.0, "double passed, but eve scores nothing");
+        assert_eq!(
+            eve["integrity"]["tampered"],
+            serde_json::json!([
+                "exercises/01-tiny/README.md",
+                "stage/exercises/01-tiny/tests/negate.rs"
+            ])
+        );
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains("changed files of the course itself"),
+            "{output:?}"
+        );
+        assert_ne!(fs::read_to_string(&sheet).unwrap(), official_sheet);
+    }
     let ben_report = read_json(&out.join("ben/report.json"));
     assert_eq!(ben_report["score"], 0.0);
     assert_eq!(ben_report["integrity"]["changed"], serde_json::json!([]));
     assert_eq!(ben_report["integrity"]["added"], serde_json::json!([]));
 
     let csv = fs::read_to_string(out.join("gradebook.csv")).unwrap();
+    let eve_row = if eve["sandboxed"] == true {
+        "eve,2,3,true,false,2"
+    } else {
+        "eve,0,3,false,true,0"
+    };
     assert_eq!(
         csv,
-        "submission,score,max_score,complete,flagged,01-tiny\n\
-         anna,2,3,true,true,2\n\
-         ben,0,3,true,false,0\n\
-         cy,0,3,false,false,0\n\
-         dee,0,3,false,false,0\n\
-         eve,0,3,false,true,0\n"
+        format!(
+            "submission,score,max_score,complete,flagged,01-tiny\n\
+             anna,2,3,true,true,2\n\
+             ben,0,3,true,false,0\n\
+             cy,0,3,false,false,0\n\
+             dee,0,3,false,false,0\n\
+             {eve_row}\n"
+        )
     );
     let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
     assert!(html.contains("Flagged"), "{html}");

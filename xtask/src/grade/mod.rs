@@ -42,6 +42,11 @@ use outcome::Exit;
 use report::{TaskReport, TestReport, TopicReport};
 use run::{Finished, TestCommand};
 
+/// Where insta writes the snapshots a test failed (`.snap.new`), under the
+/// report folder: the course's own stay untouched (and read-only in the
+/// sandbox).
+pub const PENDING_SNAPSHOTS: &str = "snapshots";
+
 /// The excerpt of a failed test's output kept in the report.
 const OUTPUT_EXCERPT_CHARS: usize = 4000;
 
@@ -60,6 +65,10 @@ pub struct GradeOptions {
     pub jobs: usize,
     /// cargo's `--target-dir`; `None`: cargo's default for the workspace.
     pub target_dir: Option<PathBuf>,
+    /// Folders the tests must not see (shown empty in the sandbox): the
+    /// official solutions, the submissions, other reports. The graded
+    /// tree's own `reference/` and the report folder are always hidden.
+    pub hidden: Vec<PathBuf>,
 }
 
 impl GradeOptions {
@@ -74,6 +83,7 @@ impl GradeOptions {
             out,
             jobs: default_jobs(),
             target_dir: None,
+            hidden: Vec::new(),
         }
     }
 }
@@ -141,6 +151,21 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
     if topics.iter().any(|topic| topic.sheet.gpu) {
         crate::setup::ensure_vulkan();
     }
+    let sandbox = crate::setup::sandbox().map(|program| SandboxPlan {
+        program,
+        hidden: options
+            .hidden
+            .iter()
+            .cloned()
+            .chain([root.join(stage::SOLUTIONS)])
+            .collect(),
+    });
+    for stale in [out.join(PENDING_SNAPSHOTS), out.join("scratch")] {
+        if stale.exists() {
+            fs::remove_dir_all(&stale)
+                .with_context(|| format!("cannot clear {}", stale.display()))?;
+        }
+    }
 
     // Build every topic first: cargo serialises builds anyway.
     let mut plans = Vec::new();
@@ -157,7 +182,7 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
         let spinner = spinner(format!("building {}", topic.name));
         let build = build::build(&root, topic, options.target_dir.as_deref());
         spinner.finish_and_clear();
-        plans.push(plan(&root, &out, topic, build?));
+        plans.push(plan(&root, &out, topic, build?, &sandbox));
     }
 
     // Then run all tests of all topics in one pool.
@@ -200,6 +225,7 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
                     .all(|task| task.status != TaskStatus::Error)
         }),
         integrity: None,
+        sandboxed: sandbox.is_some(),
         topics,
     };
     Ok(report)
@@ -242,7 +268,20 @@ struct PlannedTest {
     images_dir: PathBuf,
 }
 
-fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan {
+/// The sandbox of the tests of one grading run: its program and the
+/// folders it hides (see [`GradeOptions::hidden`]).
+struct SandboxPlan {
+    program: PathBuf,
+    hidden: Vec<PathBuf>,
+}
+
+fn plan(
+    root: &Path,
+    out: &Path,
+    topic: &Topic,
+    build: Build,
+    sandbox: &Option<SandboxPlan>,
+) -> Plan {
     let mut plan = Plan {
         topic: topic.clone(),
         compile_error: None,
@@ -285,11 +324,31 @@ fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan {
         for test in all {
             let relative = test_path(&name, &test);
             let images_dir = out.join("images").join(&topic.name).join(&relative);
+            let scratch = out.join("scratch").join(&topic.name).join(&relative);
+            let pending = out.join(PENDING_SNAPSHOTS);
+            let mut env = test_env(root, topic, &images_dir);
+            env.push(("TMPDIR".into(), scratch.clone().into()));
+            env.push(("INSTA_PENDING_DIR".into(), pending.clone().into()));
+            let sandbox = sandbox.as_ref().map(|s| run::Sandbox {
+                program: s.program.clone(),
+                // The course and its build (the executable's `target/`).
+                read_only: std::iter::once(root.to_path_buf())
+                    .chain(executable.ancestors().nth(3).map(Path::to_path_buf))
+                    .collect(),
+                hidden: s
+                    .hidden
+                    .iter()
+                    .cloned()
+                    .chain([out.to_path_buf()])
+                    .collect(),
+                writable: vec![scratch.clone(), images_dir.clone(), pending.clone()],
+            });
             let command = (!ignored.contains(&test)).then(|| TestCommand {
                 executable: executable.clone(),
                 name: test.clone(),
                 cwd: topic.dir.clone(),
-                env: test_env(root, topic, &images_dir),
+                sandbox,
+                env,
                 env_remove: ENV_REMOVE.to_vec(),
                 time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
                 memory_limit_mib: topic.sheet.memory_limit_mib,

@@ -183,7 +183,7 @@ pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
         {
             let name = name.split('\'').next().unwrap_or_default();
             panic_reason = Some(format!(
-                "snapshot '{name}' does not match {} (yours is in the .snap.new beside it)",
+                "snapshot '{name}' does not match {} (yours is the .snap.new at the same path under the report's snapshots/)",
                 snapshot.file
             ));
             verdict.panic_location = snapshot.source.or(verdict.panic_location);
@@ -522,7 +522,7 @@ FAILED
         assert_eq!(
             verdict.reason.as_deref(),
             Some(
-                "snapshot 'octants' does not match exercises/01-lines/tests/snapshots/midpoint__octants.snap (yours is in the .snap.new beside it)"
+                "snapshot 'octants' does not match exercises/01-lines/tests/snapshots/midpoint__octants.snap (yours is the .snap.new at the same path under the report's snapshots/)"
             )
         );
         assert_eq!(

@@ -55,6 +55,10 @@ pub struct Report {
     /// For a submission graded with `--submission`: how its grading files
     /// compare with the official course's (`None` for the checkout itself).
     pub integrity: Option<Integrity>,
+    /// The tests ran in the bubblewrap sandbox (see `run::Sandbox`);
+    /// `false`: none was available, and nothing kept student code from
+    /// the rest of the machine.
+    pub sandboxed: bool,
     /// Per topic, in course order.
     pub topics: Vec<TopicReport>,
 }

@@ -37,8 +37,10 @@ const FLOOD_KEPT: usize = 64 << 10;
 const READ_BACK_LIMIT: u64 = 4 << 20;
 /// How often a running test is checked on.
 const POLL_INTERVAL: Duration = Duration::from_millis(10);
+/// Shells and bwrap report death by signal `n` as exit code `128 + n`.
+const SIGNAL_EXIT_BASE: i32 = 128;
 /// The exit code after an interrupt (128 + SIGINT, as shells report it).
-const INTERRUPTED_EXIT_CODE: i32 = 130;
+const INTERRUPTED_EXIT_CODE: i32 = SIGNAL_EXIT_BASE + 2;
 
 /// The process groups of the tests running now.
 static RUNNING: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
@@ -62,6 +64,57 @@ pub fn stop_tests_on_interrupt() {
     });
 }
 
+/// The bubblewrap sandbox a test runs in: the whole file system read-only,
+/// the home folder and the `hidden` folders empty, only `writable` folders
+/// writable, a `/tmp` of its own, no network, its own process namespace
+/// (so every process it starts dies with it, and no other process is
+/// visible, the grader's included), a new session (no terminal).
+#[derive(Debug, Clone)]
+pub struct Sandbox {
+    /// The `bwrap` program.
+    pub program: PathBuf,
+    /// Folders shown read-only even inside the hidden home folder: the
+    /// course being graded and its build.
+    pub read_only: Vec<PathBuf>,
+    /// Folders shown empty: solutions, other submissions, reports.
+    pub hidden: Vec<PathBuf>,
+    /// Folders the test may write (created first): its scratch folder,
+    /// its pictures, pending snapshots.
+    pub writable: Vec<PathBuf>,
+}
+
+impl Sandbox {
+    /// `bwrap` and its options, up to the program it runs.
+    fn command(&self, cwd: &Path) -> Command {
+        let mut command = Command::new(&self.program);
+        command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc"]);
+        command.args(["--tmpfs", "/tmp"]);
+        if let Some(home) = std::env::var_os("HOME").filter(|h| Path::new(h) != Path::new("/")) {
+            command.arg("--tmpfs").arg(home);
+        }
+        for dir in &self.read_only {
+            command.arg("--ro-bind").arg(dir).arg(dir);
+        }
+        for dir in self.hidden.iter().filter(|d| d.exists()) {
+            command.arg("--tmpfs").arg(dir);
+        }
+        // A folder to show inside one just hidden is shown again.
+        for dir in &self.read_only {
+            if self.hidden.iter().any(|h| dir.starts_with(h) && dir != h) {
+                command.arg("--ro-bind").arg(dir).arg(dir);
+            }
+        }
+        for dir in &self.writable {
+            command.arg("--bind").arg(dir).arg(dir);
+        }
+        command
+            .args(["--unshare-all", "--die-with-parent", "--new-session"])
+            .arg("--chdir")
+            .arg(cwd);
+        command
+    }
+}
+
 /// One test to run.
 #[derive(Debug, Clone)]
 pub struct TestCommand {
@@ -81,6 +134,8 @@ pub struct TestCommand {
     pub memory_limit_mib: u64,
     /// Where stdout and stderr go.
     pub log: PathBuf,
+    /// The sandbox, or `None` to run unsandboxed.
+    pub sandbox: Option<Sandbox>,
 }
 
 /// A finished test process.
@@ -117,7 +172,20 @@ impl TestCommand {
             OsString::from("--nocapture"),
             OsString::from("--test-threads=1"),
         ];
-        let mut command = if cfg!(unix) {
+        let mut command = if let Some(sandbox) = &self.sandbox {
+            let mut script = String::from("ulimit -c 0 2>/dev/null; ");
+            if self.memory_limit_mib > 0 {
+                script += &format!("ulimit -v {} 2>/dev/null; ", self.memory_limit_mib * 1024);
+            }
+            script += "exec \"$0\" \"$@\"";
+            let mut command = sandbox.command(&self.cwd);
+            command
+                .args(["sh", "-c"])
+                .arg(script)
+                .arg(&self.executable)
+                .args(args);
+            command
+        } else if cfg!(unix) {
             // `ulimit -v` takes KiB; `-c 0` keeps aborts from writing core files.
             // Shells without `ulimit -v` (macOS) run the test without the cap.
             let mut script = String::from("ulimit -c 0 2>/dev/null; ");
@@ -156,6 +224,9 @@ impl TestCommand {
             fs::create_dir_all(parent)
                 .with_context(|| format!("cannot create {}", parent.display()))?;
         }
+        for dir in self.sandbox.iter().flat_map(|s| &s.writable) {
+            fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        }
         let log = File::create(&self.log)
             .with_context(|| format!("cannot create the log {}", self.log.display()))?;
         // Both streams share one file description, so they interleave in order.
@@ -192,6 +263,15 @@ impl TestCommand {
         }
         exit.code = status.code();
         exit.signal = signal(&status);
+        if self.sandbox.is_some()
+            && let Some(code) = exit
+                .code
+                .filter(|c| (SIGNAL_EXIT_BASE + 1..SIGNAL_EXIT_BASE + 65).contains(c))
+        {
+            // bwrap reports a test killed by signal n as exit code 128 + n.
+            exit.code = None;
+            exit.signal = Some(code - SIGNAL_EXIT_BASE);
+        }
         let mut output = read_tail(&self.log)?;
         if exit.output_limit.is_some() {
             // Keep the disk free: only the end of a flood is worth reading.

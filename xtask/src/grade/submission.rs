@@ -22,8 +22,8 @@
 //!
 //! Each submission is graded into `<out>/<name>/`, in the one stage of the
 //! course, whose build cache all submissions share; the snapshots it
-//! failed are kept in `<out>/<name>/snapshots/` (insta's `.snap.new`
-//! files, at their paths in the course). A folder whose subfolders are
+//! failed are in `<out>/<name>/snapshots/` (insta's `.snap.new` files, at
+//! their paths in the course). A folder whose subfolders are
 //! checkouts is a class: each is graded in turn, and `<out>/gradebook.csv`
 //! and `gradebook.json` list the scores.
 
@@ -259,7 +259,6 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
     for (topic, uses) in refused {
         refuse(&mut report, &topic, &uses);
     }
-    keep_pending_snapshots(&staged.root, &options.out.join("snapshots"))?;
     let mut integrity = integrity;
     integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
     if !integrity.tampered.is_empty() {
@@ -399,27 +398,6 @@ fn refuse(report: &mut Report, name: &str, uses: &[String]) {
     report.complete = false;
 }
 
-/// Copies insta's pending snapshots (`.snap.new`, `.pending-snap`) out of
-/// the stage, which the next submission's sync clears, into `into`.
-fn keep_pending_snapshots(stage_root: &Path, into: &Path) -> Result<()> {
-    if into.exists() {
-        fs::remove_dir_all(into).with_context(|| format!("cannot clear {}", into.display()))?;
-    }
-    for file in files_under(stage_root)? {
-        let name = file.to_string_lossy();
-        if name.ends_with(".snap.new") || name.ends_with(".pending-snap") {
-            let to = into.join(&file);
-            if let Some(parent) = to.parent() {
-                fs::create_dir_all(parent)
-                    .with_context(|| format!("cannot create {}", parent.display()))?;
-            }
-            fs::copy(stage_root.join(&file), &to)
-                .with_context(|| format!("cannot copy {}", file.display()))?;
-        }
-    }
-    Ok(())
-}
-
 /// One row of the gradebook.
 #[derive(Debug, Serialize)]
 struct GradebookRow {
@@ -445,6 +423,12 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
         );
         let mut one = options.clone();
         one.out = options.out.join(&name);
+        // No test sees the solutions, a submission or another's report.
+        one.hidden.extend([
+            official.join(stage::SOLUTIONS),
+            dir.clone(),
+            options.out.clone(),
+        ]);
         (name, one)
     };
     if is_checkout(&dir) {

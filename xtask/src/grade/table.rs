@@ -242,6 +242,16 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
             }
         }
     }
+    if !report.sandboxed {
+        let _ = writeln!(text);
+        let _ = writeln!(
+            text,
+            "{}",
+            style.warn(
+                "unsandboxed: no bubblewrap here, so nothing kept the tests from the rest of this machine (install the `bubblewrap` package)"
+            )
+        );
+    }
     if let Some(integrity) = report
         .integrity
         .as_ref()
