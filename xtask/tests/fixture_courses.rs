@@ -768,6 +768,22 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     );
     let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
     assert!(html.contains("Flagged"), "{html}");
+    assert!(html.contains("<h1>anna: 2 of 3 points</h1>"), "{html}");
+    // Gradescope shows the flag as a failed entry of its own.
+    let gradescope = read_json(&out.join("anna/results.json"));
+    assert_eq!(gradescope["extra_data"]["submission"], "anna");
+    assert_eq!(gradescope["extra_data"]["flagged"], true);
+    assert_eq!(gradescope["tests"][0]["status"], "failed");
+    assert!(
+        gradescope["tests"][0]["name"]
+            .as_str()
+            .unwrap()
+            .starts_with("Integrity:")
+    );
+    assert_eq!(
+        read_json(&out.join("ben/results.json"))["extra_data"]["flagged"],
+        false
+    );
     // Nothing was written into the submissions.
     assert!(!class.join("anna/target").exists());
     assert!(!class.join("ben/target").exists());

@@ -31,13 +31,24 @@ pub fn write_all(report: &Report, out: &Path) -> Result<()> {
     Ok(())
 }
 
-/// Gradescope's `results.json`: one entry per task.
+/// Gradescope's `results.json`: one entry per task, and a failed entry
+/// worth no points when the submission is flagged, so that the flag shows
+/// in Gradescope's list of tests and not only in its text.
 #[derive(Debug, Serialize)]
 pub struct Gradescope {
     score: f64,
     max_score: f64,
     output: String,
     tests: Vec<GradescopeTest>,
+    /// Kept by Gradescope with the result, for scripts.
+    extra_data: GradescopeExtra,
+}
+
+#[derive(Debug, Serialize)]
+struct GradescopeExtra {
+    submission: String,
+    flagged: bool,
+    sandboxed: bool,
 }
 
 #[derive(Debug, Serialize)]
@@ -53,7 +64,8 @@ struct GradescopeTest {
 #[must_use]
 pub fn gradescope(report: &Report) -> Gradescope {
     let mut output = format!(
-        "{} of {} points; {} edition",
+        "{}: {} of {} points; {} edition",
+        report.name(),
         report::points(report.score),
         report::points(report.max_score),
         match report.edition {
@@ -65,6 +77,19 @@ pub fn gradescope(report: &Report) -> Gradescope {
         let _ = write!(output, "\nFLAGGED: {}", integrity.summary());
     }
     let mut tests = Vec::new();
+    let flagged = report.integrity.as_ref().filter(|i| i.flagged());
+    if let Some(integrity) = flagged {
+        tests.push(GradescopeTest {
+            name: "Integrity: grading files differ from the course (flagged)".to_owned(),
+            score: 0.0,
+            max_score: 0.0,
+            status: "failed",
+            output: integrity.summary(),
+        });
+    }
+    if !report.sandboxed {
+        let _ = write!(output, "\nunsandboxed: the tests ran without bubblewrap");
+    }
     for topic in &report.topics {
         for error in &topic.errors {
             let _ = write!(output, "\n{}: {error}", topic.name);
@@ -87,6 +112,11 @@ pub fn gradescope(report: &Report) -> Gradescope {
         score: report.score,
         max_score: report.max_score,
         output,
+        extra_data: GradescopeExtra {
+            submission: report.name(),
+            flagged: flagged.is_some(),
+            sandboxed: report.sandboxed,
+        },
         tests,
     }
 }

@@ -26,20 +26,27 @@ pub fn page(report: &Report) -> String {
         Edition::Student => "student code",
         Edition::Reference => "reference solutions",
     };
+    let name = escape(&report.name());
     let _ = writeln!(
         html,
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
-         <title>Grade report: {} of {} points</title><style>{STYLE}</style></head><body>\n\
-         <h1>{} of {} points</h1>\n<p>{edition}, graded in {:.0} s{}</p>",
+         <title>{name}: {} of {} points</title><style>{STYLE}</style></head><body>\n\
+         <h1>{name}: {} of {} points</h1>\n<p>{edition} in <code>{}</code>, graded in {:.0} s{}{}</p>",
         report::points(report.score),
         report::points(report.max_score),
         report::points(report.score),
         report::points(report.max_score),
+        escape(&report.root.display().to_string()),
         report.duration_s,
         if report.complete {
             ""
         } else {
             "; <span class=\"error\">incomplete: some tasks could not be graded</span>"
+        },
+        if report.sandboxed {
+            ""
+        } else {
+            "; <span class=\"error\">unsandboxed</span>"
         },
     );
     if let Some(integrity) = report.integrity.as_ref().filter(|i| i.flagged()) {

@@ -63,6 +63,18 @@ pub struct Report {
     pub topics: Vec<TopicReport>,
 }
 
+impl Report {
+    /// What was graded, for titles: the folder name of the submission or
+    /// checkout.
+    #[must_use]
+    pub fn name(&self) -> String {
+        self.root.file_name().map_or_else(
+            || self.root.display().to_string(),
+            |name| name.to_string_lossy().into_owned(),
+        )
+    }
+}
+
 /// One topic (exercise crate).
 #[derive(Debug, Clone, Serialize)]
 pub struct TopicReport {
