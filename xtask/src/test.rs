@@ -3,16 +3,17 @@
 //!
 //! 1. the student stubs are exactly what `reference/` generates;
 //! 2. every workspace test passes against the reference solutions;
-//! 3. the reference solutions are clippy-clean (`-D warnings`, all targets
-//!    and features: the benchmarks too);
+//! 3. the course is clippy-clean (`-D warnings`, all targets and features,
+//!    the benchmarks too): with the reference solutions, and with the
+//!    stubs (checked after step 5, where the stage holds them);
 //! 4. graded with `--reference`, every task gets full points;
 //! 5. graded as shipped (the stubs), the course scores 0, compiles and the
 //!    grader finishes;
-//! 6. the student edition that `cargo xtask release` writes builds on its
+//! 7. the student edition that `cargo xtask release` writes builds on its
 //!    own: `cargo test` there fails only at `todo!()`, `cargo clippy
 //!    --all-targets` is clean, `cargo xtask grade` works.
 //!
-//! Steps 2 to 6 build in the stage (see `stage`), one build cache for the
+//! Steps 2 to 7 build in the stage (see `stage`), one build cache for the
 //! reference, the stubs and the edition: switching between them rebuilds
 //! only the crates whose files differ.
 //!
@@ -51,7 +52,7 @@ pub fn run(root: &Path) -> Result<()> {
         ),
         (
             "reference solutions are clippy-clean",
-            Box::new(|| reference_clippy(root)),
+            Box::new(|| clippy(root, Overlay::Reference)),
         ),
         (
             "reference solutions score full points",
@@ -60,6 +61,10 @@ pub fn run(root: &Path) -> Result<()> {
         (
             "untouched stubs compile, score 0 and the grader finishes",
             Box::new(|| stubs_score_zero(root)),
+        ),
+        (
+            "the stubs are clippy-clean",
+            Box::new(|| clippy(root, Overlay::Own)),
         ),
         (
             "the student edition builds, fails only at todo!() and grades",
@@ -137,8 +142,9 @@ fn workspace_tests(root: &Path) -> Result<String> {
     Ok("all tests pass with reference/ staged over the stubs".to_owned())
 }
 
-fn reference_clippy(root: &Path) -> Result<String> {
-    let staged = stage::stage(root, Overlay::Reference, None)?;
+/// `cargo clippy` over the whole workspace, staged with `overlay`.
+fn clippy(root: &Path, overlay: Overlay<'_>) -> Result<String> {
+    let staged = stage::stage(root, overlay, None)?;
     let mut command = cargo();
     command
         .current_dir(&staged.root)
@@ -165,7 +171,11 @@ fn reference_clippy(root: &Path) -> Result<String> {
         "`{}` failed ({status})",
         cargo::display(&command)
     );
-    Ok("no warnings in the solutions, the benchmarks or the tooling".to_owned())
+    Ok(match overlay {
+        Overlay::Reference => "no warnings in the solutions, the benchmarks or the tooling",
+        _ => "no warnings in the stubs, the benchmarks or the tooling",
+    }
+    .to_owned())
 }
 
 fn grade_into(root: &Path, overlay: Overlay<'_>, folder: &str) -> Result<Report> {

@@ -565,14 +565,15 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/6]",
-        "==> [2/6]",
-        "==> [3/6] reference solutions are clippy-clean",
-        "==> [4/6]",
-        "==> [5/6]",
-        "==> [6/6] the student edition",
+        "==> [1/7]",
+        "==> [2/7]",
+        "==> [3/7] reference solutions are clippy-clean",
+        "==> [4/7]",
+        "==> [5/7]",
+        "==> [6/7] the stubs are clippy-clean",
+        "==> [7/7] the student edition",
         "==> summary",
-        "all 6 steps passed",
+        "all 7 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
@@ -585,7 +586,7 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "no solutions in the edition"
     );
 
-    // A "stub" that already solves its task breaks steps 1, 5 and 6 (the
+    // A "stub" that already solves its task breaks steps 1, 5 and 7 (the
     // edition students get would pay for it too).
     let stub = root.join("exercises/01-tiny/src/ops.rs");
     let text = fs::read_to_string(&stub).unwrap();
@@ -607,8 +608,8 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "{text}"
     );
     assert!(
-        text.contains("3 of 6 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("3 of 6 steps failed"),
+        text.contains("3 of 7 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("3 of 7 steps failed"),
         "{text}"
     );
 }

@@ -40,6 +40,8 @@ pub enum Build {
 struct Message {
     reason: String,
     #[serde(default)]
+    manifest_path: Option<PathBuf>,
+    #[serde(default)]
     target: Option<Target>,
     #[serde(default)]
     profile: Option<Profile>,
@@ -58,23 +60,52 @@ struct Profile {
     test: bool,
 }
 
-/// Builds `topic`'s tests in the workspace at `root`.
-pub fn build(root: &Path, topic: &Topic, target_dir: Option<&Path>) -> Result<Build> {
+/// Builds the tests of all `topics` in one cargo run, which builds their
+/// shared dependencies once, with the features of the whole set (as the
+/// course's own `cargo test --workspace` does, so its artifacts serve).
+/// `None` when the build fails: then each topic is built on its own with
+/// [`build`], so that one topic's compile errors fail that topic alone.
+pub fn build_all(
+    root: &Path,
+    topics: &[Topic],
+    target_dir: Option<&Path>,
+) -> Result<Option<Vec<Vec<TestBinary>>>> {
+    let mut command = cargo_test(root, target_dir);
+    for topic in topics {
+        command.args(["--package", &topic.package]);
+    }
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+    if !output.status.success() {
+        return Ok(None);
+    }
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    Ok(Some(
+        topics
+            .iter()
+            .map(|topic| test_binaries(&stdout, Some(&topic.dir)))
+            .collect(),
+    ))
+}
+
+/// `cargo test --no-run` with JSON messages, in `root`.
+fn cargo_test(root: &Path, target_dir: Option<&Path>) -> std::process::Command {
     let mut command = cargo();
     command
         .current_dir(root)
-        .args([
-            "test",
-            "--package",
-            &topic.package,
-            "--no-run",
-            "--color",
-            "never",
-        ])
+        .args(["test", "--no-run", "--color", "never"])
         .arg("--message-format=json-render-diagnostics");
     if let Some(dir) = target_dir {
         command.arg("--target-dir").arg(dir);
     }
+    command
+}
+
+/// Builds `topic`'s tests in the workspace at `root`.
+pub fn build(root: &Path, topic: &Topic, target_dir: Option<&Path>) -> Result<Build> {
+    let mut command = cargo_test(root, target_dir);
+    command.args(["--package", &topic.package]);
     let output = command
         .output()
         .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
@@ -83,15 +114,25 @@ pub fn build(root: &Path, topic: &Topic, target_dir: Option<&Path>) -> Result<Bu
         return Ok(Build::Failed(compiler_errors(&stderr)));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    Ok(Build::Built(test_binaries(&stdout)))
+    Ok(Build::Built(test_binaries(&stdout, None)))
 }
 
-/// The integration-test executables among cargo's JSON messages.
-fn test_binaries(messages: &str) -> Vec<TestBinary> {
+/// The integration-test executables among cargo's JSON messages, of the
+/// package in `package_dir` when given.
+fn test_binaries(messages: &str, package_dir: Option<&Path>) -> Vec<TestBinary> {
     let mut binaries: Vec<TestBinary> = messages
         .lines()
         .filter_map(|line| serde_json::from_str::<Message>(line).ok())
         .filter(|message| message.reason == "compiler-artifact")
+        .filter(|message| {
+            package_dir.is_none_or(|dir| {
+                message
+                    .manifest_path
+                    .as_deref()
+                    .and_then(Path::parent)
+                    .is_some_and(|parent| parent == dir)
+            })
+        })
         .filter_map(|message| {
             let target = message.target?;
             let is_test = target.kind.iter().any(|kind| kind == "test")
@@ -194,7 +235,7 @@ mod tests {
 {"reason":"build-script-executed"}
 not json
 {"reason":"build-finished","success":true}"#;
-        let binaries = test_binaries(messages);
+        let binaries = test_binaries(messages, None);
         let names: Vec<&str> = binaries.iter().map(|b| b.name.as_str()).collect();
         assert_eq!(names, ["dda", "wu"]);
         assert_eq!(binaries[0].executable, Path::new("/t/dda-3"));

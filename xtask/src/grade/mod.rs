@@ -167,7 +167,16 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
         }
     }
 
-    // Build every topic first: cargo serialises builds anyway.
+    // Build every topic first: cargo serialises builds anyway. All at
+    // once when they compile, one by one to tell whose errors they are.
+    let mut together = if topics.len() > 1 {
+        let spinner = spinner(format!("building {} topics", topics.len()));
+        let built = build::build_all(&root, &topics, options.target_dir.as_deref())?;
+        spinner.finish_and_clear();
+        built.map(|all| all.into_iter())
+    } else {
+        None
+    };
     let mut plans = Vec::new();
     for topic in &topics {
         for stale in [
@@ -179,10 +188,17 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
                     .with_context(|| format!("cannot clear {}", stale.display()))?;
             }
         }
-        let spinner = spinner(format!("building {}", topic.name));
-        let build = build::build(&root, topic, options.target_dir.as_deref());
-        spinner.finish_and_clear();
-        plans.push(plan(&root, &out, topic, build?, &sandbox));
+        let build = match together.as_mut().and_then(Iterator::next) {
+            // (None found: built on its own, which says why.)
+            Some(binaries) if !binaries.is_empty() => Build::Built(binaries),
+            _ => {
+                let spinner = spinner(format!("building {}", topic.name));
+                let build = build::build(&root, topic, options.target_dir.as_deref());
+                spinner.finish_and_clear();
+                build?
+            }
+        };
+        plans.push(plan(&root, &out, topic, build, &sandbox));
     }
 
     // Then run all tests of all topics in one pool.
