@@ -202,7 +202,7 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
     }
 
     // Then run all tests of all topics in one pool.
-    let jobs: Vec<(usize, usize)> = plans
+    let mut jobs: Vec<(usize, usize)> = plans
         .iter()
         .enumerate()
         .flat_map(|(p, plan)| {
@@ -214,6 +214,18 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
             runnable.map(move |(t, _)| (p, t))
         })
         .collect();
+    // First the first test of every task, then the second of every task,
+    // and so on: the workers run tests of different tasks side by side,
+    // so a task that loops costs one time limit, not one per worker.
+    let mut rank: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut order: HashMap<(usize, usize), usize> = HashMap::new();
+    for &(p, t) in &jobs {
+        let task = (p, plans[p].tests[t].task);
+        let next = rank.entry(task).or_insert(0);
+        order.insert((p, t), *next);
+        *next += 1;
+    }
+    jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
     let results = run_all(&plans, &jobs, options.jobs.max(1))?;
 
     let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
