@@ -28,6 +28,22 @@ pub fn project_root() -> PathBuf {
         .to_path_buf()
 }
 
+/// Prints `command` (and the folder it runs in), runs it with its output
+/// on the terminal, and fails unless it succeeds.
+pub fn run_visibly(command: &mut Command) -> anyhow::Result<()> {
+    use anyhow::Context as _;
+    let folder = command
+        .get_current_dir()
+        .map(|dir| format!("   (in {})", dir.display()))
+        .unwrap_or_default();
+    println!("$ {}{folder}", display(command));
+    let status = command
+        .status()
+        .with_context(|| format!("cannot run `{}`", display(command)))?;
+    anyhow::ensure!(status.success(), "`{}` failed ({status})", display(command));
+    Ok(())
+}
+
 /// A command line as the user would type it, for headings and errors.
 #[must_use]
 pub fn display(command: &Command) -> String {

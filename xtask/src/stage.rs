@@ -79,6 +79,18 @@ pub struct Stage {
     _lock: File,
 }
 
+impl Stage {
+    /// `cargo`, run in the stage and built into its cache.
+    #[must_use]
+    pub fn cargo(&self) -> std::process::Command {
+        let mut command = crate::cargo::cargo();
+        command
+            .current_dir(&self.root)
+            .env("CARGO_TARGET_DIR", &self.target_dir);
+        command
+    }
+}
+
 /// What a stage holds in `exercises/*/src`.
 #[derive(Debug, Clone, Copy)]
 pub enum Overlay<'a> {

@@ -25,7 +25,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail, ensure};
 
-use crate::cargo::{self, cargo};
+use crate::cargo;
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
 use crate::stage::{self, Overlay};
 use crate::{release, setup, stubs, topics};
@@ -115,62 +115,28 @@ fn stubs_in_sync(root: &Path) -> Result<String> {
 
 fn workspace_tests(root: &Path) -> Result<String> {
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    let mut command = cargo();
-    command
-        .current_dir(&staged.root)
-        .env("CARGO_TARGET_DIR", &staged.target_dir)
-        .args([
-            "test",
-            "--workspace",
-            "--no-fail-fast",
-            "--exclude",
-            BENCH_PACKAGE,
-        ]);
-    println!(
-        "$ {}   (in {})",
-        cargo::display(&command),
-        staged.root.display()
-    );
-    let status = command
-        .status()
-        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
-    ensure!(
-        status.success(),
-        "`{}` failed ({status})",
-        cargo::display(&command)
-    );
+    cargo::run_visibly(staged.cargo().args([
+        "test",
+        "--workspace",
+        "--no-fail-fast",
+        "--exclude",
+        BENCH_PACKAGE,
+    ]))?;
     Ok("all tests pass with reference/ staged over the stubs".to_owned())
 }
 
 /// `cargo clippy` over the whole workspace, staged with `overlay`.
 fn clippy(root: &Path, overlay: Overlay<'_>) -> Result<String> {
     let staged = stage::stage(root, overlay, None)?;
-    let mut command = cargo();
-    command
-        .current_dir(&staged.root)
-        .env("CARGO_TARGET_DIR", &staged.target_dir)
-        .args([
-            "clippy",
-            "--workspace",
-            "--all-targets",
-            "--all-features",
-            "--",
-            "-D",
-            "warnings",
-        ]);
-    println!(
-        "$ {}   (in {})",
-        cargo::display(&command),
-        staged.root.display()
-    );
-    let status = command
-        .status()
-        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
-    ensure!(
-        status.success(),
-        "`{}` failed ({status})",
-        cargo::display(&command)
-    );
+    cargo::run_visibly(staged.cargo().args([
+        "clippy",
+        "--workspace",
+        "--all-targets",
+        "--all-features",
+        "--",
+        "-D",
+        "warnings",
+    ]))?;
     Ok(match overlay {
         Overlay::Reference => "no warnings in the solutions, the benchmarks or the tooling",
         _ => "no warnings in the stubs, the benchmarks or the tooling",
@@ -366,12 +332,8 @@ fn student_edition(root: &Path) -> Result<String> {
     // edition changes is rebuilt.
     let staged = stage::stage_in(&home, &release_dir, Overlay::Own, None)?;
     let in_edition = |args: &[&str]| {
-        let mut command = cargo();
-        command
-            .current_dir(&staged.root)
-            .env("CARGO_TARGET_DIR", &staged.target_dir)
-            .env("NO_COLOR", "1")
-            .args(args);
+        let mut command = staged.cargo();
+        command.env("NO_COLOR", "1").args(args);
         command
     };
 
