@@ -262,31 +262,10 @@ fn ends_with_blank_line(text: &str) -> bool {
 
 /// Lists the `.rs` files under `dir`, relative to it, sorted.
 fn rust_files(dir: &Path) -> Result<Vec<PathBuf>> {
-    fn walk(base: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
-        let entries =
-            fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))?;
-        for entry in entries {
-            let path = entry
-                .with_context(|| format!("cannot list {}", dir.display()))?
-                .path();
-            if path.is_dir() {
-                walk(base, &path, files)?;
-            } else if path.extension().is_some_and(|ext| ext == "rs") {
-                files.push(
-                    path.strip_prefix(base)
-                        .expect("walked from base")
-                        .to_path_buf(),
-                );
-            }
-        }
-        Ok(())
-    }
-    let mut files = Vec::new();
-    if dir.is_dir() {
-        walk(dir, dir, &mut files)?;
-    }
-    files.sort();
-    Ok(files)
+    Ok(crate::stage::files_under(dir)?
+        .into_iter()
+        .filter(|file| file.extension().is_some_and(|ext| ext == "rs"))
+        .collect())
 }
 
 /// What happened to the stubs of one checkout.
