@@ -41,6 +41,10 @@ pub struct Release {
     pub topics: Vec<String>,
     /// The course-library crates they need (folder names under `crates/`).
     pub crates: Vec<String>,
+    /// Files of an earlier release in the folder that this one does not
+    /// hold, and which were removed (`.git` and `target/` are never
+    /// touched).
+    pub removed: Vec<PathBuf>,
 }
 
 /// The topics a `--topics` list selects: names as `cargo xtask grade`
@@ -298,12 +302,13 @@ pub fn write(root: &Path, dir: &Path, wanted: &[String]) -> Result<Release> {
     }
     files.sort();
     stage::claim(dir)?;
-    stage::sync(&files, dir)?;
+    let (_, removed) = stage::sync(&files, dir)?;
     trim_lock_file(dir)?;
     Ok(Release {
         dir: dir.to_path_buf(),
         topics: topics.into_iter().map(|t| t.name).collect(),
         crates,
+        removed,
     })
 }
 
@@ -356,6 +361,14 @@ pub fn run(root: &Path, dir: &Path, topics: &[String]) -> Result<()> {
         release.topics.join(", "),
         release.crates.join(", ")
     );
+    if !release.removed.is_empty() {
+        let shown: Vec<String> = release
+            .removed
+            .iter()
+            .map(|f| f.display().to_string())
+            .collect();
+        println!("  removed (not part of this edition): {}", shown.join(", "));
+    }
     println!(
         "to publish it: cd {} && git init && git add -A && git commit -m \"Course edition\"",
         release.dir.display()

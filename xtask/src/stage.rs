@@ -219,8 +219,8 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
 /// Makes `dest` hold exactly `files` (besides [`SKIPPED_FOLDERS`] and the
 /// [`STAGE_MARKER`]): writes a file only when its contents differ, removes
 /// the others and the folders they leave empty. Returns how many files
-/// were written and removed.
-pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, usize)> {
+/// were written, and the files removed.
+pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, Vec<PathBuf>)> {
     fs::create_dir_all(dest).with_context(|| format!("cannot create {}", dest.display()))?;
     let mut written = 0;
     for (to, from) in files {
@@ -237,14 +237,14 @@ pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, usize)> 
             .with_context(|| format!("cannot write {}", target.display()))?;
         written += 1;
     }
-    let mut removed = 0;
+    let mut removed = Vec::new();
     let wanted: std::collections::HashSet<&Path> =
         files.iter().map(|(to, _)| to.as_path()).collect();
     for file in files_under(dest)? {
         if !wanted.contains(file.as_path()) && file != Path::new(STAGE_MARKER) {
             let path = dest.join(&file);
             fs::remove_file(&path).with_context(|| format!("cannot remove {}", path.display()))?;
-            removed += 1;
+            removed.push(file.clone());
             // Folders left empty go too (`remove_dir` refuses non-empty ones).
             let mut parent = path.parent();
             while let Some(dir) = parent.filter(|dir| *dir != dest) {
@@ -362,8 +362,9 @@ pub fn write_reference(root: &Path, dir: &Path) -> Result<()> {
     claim(&dir)?;
     let (written, removed) = sync(&files, &dir)?;
     println!(
-        "wrote the solution workspace to {} ({written} file(s) written, {removed} removed)",
-        dir.display()
+        "wrote the solution workspace to {} ({written} file(s) written, {} removed)",
+        dir.display(),
+        removed.len()
     );
     println!("open it in your editor; `cargo test` there runs the official tests on the solutions");
     Ok(())
@@ -440,17 +441,20 @@ mod tests {
             (PathBuf::from("a.rs"), Source::File(from.join("a.rs"))),
             (PathBuf::from("b/c.rs"), Source::File(from.join("b/c.rs"))),
         ];
-        assert_eq!(sync(&files, &dest).unwrap(), (2, 0));
+        assert_eq!(sync(&files, &dest).unwrap(), (2, vec![]));
         let before = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
         write(&dest.join("old/gone.rs"), "gone");
         write(&dest.join("target/kept"), "build output");
-        assert_eq!(sync(&files, &dest).unwrap(), (0, 1));
+        assert_eq!(
+            sync(&files, &dest).unwrap(),
+            (0, vec![PathBuf::from("old/gone.rs")])
+        );
         let after = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
         assert_eq!(before, after, "an unchanged file keeps its time");
         assert!(!dest.join("old").exists(), "emptied folders are removed");
         assert!(dest.join("target/kept").exists(), "build output is kept");
         write(&from.join("a.rs"), "a2");
-        assert_eq!(sync(&files, &dest).unwrap(), (1, 0));
+        assert_eq!(sync(&files, &dest).unwrap(), (1, vec![]));
         assert_eq!(fs::read_to_string(dest.join("a.rs")).unwrap(), "a2");
         fs::remove_dir_all(&from).unwrap();
         fs::remove_dir_all(&dest).unwrap();
