@@ -216,6 +216,15 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
     Ok(files)
 }
 
+/// Writes `contents` to `path`, creating the folders it lies in.
+pub fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<()> {
+    if let Some(parent) = path.parent() {
+        fs::create_dir_all(parent)
+            .with_context(|| format!("cannot create {}", parent.display()))?;
+    }
+    fs::write(path, contents).with_context(|| format!("cannot write {}", path.display()))
+}
+
 /// Makes `dest` hold exactly `files` (besides [`SKIPPED_FOLDERS`] and the
 /// [`STAGE_MARKER`]): writes a file only when its contents differ, removes
 /// the others and the folders they leave empty. Returns how many files
@@ -229,12 +238,7 @@ pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, Vec<Path
         if fs::read(&target).is_ok_and(|old| old == contents) {
             continue;
         }
-        if let Some(parent) = target.parent() {
-            fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create {}", parent.display()))?;
-        }
-        fs::write(&target, contents)
-            .with_context(|| format!("cannot write {}", target.display()))?;
+        write_file(&target, &contents)?;
         written += 1;
     }
     let mut removed = Vec::new();

@@ -392,12 +392,7 @@ fn sync_topic(
             }
             continue;
         }
-        if let Some(parent) = target_path.parent() {
-            fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create {}", parent.display()))?;
-        }
-        fs::write(&target_path, generated)
-            .with_context(|| format!("cannot write {}", target_path.display()))?;
+        crate::stage::write_file(&target_path, generated)?;
         outcome.changed.push((target_path, None));
     }
     Ok(())
