@@ -105,7 +105,7 @@ pub fn sandbox() -> Option<std::path::PathBuf> {
                 find()
             })?;
             let works = succeeds(Command::new(&program).args([
-                "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc", "--unshare-all",
+                "--ro-bind", "/", "/", "--dev", "/dev", "--tmpfs", "/proc", "--unshare-all",
                 "--die-with-parent", "--new-session", "true",
             ]));
             if !works {

@@ -292,6 +292,22 @@ pub fn sync(root: &Path, check: bool) -> Result<Outcome> {
     }
     let max_width = rustfmt_max_width(root)?;
     let mut outcome = Outcome::default();
+    let workspace = root.join("Cargo.toml");
+    let forbids_unsafe = fs::read_to_string(&workspace)
+        .ok()
+        .and_then(|text| toml::from_str::<toml::Value>(&text).ok())
+        .is_some_and(|manifest| {
+            let lint = ["workspace", "lints", "rust", "unsafe_code"]
+                .iter()
+                .try_fold(&manifest, |v, key| v.get(key));
+            lint.and_then(toml::Value::as_str) == Some("forbid")
+        });
+    if !forbids_unsafe {
+        outcome.errors.push(format!(
+            "{}: the workspace forbids unsafe code (`[workspace.lints.rust] unsafe_code = \"forbid\"`): the grader's verdict relies on it",
+            workspace.display()
+        ));
+    }
     for topic in topics::discover(root)? {
         sync_topic(root, &topic, check, max_width, &mut outcome)?;
     }
@@ -337,11 +353,25 @@ fn sync_topic(
         }
     }
     let manifest = topic.dir.join("Cargo.toml");
-    if fs::read_to_string(&manifest)
-        .is_ok_and(|text| text.lines().any(|l| l.trim() == "[features]"))
-    {
+    let manifest_text = fs::read_to_string(&manifest).unwrap_or_default();
+    if manifest_text.lines().any(|l| l.trim() == "[features]") {
         outcome.errors.push(format!(
             "{}: an exercise crate has no features (a feature would be unified across the workspace and switch the code students build)",
+            relative(&manifest)
+        ));
+    }
+    // The grader's verdict relies on student code being safe Rust (see
+    // crates/testkit-macros): the workspace forbids `unsafe`, and every
+    // exercise crate takes the workspace's lints.
+    let lints_inherited = toml::from_str::<toml::Table>(&manifest_text).is_ok_and(|t| {
+        t.get("lints")
+            .and_then(|l| l.get("workspace"))
+            .and_then(toml::Value::as_bool)
+            == Some(true)
+    });
+    if !lints_inherited {
+        outcome.errors.push(format!(
+            "{}: an exercise crate takes the workspace's lints (`[lints] workspace = true`), which forbid `unsafe` in student code",
             relative(&manifest)
         ));
     }

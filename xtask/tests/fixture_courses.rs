@@ -1,5 +1,6 @@
 //! `cargo xtask` run end to end on two fixture courses (each its own cargo
-//! workspace without dependencies, copied to a scratch folder first):
+//! workspace whose one dependency is the course's `#[testkit::test]`,
+//! copied to a scratch folder first):
 //!
 //! - `fixtures/hostile`: student code that panics, loops, overflows its
 //!   stack, exits, aborts, allocates 3 GiB, prints without end and fails a
@@ -39,6 +40,13 @@ fn fixture(name: &str, case: &str) -> PathBuf {
         }
     }
     copy_dir(&source, &copy);
+    // The course's `#[testkit::test]`, which the fixtures' tests use.
+    let macros = Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/testkit-macros");
+    for file in ["Cargo.toml", "src/lib.rs"] {
+        let target = copy.join("crates/testkit-macros").join(file);
+        fs::create_dir_all(target.parent().unwrap()).unwrap();
+        fs::copy(macros.join(file), target).unwrap();
+    }
     copy
 }
 
@@ -268,7 +276,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     let sandboxed = report["sandboxed"] == true;
     let score = if sandboxed { 3.75 } else { 4.75 };
     assert_eq!(report["score"], score);
-    assert_eq!(report["max_score"], 20.5);
+    assert_eq!(report["max_score"], 21.5);
 
     // The terminal: a table, a total, the first failure of each task.
     let text = stdout(&output);
@@ -283,9 +291,9 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     assert!(text.contains("total"), "{text}");
     assert!(
         text.contains(if sandboxed {
-            "3.8 / 20.5"
+            "3.8 / 21.5"
         } else {
-            "4.8 / 20.5"
+            "4.8 / 21.5"
         }),
         "{text}"
     );
@@ -308,7 +316,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     let results = read_json(&root.join("target/grade/results.json"));
     assert_eq!(results["score"], score);
     let tests = results["tests"].as_array().unwrap();
-    assert_eq!(tests.len(), 17);
+    assert_eq!(tests.len(), 18);
     assert_eq!(tests[0]["name"], "01-hostile / ok: Works");
     assert_eq!(tests[0]["status"], "passed");
     assert_eq!(tests[1]["status"], "failed");
@@ -333,8 +341,8 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "quotes are escaped in text too"
     );
     // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test,
-    // a task without tests, 6 tests in 04.
-    assert_eq!(junit.matches("<testcase ").count(), 26, "{junit}");
+    // a task without tests, 7 tests in 04.
+    assert_eq!(junit.matches("<testcase ").count(), 27, "{junit}");
     assert_eq!(
         junit.matches("<testcase ").count(),
         junit.matches("</testcase>").count()
@@ -376,6 +384,15 @@ fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
         assert_eq!(task(&report, "04-tricks", "peeks")["score"], 0.0);
     }
     assert!(report["topics"].is_array(), "report.json is the grader's");
+
+    // A forged summary and `exit(0)` before the assertion is no pass, in or
+    // out of the sandbox: the test took its token before the code ran.
+    let forges = task(&report, "04-tricks", "forges");
+    assert_eq!(forges["score"], 0.0, "{forges}");
+    assert!(
+        reason(forges).contains("did not run to its end"),
+        "{forges}"
+    );
 
     // The sleeps a test started and left running die with it.
     let spawns = task(&report, "04-tricks", "spawns");
@@ -627,10 +644,9 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         fs::remove_dir_all(&class).unwrap();
     }
     for name in ["anna", "ben", "cy", "dee", "eve"] {
-        copy_dir(
-            &official.join("exercises"),
-            &class.join(name).join("exercises"),
-        );
+        for dir in ["exercises", "crates"] {
+            copy_dir(&official.join(dir), &class.join(name).join(dir));
+        }
         fs::copy(
             official.join("Cargo.toml"),
             class.join(name).join("Cargo.toml"),

@@ -12,7 +12,10 @@
 //! - [`pixels`]: collecting what a rasterizer plots, expected pixels as
 //!   literal grids ([`grid!`]), duplicates and counts;
 //! - [`oracles`]: values by their definitions (binomials, Bernstein
-//!   polynomials), never by the algorithms the tasks teach.
+//!   polynomials), never by the algorithms the tasks teach;
+//! - [`test`]: `#[testkit::test]`, the `#[test]` of every graded test: it
+//!   tells the grader that the test ran to its end over a channel the code
+//!   under test cannot forge.
 #![warn(missing_docs)]
 
 pub mod image;
@@ -26,6 +29,7 @@ pub use raster::{
     pixel_diff,
 };
 pub use strategies::proptest_config;
+pub use testkit_macros::test;
 
 /// Re-exported so that snapshot macros work without a direct dependency.
 pub use insta;

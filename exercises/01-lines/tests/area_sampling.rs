@@ -12,7 +12,7 @@ fn area(from: Vec2, to: Vec2) -> Vec<(Pixel, f32)> {
     collect_weighted(|plot| area_sampling_line(from, to, plot))
 }
 
-#[test]
+#[testkit::test]
 fn horizontal_line_through_pixel_centres_covers_half_the_end_pixels() {
     // The rectangle [0, 4] × [−½, ½]: pixels 1..3 lie inside, pixels 0 and
     // 4 half inside.
@@ -29,7 +29,7 @@ fn horizontal_line_through_pixel_centres_covers_half_the_end_pixels() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn horizontal_line_between_rows_splits_them_evenly() {
     // y = ½ lies on the border of rows 0 and 1: each gets half of every column.
     let got = area(Vec2::new(0.5, 0.5), Vec2::new(3.5, 0.5));
@@ -44,12 +44,12 @@ fn horizontal_line_between_rows_splits_them_evenly() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn zero_length_line_draws_nothing() {
     assert!(area(Vec2::new(2.0, 2.0), Vec2::new(2.0, 2.0)).is_empty());
 }
 
-#[test]
+#[testkit::test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
     area_sampling_line(Vec2::new(1.0, 1.0), Vec2::new(22.0, 8.0), |p, w| {
@@ -61,7 +61,7 @@ fn a_shallow_line() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn intensities_add_up_to_the_length(from in point(40.0), to in point(40.0)) {
         let got = area(from, to);
         let total: f64 = got.iter().map(|&(_, w)| f64::from(w)).sum();
@@ -69,7 +69,7 @@ proptest! {
         prop_assert!((total - length).abs() <= 1e-3 * length.max(1.0), "total intensity {total} for length {length}");
     }
 
-    #[test]
+    #[testkit::test]
     fn intensity_is_in_zero_to_one_and_no_pixel_repeats(from in point(40.0), to in point(40.0)) {
         let got = area(from, to);
         let mut seen = std::collections::HashSet::new();
@@ -79,7 +79,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_gives_the_same_intensities(from in point(40.0), to in point(40.0)) {
         let mut forward = area(from, to);
         let mut backward = area(to, from);
@@ -92,7 +92,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_endpoints_draw_nothing(a in hostile_point(), b in point(100.0)) {
         let finite_and_small = a.x.abs() <= canvas::MAX_COORD as f32 && a.y.abs() <= canvas::MAX_COORD as f32;
         if !finite_and_small {

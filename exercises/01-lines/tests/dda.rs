@@ -23,7 +23,7 @@ fn pixels(fragments: &[Fragment]) -> Vec<Pixel> {
     fragments.iter().map(|f| f.pixel).collect()
 }
 
-#[test]
+#[testkit::test]
 fn colour_and_depth_are_interpolated_linearly() {
     // Black at depth 0 to white at depth 1 over four columns:
     // t = 0, 1/4, 1/2, 3/4, 1.
@@ -49,7 +49,7 @@ fn colour_and_depth_are_interpolated_linearly() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn rounding_is_half_away_from_zero() {
     // (0,0) -> (4,2): at x = 1 and x = 3 the line is at y = 0.5 and 1.5,
     // rounded up; going the other way at negative coordinates, down.
@@ -65,7 +65,7 @@ fn rounding_is_half_away_from_zero() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn t_is_clamped_when_the_first_column_lies_before_the_endpoint() {
     // The endpoint x = 0.4 rounds to column 0, 0.4 before the line starts.
     let from = Vertex::new(Vec2::new(0.4, 0.0), 0.2, Rgba::BLACK);
@@ -81,7 +81,7 @@ fn t_is_clamped_when_the_first_column_lies_before_the_endpoint() {
     assert_eq!(fragments[4].colour, Rgba::WHITE);
 }
 
-#[test]
+#[testkit::test]
 fn zero_length_line_is_one_fragment_with_the_first_colour() {
     let from = Vertex::new(Vec2::new(2.5, -1.5), 0.25, Rgba::RED);
     let to = Vertex::new(Vec2::new(2.5, -1.5), 0.75, Rgba::BLUE);
@@ -96,7 +96,7 @@ fn zero_length_line_is_one_fragment_with_the_first_colour() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn lines_in_all_octants() {
     let sheet = octant_sheet(|from, to, canvas| {
         dda_line(
@@ -132,7 +132,7 @@ fn star() -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn star_of_coloured_lines_matches_the_reference_image() {
     let reference = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/dda_star.png");
     assert_image_matches("dda_star", &star(), reference, Tolerance::EXACT);
@@ -141,7 +141,7 @@ fn star_of_coloured_lines_matches_the_reference_image() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn one_pixel_per_column_of_the_major_axis(from in vertex(50.0), to in vertex(50.0)) {
         let fragments = dda(&from, &to);
         let d = to.position - from.position;
@@ -155,7 +155,7 @@ proptest! {
         prop_assert_eq!(major(fragments[columns - 1].pixel), round_half_away(b));
     }
 
-    #[test]
+    #[testkit::test]
     fn attributes_stay_between_the_endpoints(from in vertex(50.0), to in vertex(50.0)) {
         for f in dda(&from, &to) {
             let between = |v: f32, a: f32, b: f32| v >= a.min(b) - 1e-6 && v <= a.max(b) + 1e-6;
@@ -166,7 +166,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn integer_endpoints_get_their_own_colours(
         [a, b] in pixel_line(40),
         (ca, cb) in (testkit::strategies::colour(), testkit::strategies::colour()),
@@ -181,14 +181,14 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn agrees_with_the_midpoint_line_away_from_ties([a, b] in pixel_line(40)) {
         prop_assume!(!has_tie(a, b));
         let yours = pixels(&dda(&Vertex::new(a.centre(), 0.0, INK), &Vertex::new(b.centre(), 0.0, INK)));
         testkit::assert_pixels_eq(&nearest_pixels(a, b, None), &yours, &format!("dda_line({a}, {b})"));
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_covers_same_pixels_away_from_ties([a, b] in pixel_line(40)) {
         prop_assume!(!has_tie(a, b));
         let forward = pixels(&dda(&white(a.x as f32, a.y as f32), &white(b.x as f32, b.y as f32)));
@@ -196,7 +196,7 @@ proptest! {
         testkit::assert_pixels_eq(&forward, &backward, &format!("{a} <-> {b}"));
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_endpoints_draw_nothing_and_do_not_hang(a in hostile_point(), b in testkit::strategies::point(100.0)) {
         // Non-finite or beyond MAX_COORD: nothing is drawn.
         let finite_and_small = a.x.abs() <= canvas::MAX_COORD as f32 && a.y.abs() <= canvas::MAX_COORD as f32;

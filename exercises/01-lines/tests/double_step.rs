@@ -12,7 +12,7 @@ fn double_step(from: Pixel, to: Pixel) -> Vec<Pixel> {
     collect(|plot| double_step_line(from, to, plot))
 }
 
-#[test]
+#[testkit::test]
 fn each_pattern_appears_where_the_slope_allows_it() {
     // Slope 1/4 from (0,0): patterns 1 (flat) and 2 (step on the second
     // pixel) only. Ties at x = 2 and x = 6 go to the lower row.
@@ -55,7 +55,7 @@ fn each_pattern_appears_where_the_slope_allows_it() {
     assert_eq!(steep, expected.map(|(x, y)| Pixel::new(x, y)));
 }
 
-#[test]
+#[testkit::test]
 fn odd_number_of_steps_ends_on_the_endpoint() {
     let pixels = double_step(Pixel::new(0, 0), Pixel::new(5, 2));
     assert_eq!(pixels.len(), 6);
@@ -67,7 +67,7 @@ fn odd_number_of_steps_ends_on_the_endpoint() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn ties_inside_a_double_step_follow_the_direction_rule() {
     // (0,0) -> (4,1) and back: at x = 2 the line is at y = 0.5; the
     // midpoint rule takes the lower pixel in both directions.
@@ -78,13 +78,13 @@ fn ties_inside_a_double_step_follow_the_direction_rule() {
     assert_eq!(double_step(Pixel::new(4, 1), Pixel::new(0, 0)), backwards);
 }
 
-#[test]
+#[testkit::test]
 fn lines_in_all_octants() {
     let sheet = octant_sheet(|from, to, canvas| double_step_line(from, to, |p| canvas.set(p, INK)));
     testkit::insta::assert_snapshot!("lines_in_all_octants", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     assert_eq!(
         double_step(Pixel::new(0, 0), Pixel::new(0, -MAX_COORD - 1)),
@@ -95,7 +95,7 @@ fn endpoints_beyond_max_coord_draw_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn double_step_equals_midpoint([from, to] in pixel_line(40)) {
         let expected = nearest_pixels(from, to, None);
         let yours = double_step(from, to);
@@ -103,7 +103,7 @@ proptest! {
         prop_assert_eq!(yours, expected, "same pixels but not in order from `from` to `to`");
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_covers_same_pixels([from, to] in pixel_line(40)) {
         assert_pixels_eq(&double_step(from, to), &double_step(to, from), &format!("{from} <-> {to}"));
     }

@@ -12,7 +12,7 @@ fn gs(from: Pixel, to: Pixel) -> Vec<(Pixel, f32)> {
     collect_weighted(|plot| gupta_sproull_line(from, to, plot))
 }
 
-#[test]
+#[testkit::test]
 fn the_table_falls_from_one_to_nothing() {
     let table = distance_table();
     assert_eq!(table.len(), TABLE_LEN);
@@ -46,7 +46,7 @@ fn cone_volume_over_strip(d: f64) -> f64 {
     volume
 }
 
-#[test]
+#[testkit::test]
 fn the_table_is_the_cone_volume_over_the_strip() {
     let table = distance_table();
     let full = cone_volume_over_strip(0.0);
@@ -60,7 +60,7 @@ fn the_table_is_the_cone_volume_over_the_strip() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn horizontal_line_has_full_middle_and_equal_neighbours() {
     let got = gs(Pixel::new(0, 0), Pixel::new(5, 0));
     assert_eq!(
@@ -81,7 +81,7 @@ fn horizontal_line_has_full_middle_and_equal_neighbours() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn diagonal_line_neighbours_are_cos_45_away() {
     // Pixel centres beside a 45° line lie 1/√2 ≈ 0.707 from it.
     for (p, w) in gs(Pixel::new(0, 0), Pixel::new(4, 4)) {
@@ -97,7 +97,7 @@ fn diagonal_line_neighbours_are_cos_45_away() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
     gupta_sproull_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| {
@@ -106,7 +106,7 @@ fn a_shallow_line() {
     testkit::assert_raster_snapshot!("a_shallow_line", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     assert!(gs(Pixel::new(-MAX_COORD - 1, 0), Pixel::new(0, 0)).is_empty());
 }
@@ -114,7 +114,7 @@ fn endpoints_beyond_max_coord_draw_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn middle_pixels_are_the_midpoint_line([from, to] in pixel_line(40)) {
         let got = gs(from, to);
         prop_assert_eq!(got.len() % 3, 0, "three pixels per column");
@@ -122,7 +122,7 @@ proptest! {
         prop_assert_eq!(middles, nearest_pixels(from, to, None), "every third pixel (the first of each column) is the midpoint line's");
     }
 
-    #[test]
+    #[testkit::test]
     fn intensities_are_table_values_and_never_above_full([from, to] in pixel_line(40)) {
         let table = distance_table();
         for (p, w) in gs(from, to) {
@@ -131,7 +131,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn intensity_matches_the_distance_to_the_line([from, to] in pixel_line(40)) {
         prop_assume!(from != to);
         let (a, b) = (from.centre().as_dvec2(), to.centre().as_dvec2());
@@ -145,7 +145,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_gives_the_same_intensities([from, to] in pixel_line(40)) {
         let mut forward = gs(from, to);
         let mut backward = gs(to, from);
@@ -154,7 +154,7 @@ proptest! {
         prop_assert_eq!(forward, backward);
     }
 
-    #[test]
+    #[testkit::test]
     fn total_intensity_grows_with_length([from, to] in pixel_line(30)) {
         prop_assume!(from != to);
         let longer = Pixel::new(to.x + (to.x - from.x), to.y + (to.y - from.y));

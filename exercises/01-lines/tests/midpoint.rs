@@ -12,7 +12,7 @@ fn midpoint(from: Pixel, to: Pixel) -> Vec<Pixel> {
     collect(|plot| midpoint_line(from, to, plot))
 }
 
-#[test]
+#[testkit::test]
 fn first_octant_line_matches_the_grid() {
     // (0,0) -> (8,3): slope 3/8, no ties.
     //   3 |.......##
@@ -37,7 +37,7 @@ fn first_octant_line_matches_the_grid() {
     assert_eq!(midpoint(Pixel::new(8, 3), Pixel::new(0, 0)), backwards);
 }
 
-#[test]
+#[testkit::test]
 fn tie_goes_east_left_to_right_and_southwest_right_to_left() {
     // (0,0) -> (2,1): at x = 1 the line is at y = 0.5, exactly between
     // (1,0) and (1,1). The slides: E going right, SW going left: (1,0).
@@ -50,7 +50,7 @@ fn tie_goes_east_left_to_right_and_southwest_right_to_left() {
     assert_eq!(left, [Pixel::new(2, 1), Pixel::new(1, 0), Pixel::new(0, 0)]);
 }
 
-#[test]
+#[testkit::test]
 fn steep_tie_goes_to_the_left_pixel() {
     // (0,0) -> (1,2): at y = 1 the line is at x = 0.5: the smaller x wins.
     let up = midpoint(Pixel::new(0, 0), Pixel::new(1, 2));
@@ -59,7 +59,7 @@ fn steep_tie_goes_to_the_left_pixel() {
     assert_eq!(down, [Pixel::new(1, 2), Pixel::new(0, 1), Pixel::new(0, 0)]);
 }
 
-#[test]
+#[testkit::test]
 fn zero_length_line_is_its_endpoint() {
     assert_eq!(
         midpoint(Pixel::new(-4, 7), Pixel::new(-4, 7)),
@@ -67,13 +67,13 @@ fn zero_length_line_is_its_endpoint() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn lines_in_all_octants() {
     let sheet = octant_sheet(|from, to, canvas| midpoint_line(from, to, |p| canvas.set(p, INK)));
     testkit::insta::assert_snapshot!("lines_in_all_octants", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     let far = Pixel::new(MAX_COORD + 1, 0);
     assert_eq!(midpoint(Pixel::new(0, 0), far), []);
@@ -89,7 +89,7 @@ fn endpoints_beyond_max_coord_draw_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pixels_are_the_nearest_to_the_ideal_line([from, to] in pixel_line(40)) {
         let expected = nearest_pixels(from, to, None);
         let yours = midpoint(from, to);
@@ -97,14 +97,14 @@ proptest! {
         prop_assert_eq!(yours, expected, "same pixels but not in order from `from` to `to`");
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_covers_same_pixels([from, to] in pixel_line(40)) {
         let forward = midpoint(from, to);
         let backward = midpoint(to, from);
         assert_pixels_eq(&forward, &backward, &format!("{from} -> {to} (expected) vs {to} -> {from} (yours)"));
     }
 
-    #[test]
+    #[testkit::test]
     fn one_pixel_per_step_along_the_major_axis([from, to] in pixel_line(40)) {
         let pixels = midpoint(from, to);
         let x_major = (to.x - from.x).abs() >= (to.y - from.y).abs();
@@ -113,14 +113,14 @@ proptest! {
         one_step_per_column(&pixels, x_major).map_err(TestCaseError::fail)?;
     }
 
-    #[test]
+    #[testkit::test]
     fn both_endpoints_are_drawn_first_and_last([from, to] in pixel_line(40)) {
         let pixels = midpoint(from, to);
         prop_assert_eq!(pixels.first(), Some(&from));
         prop_assert_eq!(pixels.last(), Some(&to));
     }
 
-    #[test]
+    #[testkit::test]
     fn lines_near_the_coordinate_limit_are_exact(
         [from, to] in pixel_line(30),
         shift in prop_oneof![Just(MAX_COORD - 30), Just(30 - MAX_COORD)],

@@ -5,7 +5,7 @@ use lines::slope_intensity::slope_intensity;
 use proptest::prelude::*;
 use testkit::strategies::pixel_line;
 
-#[test]
+#[testkit::test]
 fn axis_parallel_lines_get_one_over_root_two_and_diagonals_full() {
     let o = Pixel::new(0, 0);
     let r = std::f32::consts::FRAC_1_SQRT_2;
@@ -21,7 +21,7 @@ fn axis_parallel_lines_get_one_over_root_two_and_diagonals_full() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn ink_per_unit_length_is_the_same_for_every_slope([from, to] in pixel_line(1000)) {
         prop_assume!(from != to);
         let w = f64::from(slope_intensity(from, to));
@@ -31,7 +31,7 @@ proptest! {
         prop_assert!(w <= 1.0 && w > 0.7);
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_line_gets_the_same_intensity([from, to] in pixel_line(1000)) {
         prop_assert_eq!(slope_intensity(from, to), slope_intensity(to, from));
     }

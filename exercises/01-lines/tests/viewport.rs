@@ -16,7 +16,7 @@ fn viewport() -> impl Strategy<Value = Viewport> {
     (-20..20, -20..20, 0..25, 0..25).prop_map(|(x, y, w, h)| Viewport::new(x, y, x + w, y + h))
 }
 
-#[test]
+#[testkit::test]
 fn line_entering_through_the_bottom_starts_at_the_right_column() {
     // (0,0) -> (20,5), viewport rows 2..=4. Row 2 starts where the ideal
     // line crosses y = 1.5 (x = 6), a tie that goes to the lower row: so
@@ -34,7 +34,7 @@ fn line_entering_through_the_bottom_starts_at_the_right_column() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn lines_crossing_a_viewport() {
     // The viewport is the canvas's middle; the outline shows its border.
     let viewport = Viewport::new(4, 3, 20, 12);
@@ -63,7 +63,7 @@ fn lines_crossing_a_viewport() {
     testkit::assert_raster_snapshot!("lines_crossing_a_viewport", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn far_outside_line_is_clipped_before_iterating() {
     // Billions of columns: only an implementation that starts at the
     // viewport finishes within the time limit.
@@ -82,7 +82,7 @@ fn far_outside_line_is_clipped_before_iterating() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn empty_viewport_and_lines_outside_draw_nothing() {
     let line = (Pixel::new(0, 0), Pixel::new(10, 3));
     assert_eq!(clipped(line.0, line.1, Viewport::new(5, 5, 4, 9)), []);
@@ -93,7 +93,7 @@ fn empty_viewport_and_lines_outside_draw_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn draws_exactly_the_visible_part_of_the_line([from, to] in pixel_line(60), viewport in viewport()) {
         let expected = nearest_pixels(from, to, Some(viewport));
         let yours = clipped(from, to, viewport);
@@ -101,7 +101,7 @@ proptest! {
         prop_assert_eq!(yours, expected, "same pixels but not in order from `from` to `to`");
     }
 
-    #[test]
+    #[testkit::test]
     fn huge_lines_are_exact_inside(
         from in testkit::strategies::hostile_pixel(),
         to in testkit::strategies::hostile_pixel(),

@@ -24,7 +24,7 @@ fn column_sums(from: Pixel, to: Pixel, got: &[(Pixel, f32)]) -> BTreeMap<i32, f3
     sums
 }
 
-#[test]
+#[testkit::test]
 fn quarter_slope_splits_each_column_by_the_fraction() {
     // (0,0) -> (4,1): the ideal line is at y = 0.25, 0.5, 0.75 in columns
     // 1..3: the upper pixel gets that fraction (to 1/256), the lower the rest.
@@ -49,7 +49,7 @@ fn quarter_slope_splits_each_column_by_the_fraction() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn axis_parallel_and_diagonal_lines_are_solid() {
     for to in [Pixel::new(6, 0), Pixel::new(0, -6), Pixel::new(-6, 6)] {
         let got = wu(Pixel::new(0, 0), to);
@@ -58,7 +58,7 @@ fn axis_parallel_and_diagonal_lines_are_solid() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_shallow_line() {
     let mut canvas = Canvas::new(24, 10);
     wu_line(Pixel::new(1, 1), Pixel::new(22, 8), |p, w| {
@@ -67,7 +67,7 @@ fn a_shallow_line() {
     testkit::assert_raster_snapshot!("a_shallow_line", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     assert!(wu(Pixel::new(0, MAX_COORD + 1), Pixel::new(0, 0)).is_empty());
 }
@@ -75,7 +75,7 @@ fn endpoints_beyond_max_coord_draw_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn every_column_sums_to_one([from, to] in pixel_line(40)) {
         let got = wu(from, to);
         let steps = (to.x - from.x).abs().max((to.y - from.y).abs());
@@ -86,14 +86,14 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn intensity_is_never_above_full([from, to] in pixel_line(40)) {
         for (p, w) in wu(from, to) {
             prop_assert!((0.0..=1.0).contains(&w), "pixel {p}: {w}");
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn the_pixels_straddle_the_ideal_line([from, to] in pixel_line(40)) {
         // The intensity-weighted mean of each column is the ideal line's
         // position there, to within Wu's 8-bit intensities.
@@ -111,14 +111,14 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn both_endpoints_are_full([from, to] in pixel_line(40)) {
         let got = wu(from, to);
         prop_assert!(got.contains(&(from, 1.0)));
         prop_assert!(got.contains(&(to, 1.0)));
     }
 
-    #[test]
+    #[testkit::test]
     fn total_intensity_grows_with_length([from, to] in pixel_line(30)) {
         prop_assume!(from != to);
         let longer = Pixel::new(to.x + (to.x - from.x), to.y + (to.y - from.y));

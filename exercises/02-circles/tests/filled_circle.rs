@@ -18,7 +18,7 @@ fn disc(centre: Pixel, radius: i32) -> Vec<Pixel> {
     collect(|plot| filled_circle(centre, radius, plot))
 }
 
-#[test]
+#[testkit::test]
 fn small_discs_are_their_outlines_filled() {
     // The outlines of tests/common's HAND_CIRCLES with every row filled
     // from its leftmost to its rightmost pixel.
@@ -65,7 +65,7 @@ fn small_discs_are_their_outlines_filled() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn filled_circles_of_small_radii() {
     let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
         filled_circle(c, r, |p| canvas.set(p, INK))
@@ -73,7 +73,7 @@ fn filled_circles_of_small_radii() {
     testkit::insta::assert_snapshot!("filled_circles_of_small_radii", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn hostile_input_draws_nothing_and_returns_at_once() {
     let origin = Pixel::new(0, 0);
     for (centre, radius) in [
@@ -102,19 +102,19 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pixels_are_those_whose_inner_midpoint_is_inside(centre in pixel(50), radius in 0..40) {
         let yours = disc(centre, radius);
         assert_pixels_eq(&disc_pixels(centre, radius), &yours, &format!("filled_circle({centre}, {radius})"));
     }
 
-    #[test]
+    #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), radius in 0..40) {
         let yours = disc(centre, radius);
         prop_assert_eq!(first_duplicate(&yours), None, "filled_circle({}, {}) plots a pixel twice", centre, radius);
     }
 
-    #[test]
+    #[testkit::test]
     fn every_pixel_centre_inside_the_circle_is_filled(centre in pixel(50), radius in 0..40) {
         let yours: BTreeSet<Pixel> = disc(centre, radius).into_iter().collect();
         for dy in -radius..=radius {
@@ -127,7 +127,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn filled_circle_is_its_outline_and_the_inside(centre in pixel(50), radius in 0..40) {
         // The midpoint circle's outline is part of the filled circle, and
         // every filled pixel off the outline has all four neighbours
@@ -144,7 +144,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn each_row_is_one_span_symmetric_about_the_centre(centre in pixel(50), radius in 0..40) {
         let yours = disc(centre, radius);
         prop_assert!(missing_mirror_image(&yours, centre, true).is_none(), "filled_circle({}, {}) is not symmetric", centre, radius);
@@ -162,7 +162,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_draws_nothing_or_the_exact_disc(
         centre in hostile_pixel(),
         radius in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_COORD + 1), Just(i32::MAX), any::<i32>(), 0..20],

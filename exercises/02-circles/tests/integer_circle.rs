@@ -16,7 +16,7 @@ fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
     collect(|plot| integer_circle(centre, radius, plot))
 }
 
-#[test]
+#[testkit::test]
 fn small_radii_match_the_slides_by_hand() {
     // The same grids as the float version (see tests/midpoint_circle.rs),
     // now from h = d − ¼ = 1 − R, ΔE = 3, ΔSE = 5 − 2R. For R = 5:
@@ -38,7 +38,7 @@ fn small_radii_match_the_slides_by_hand() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn radius_8_follows_the_differences_step_by_step() {
     //   h   −7  E  −4  E   1  SE  −6  E   3  SE   2  SE
     //   ΔE   3      5      7       9     11      13
@@ -56,7 +56,7 @@ fn radius_8_follows_the_differences_step_by_step() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn every_radius_up_to_300_matches_the_midpoint_definition() {
     let centre = Pixel::new(-17, 23);
     for radius in 0..=300 {
@@ -74,7 +74,7 @@ fn every_radius_up_to_300_matches_the_midpoint_definition() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn circles_of_small_radii() {
     let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
         integer_circle(c, r, |p| canvas.set(p, INK))
@@ -82,7 +82,7 @@ fn circles_of_small_radii() {
     testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn hostile_input_draws_nothing_and_returns_at_once() {
     let origin = Pixel::new(0, 0);
     for (centre, radius) in [
@@ -105,7 +105,7 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
     assert_eq!(circle(edge, 0), [edge]);
 }
 
-#[test]
+#[testkit::test]
 fn huge_radius_is_exact() {
     // R² overflows an i32 from R = 46 341 on; the differences never come
     // near that. (Only the first 100 000 columns of the second octant are
@@ -134,14 +134,14 @@ fn huge_radius_is_exact() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pixels_equal_the_float_midpoint_circle(centre in pixel(1000), radius in 0..500) {
         let yours = circle(centre, radius);
         assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("integer_circle({centre}, {radius})"));
         prop_assert_eq!(first_duplicate(&yours), None, "integer_circle({}, {}) plots a pixel twice", centre, radius);
     }
 
-    #[test]
+    #[testkit::test]
     fn circle_has_eightfold_symmetry_and_no_gaps(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
@@ -150,7 +150,7 @@ proptest! {
         closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_draws_nothing_or_the_exact_circle(
         centre in hostile_pixel(),
         radius in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_COORD + 1), Just(i32::MAX), any::<i32>(), 0..40],

@@ -20,7 +20,7 @@ fn points(centre: Pixel, x: i32, y: i32) -> Vec<Pixel> {
     collect(|plot| circle_points(centre, x, y, &mut |p| plot(p)))
 }
 
-#[test]
+#[testkit::test]
 fn circle_points_plots_each_mirror_image_once() {
     let c = Pixel::new(10, -4);
     let at = |dx: i32, dy: i32| Pixel::new(c.x + dx, c.y + dy);
@@ -65,7 +65,7 @@ fn circle_points_plots_each_mirror_image_once() {
     assert_eq!(points(c, 0, 0), [c]);
 }
 
-#[test]
+#[testkit::test]
 fn small_radii_match_the_slides_by_hand() {
     // The slides' loop, run by hand (d after each step; E: d += 2x + 3,
     // SE: d += 2(x − y) + 5 with x, y before the step):
@@ -92,7 +92,7 @@ fn small_radii_match_the_slides_by_hand() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn radius_8_follows_the_slides_step_by_step() {
     //   8 |■■■        d: −6.75 E −3.75 E 1.25 SE −5.75 E 3.25 SE 2.25 SE
     //   7 |   ■■         (0,8)  (1,8)  (2,8)  (3,7)  (4,7)  (5,6)  (6,5):
@@ -111,7 +111,7 @@ fn radius_8_follows_the_slides_step_by_step() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn circles_of_small_radii() {
     let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
         midpoint_circle(c, r, |p| canvas.set(p, INK))
@@ -119,7 +119,7 @@ fn circles_of_small_radii() {
     testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn hostile_input_draws_nothing_and_returns_at_once() {
     let origin = Pixel::new(0, 0);
     for (centre, radius) in [
@@ -151,7 +151,7 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn huge_radius_is_still_exact() {
     // |d| reaches 2R; an f32 holds d = k + ¼ exactly only below 2²², and
     // from radii of about eight million on its rounding picks wrong
@@ -180,19 +180,19 @@ fn huge_radius_is_still_exact() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pixels_are_the_nearest_in_each_column_of_the_second_octant(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("midpoint_circle({centre}, {radius})"));
     }
 
-    #[test]
+    #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         prop_assert_eq!(first_duplicate(&yours), None, "midpoint_circle({}, {}) plots a pixel twice", centre, radius);
     }
 
-    #[test]
+    #[testkit::test]
     fn circle_has_eightfold_symmetry(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
@@ -200,7 +200,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn every_pixel_is_within_half_a_pixel_of_the_circle(centre in pixel(50), radius in 1..120) {
         // With m = max(|dx|, |dy|) and n = min(|dx|, |dy|): the circle
         // crosses the pixel's row or column (the one along n) between
@@ -216,7 +216,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn one_pixel_per_column_of_the_second_octant_and_no_gaps(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         // The second octant (0 ≤ dx ≤ dy): columns 0, 1, 2, … each once,
@@ -236,7 +236,7 @@ proptest! {
         closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
     }
 
-    #[test]
+    #[testkit::test]
     fn circles_near_the_coordinate_limit_are_exact(radius in 0..40, slack in 0..3, sx in prop::bool::ANY, sy in prop::bool::ANY) {
         let far = MAX_COORD - radius - slack;
         let centre = Pixel::new(if sx { far } else { -far }, if sy { far } else { -far });
@@ -245,7 +245,7 @@ proptest! {
         prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot)), 0, "midpoint_circle({}, {}) reaches beyond MAX_COORD", over, radius);
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_draws_nothing_or_the_exact_circle(
         centre in hostile_pixel(),
         radius in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_COORD + 1), Just(i32::MAX), any::<i32>(), 0..40],

@@ -22,7 +22,7 @@ fn expected(centre: Pixel, a: i32, b: i32) -> Vec<Pixel> {
     ellipse_pixels(centre, a, b, MAX_SEMI_AXIS)
 }
 
-#[test]
+#[testkit::test]
 fn ellipse_5_by_3_matches_the_regions_by_hand() {
     // a² = 25, b² = 9. Region 1 holds column x while 18x − 25 < 0 or
     // (18x − 25)² < 900(25 − x²): columns 0..=4 (x = 5: 65² > 0).
@@ -49,7 +49,7 @@ fn ellipse_5_by_3_matches_the_regions_by_hand() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn flat_ellipse_stays_in_region_one_along_the_axis() {
     // a = 8, b = 1: 2b²x − a² = 2x − 64 < 0 in every column, so region 1
     // runs to x = 8. d = 4 + 64(1 − 4) = −188 at (0,1), then
@@ -72,7 +72,7 @@ fn flat_ellipse_stays_in_region_one_along_the_axis() {
     assert_eq!(first_duplicate(&yours), None, "a pixel plotted twice");
 }
 
-#[test]
+#[testkit::test]
 fn a_zero_semi_axis_gives_a_segment() {
     let c = Pixel::new(3, -3);
     let column: Vec<Pixel> = (-4..=4).map(|dy| Pixel::new(c.x, c.y + dy)).collect();
@@ -92,7 +92,7 @@ fn a_zero_semi_axis_gives_a_segment() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn ellipses_of_several_shapes() {
     let axes = [
         (5, 3),
@@ -110,7 +110,7 @@ fn ellipses_of_several_shapes() {
     testkit::insta::assert_snapshot!("ellipses_of_several_shapes", sheet);
 }
 
-#[test]
+#[testkit::test]
 fn hostile_input_draws_nothing_and_returns_at_once() {
     let origin = Pixel::new(0, 0);
     for (centre, a, b) in [
@@ -141,7 +141,7 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn largest_ellipse_is_exact() {
     // a²b² needs 80 bits, the region test 122: an i64 overflows long
     // before MAX_SEMI_AXIS. Only the first quadrant is compared.
@@ -169,25 +169,25 @@ fn largest_ellipse_is_exact() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pixels_are_the_nearest_in_each_column_then_each_row(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
         assert_pixels_eq(&expected(centre, a, b), &yours, &format!("midpoint_ellipse({centre}, {a}, {b})"));
     }
 
-    #[test]
+    #[testkit::test]
     fn equal_semi_axes_give_the_midpoint_circle(centre in pixel(50), radius in 0..200) {
         let yours = ellipse(centre, radius, radius);
         assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("midpoint_ellipse({centre}, {radius}, {radius}) against the circle"));
     }
 
-    #[test]
+    #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
         prop_assert_eq!(first_duplicate(&yours), None, "midpoint_ellipse({}, {}, {}) plots a pixel twice", centre, a, b);
     }
 
-    #[test]
+    #[testkit::test]
     fn ellipse_has_fourfold_symmetry(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
         if let Some((p, image)) = missing_mirror_image(&yours, centre, false) {
@@ -195,14 +195,14 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn swapping_the_semi_axes_transposes_the_ellipse(a in 0..60, b in 0..60) {
         let centre = Pixel::new(0, 0);
         let transposed: Vec<Pixel> = ellipse(centre, b, a).into_iter().map(|p| Pixel::new(p.y, p.x)).collect();
         assert_pixels_eq(&ellipse(centre, a, b), &transposed, &format!("midpoint_ellipse(_, {a}, {b}) (expected) vs midpoint_ellipse(_, {b}, {a}) transposed (yours)"));
     }
 
-    #[test]
+    #[testkit::test]
     fn every_pixel_is_the_nearest_in_its_column_or_its_row(centre in pixel(50), a in 1..60, b in 1..60) {
         // Within half a pixel of the ellipse: along its column or its row.
         for p in ellipse(centre, a, b) {
@@ -213,7 +213,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn every_column_and_row_is_covered_without_gaps(centre in pixel(50), a in 0..60, b in 0..60) {
         // In the first quadrant every column 0..=a and every row 0..=b holds
         // a pixel, and the pixels touch: the outline has no gap.
@@ -226,7 +226,7 @@ proptest! {
         prop_assert!(connected(&yours), "midpoint_ellipse({}, {}, {}) falls apart", centre, a, b);
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_draws_nothing_or_the_exact_ellipse(
         centre in hostile_pixel(),
         a in prop_oneof![Just(i32::MIN), Just(-1), Just(MAX_SEMI_AXIS + 1), Just(i32::MAX), any::<i32>(), 0..30],

@@ -18,7 +18,7 @@ fn pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {
     collect(|plot| fill_triangle_blocked(positions, viewport, plot))
 }
 
-#[test]
+#[testkit::test]
 fn right_triangle_keeps_its_left_edge_and_drops_the_others() {
     let tri = [
         Vec2::new(0.0, 0.0),
@@ -32,7 +32,7 @@ fn right_triangle_keeps_its_left_edge_and_drops_the_others() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn far_from_the_origin_blocks_still_agree() {
     // Near ±MAX_COORD edge functions reach 2⁶⁶: the corner tests need
     // i128, the lanes of partial blocks do not.
@@ -50,7 +50,7 @@ fn far_from_the_origin_blocks_still_agree() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn degenerate_and_hostile_triangles_draw_nothing() {
     for tri in [
         [
@@ -99,14 +99,14 @@ fn any_triangle() -> impl Strategy<Value = [Vec2; 3]> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn covered_pixels_match_the_definition(tri in any_triangle()) {
         let yours = pixels(tri, WIDE);
         assert_pixels_eq(&triangle_pixels(tri, WIDE), &yours, &format!("{tri:?}"));
         prop_assert!(counts(&yours).values().all(|&n| n == 1), "a pixel plotted twice");
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_keeps_exactly_the_pixels_in_the_viewport(
         tri in any_triangle(), x in -40..20, y in -40..20, w in 0..30, h in 0..30,
     ) {
@@ -114,7 +114,7 @@ proptest! {
         assert_pixels_eq(&triangle_pixels(tri, viewport), &pixels(tri, viewport), &format!("{tri:?} in {viewport:?}"));
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_vertices_never_panic(a in hostile_point(), b in point(20.0), c in hostile_point()) {
         let small = Viewport::new(-5, -5, 5, 5);
         let yours = pixels([a, b, c], small);

@@ -28,7 +28,7 @@ fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
     points.iter().map(|&(x, y)| Vec2::new(x, y)).collect()
 }
 
-#[test]
+#[testkit::test]
 fn slides_rectangle_and_its_inversion_counts() {
     // (0.5, 0.5)–(4.5, 3.5) in a 20 × 10 viewport. Rows 1..=3 cross the
     // left edge at pixel 1 and the right edge at pixel 5.
@@ -48,7 +48,7 @@ fn slides_rectangle_and_its_inversion_counts() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn empty_degenerate_and_hostile_polygons_fill_nothing() {
     for shape in [
         v(&[]),
@@ -83,7 +83,7 @@ fn empty_degenerate_and_hostile_polygons_fill_nothing() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn a_buffer_larger_than_any_canvas_is_refused() {
     // The whole i32 plane: 2⁶⁴ pixels to invert. Nothing is filled, at once.
     let huge = v(&[(-1e30, -1e30), (1e30, -1e30), (1e30, 1e30), (-1e30, 1e30)]);
@@ -95,14 +95,14 @@ fn a_buffer_larger_than_any_canvas_is_refused() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn edge_fill_matches_the_even_odd_rule(shape in prop_oneof![star_polygon(), any_polygon()]) {
         let (yours, _) = by_edges(&shape, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn fence_fill_matches_the_even_odd_rule_for_any_fence(
         shape in prop_oneof![star_polygon(), any_polygon()], fence in -40..40,
     ) {
@@ -111,7 +111,7 @@ proptest! {
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn fence_at_the_right_end_inverts_as_much_as_edge_fill(shape in any_polygon()) {
         // Past the viewport's right edge, every crossing inverts from the
         // fence back to itself: the very pixels edge fill inverts.
@@ -120,7 +120,7 @@ proptest! {
         prop_assert_eq!(edges, fence);
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_keeps_exactly_the_pixels_in_the_viewport(
         shape in any_polygon(), x in -20..10, y in -20..10, w in 0..15, h in 0..15, fence in -30..30,
     ) {
@@ -130,7 +130,7 @@ proptest! {
         assert_pixels_eq(&expected, &by_fence(&shape, fence, viewport).0, &format!("fence fill {shape:?} in {viewport:?}"));
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_polygons_never_panic(shape in hostile_polygon(), fence in any::<i32>()) {
         let small = Viewport::new(-5, -5, 5, 5);
         for (yours, _) in [by_edges(&shape, small), by_fence(&shape, fence, small)] {

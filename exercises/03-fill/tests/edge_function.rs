@@ -35,7 +35,7 @@ fn positions(v: [Vertex; 3]) -> [Vec2; 3] {
     v.map(|v| v.position)
 }
 
-#[test]
+#[testkit::test]
 fn right_triangle_keeps_its_left_edge_and_drops_the_others() {
     // (0, 0), (0, 4), (4, 0): centres on the left edge x = 0 are in, those
     // on the bottom edge y = 0 and on the hypotenuse x + y = 4 are out.
@@ -62,7 +62,7 @@ fn right_triangle_keeps_its_left_edge_and_drops_the_others() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn top_edge_is_kept_and_bottom_edge_dropped() {
     //   2 #####.       (0, 2)–(5, 2) is a top edge: kept;
     //   1 .###..       the apex (2.5, −0.5) is below
@@ -75,7 +75,7 @@ fn top_edge_is_kept_and_bottom_edge_dropped() {
     assert_pixels_eq(&expected, &pixels(flipped, WIDE), "upward triangle");
 }
 
-#[test]
+#[testkit::test]
 fn triangles_of_several_shapes() {
     let mut all = Vec::new();
     for tri in [
@@ -89,7 +89,7 @@ fn triangles_of_several_shapes() {
     testkit::assert_raster_snapshot!("triangles_of_several_shapes", canvas_with(16, 11, &all));
 }
 
-#[test]
+#[testkit::test]
 fn triangulated_grid_covers_every_pixel_once() {
     // A 6 × 6 grid of cells over [0, 24] × [0, 24], interior vertices
     // jittered, each cell split along an alternating diagonal; windings
@@ -172,7 +172,7 @@ fn star() -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn star_of_interpolated_triangles_matches_the_reference_image() {
     let reference = concat!(
         env!("CARGO_MANIFEST_DIR"),
@@ -186,7 +186,7 @@ fn star_of_interpolated_triangles_matches_the_reference_image() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn degenerate_and_hostile_triangles_draw_nothing() {
     let cases = [
         [at(0.0, 0.0), at(2.0, 2.0), at(5.0, 5.0)],
@@ -227,7 +227,7 @@ fn any_triangle() -> impl Strategy<Value = [Vertex; 3]> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn covered_pixels_match_the_definition(tri in any_triangle()) {
         let yours = pixels(tri, WIDE);
         let expected = triangle_pixels(positions(tri), WIDE);
@@ -235,7 +235,7 @@ proptest! {
         prop_assert!(counts(&yours).values().all(|&n| n == 1), "a pixel plotted twice");
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_keeps_exactly_the_pixels_in_the_viewport(
         tri in any_triangle(), x in -20..10, y in -20..10, w in 0..15, h in 0..15,
     ) {
@@ -244,14 +244,14 @@ proptest! {
         assert_pixels_eq(&expected, &pixels(tri, viewport), &format!("{:?} in {viewport:?}", positions(tri)));
     }
 
-    #[test]
+    #[testkit::test]
     fn both_windings_fill_the_same_pixels(tri in any_triangle()) {
         let [a, b, c] = tri;
         assert_pixels_eq(&pixels([a, b, c], WIDE), &pixels([a, c, b], WIDE), "reversed winding");
         assert_pixels_eq(&pixels([a, b, c], WIDE), &pixels([b, c, a], WIDE), "rotated vertices");
     }
 
-    #[test]
+    #[testkit::test]
     fn two_triangles_sharing_an_edge_cover_each_pixel_once(
         a in half_pixel_point(12), b in half_pixel_point(12),
         c in point(12.0), d in point(12.0),
@@ -266,7 +266,7 @@ proptest! {
         prop_assert!(counts(&both).values().all(|&n| n == 1), "a pixel on the shared edge twice");
     }
 
-    #[test]
+    #[testkit::test]
     fn weights_sum_to_one_and_reproduce_the_vertices(tri in any_triangle()) {
         // One-hot colours: red, green and blue are the three weights.
         let hot = [Rgba::new(1.0, 0.0, 0.0, 0.0), Rgba::new(0.0, 1.0, 0.0, 0.0), Rgba::new(0.0, 0.0, 1.0, 0.0)];
@@ -283,7 +283,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn depth_lies_between_the_vertex_depths(tri in any_triangle()) {
         let lo = tri.iter().map(|v| v.depth).fold(f32::INFINITY, f32::min);
         let hi = tri.iter().map(|v| v.depth).fold(f32::NEG_INFINITY, f32::max);
@@ -293,7 +293,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_vertices_never_panic(a in hostile_point(), b in point(20.0), c in hostile_point()) {
         let small = Viewport::new(-5, -5, 5, 5);
         let yours = pixels([at(a.x, a.y), at(b.x, b.y), at(c.x, c.y)], small);

@@ -19,7 +19,7 @@ fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
     points.iter().map(|&(x, y)| Vec2::new(x, y)).collect()
 }
 
-#[test]
+#[testkit::test]
 fn slides_rectangle_as_a_polygon() {
     let square = v(&[(0.5, 0.5), (4.5, 0.5), (4.5, 3.5), (0.5, 3.5)]);
     let expected = grid_pixels(Pixel::new(0, 0), &[".####", ".####", ".####", "....."]);
@@ -30,7 +30,7 @@ fn slides_rectangle_as_a_polygon() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn two_crossings_in_one_pixel_cancel() {
     // A sliver between x = 0.2 and 0.8: both crossings of every row mark
     // pixel 1, and no centre lies inside. Setting marks (instead of
@@ -62,7 +62,7 @@ fn two_crossings_in_one_pixel_cancel() {
     assert_pixels_eq(&expected, &polygon(&comb, POLYGON_VIEWPORT), "comb");
 }
 
-#[test]
+#[testkit::test]
 fn empty_degenerate_and_hostile_polygons_fill_nothing() {
     for shape in [
         v(&[]),
@@ -82,7 +82,7 @@ fn empty_degenerate_and_hostile_polygons_fill_nothing() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn a_buffer_larger_than_any_canvas_is_refused() {
     // The whole i32 plane: 2⁶⁴ marks. Nothing is filled, at once.
     let huge = v(&[(-1e30, -1e30), (1e30, -1e30), (1e30, 1e30), (-1e30, 1e30)]);
@@ -93,21 +93,21 @@ fn a_buffer_larger_than_any_canvas_is_refused() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn simple_polygons_match_the_even_odd_rule(shape in star_polygon()) {
         let yours = polygon(&shape, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn any_polygon_matches_the_even_odd_rule(shape in any_polygon()) {
         let yours = polygon(&shape, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_keeps_exactly_the_pixels_in_the_viewport(
         shape in any_polygon(), x in -20..10, y in -20..10, w in 0..15, h in 0..15,
     ) {
@@ -115,7 +115,7 @@ proptest! {
         assert_pixels_eq(&even_odd_pixels(&shape, viewport), &polygon(&shape, viewport), &format!("{shape:?} in {viewport:?}"));
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_polygons_never_panic(shape in hostile_polygon()) {
         let small = Viewport::new(-5, -5, 5, 5);
         let yours = polygon(&shape, small);

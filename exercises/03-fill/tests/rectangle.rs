@@ -18,7 +18,7 @@ fn rectangle(min: Vec2, max: Vec2, viewport: Viewport) -> Vec<Pixel> {
     collect(|plot| fill_rectangle(min, max, viewport, plot))
 }
 
-#[test]
+#[testkit::test]
 fn slides_rectangle_fills_four_by_three_pixels() {
     // The slides' example (0.5, 0.5)–(4.5, 3.5): centres x = 1..=4, y = 1..=3.
     let yours = rectangle(Vec2::new(0.5, 0.5), Vec2::new(4.5, 3.5), WIDE);
@@ -27,7 +27,7 @@ fn slides_rectangle_fills_four_by_three_pixels() {
     assert_eq!(first_duplicate(&yours), None, "a pixel plotted twice");
 }
 
-#[test]
+#[testkit::test]
 fn integer_corners_leave_out_the_right_column_and_top_row() {
     //   3 . . . .      centres on x = 4 and y = 3 lie on the
     //   2 # # # # .    excluded right and top edges
@@ -39,7 +39,7 @@ fn integer_corners_leave_out_the_right_column_and_top_row() {
     assert_pixels_eq(&expected, &yours, "fill_rectangle((0, 0), (4, 3))");
 }
 
-#[test]
+#[testkit::test]
 fn empty_and_inverted_boxes_fill_nothing() {
     for (min, max) in [
         (Vec2::new(1.0, 1.0), Vec2::new(1.0, 5.0)),
@@ -55,7 +55,7 @@ fn empty_and_inverted_boxes_fill_nothing() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn rectangles_of_several_shapes() {
     let mut pixels = Vec::new();
     for (min, max) in [
@@ -69,7 +69,7 @@ fn rectangles_of_several_shapes() {
     testkit::assert_raster_snapshot!("rectangles_of_several_shapes", canvas_with(10, 6, &pixels));
 }
 
-#[test]
+#[testkit::test]
 fn hostile_corners_never_panic_and_stay_in_the_viewport() {
     let small = Viewport::new(-3, -2, 4, 5);
     let huge = [
@@ -111,7 +111,7 @@ fn hostile_corners_never_panic_and_stay_in_the_viewport() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn filled_pixels_are_the_centres_in_the_half_open_box(
         a in point(30.0), b in point(30.0), c in half_pixel_point(30), d in half_pixel_point(30),
         lattice in any::<bool>(),
@@ -125,7 +125,7 @@ proptest! {
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn rectangles_sharing_an_edge_cover_each_pixel_once(
         x in prop::array::uniform4(-30.0f32..30.0),
         y in prop::array::uniform2(-30.0f32..30.0),
@@ -150,7 +150,7 @@ proptest! {
         prop_assert!(counts(&yours).values().all(|&n| n == 1), "a pixel covered twice");
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_corners_stay_in_the_viewport(a in hostile_point(), b in hostile_point()) {
         let small = Viewport::new(-5, -5, 5, 5);
         let yours = rectangle(a, b, small);

@@ -19,7 +19,7 @@ fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
     points.iter().map(|&(x, y)| Vec2::new(x, y)).collect()
 }
 
-#[test]
+#[testkit::test]
 fn slides_rectangle_as_a_polygon() {
     // (0.5, 0.5)–(4.5, 3.5) as four vertices: the same 4 × 3 pixels as
     // task 1's rectangle.
@@ -32,7 +32,7 @@ fn slides_rectangle_as_a_polygon() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn integer_square_keeps_left_and_bottom_edges() {
     //   3 .....    centres on x = 0 and y = 0 are in,
     //   2 ###..    those on x = 3 and y = 3 are out
@@ -49,7 +49,7 @@ fn integer_square_keeps_left_and_bottom_edges() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn pentagram_has_a_hole_by_the_even_odd_rule() {
     // The five-pointed star drawn in one stroke: the centre pentagon is
     // crossed twice and stays empty.
@@ -71,7 +71,7 @@ fn pentagram_has_a_hole_by_the_even_odd_rule() {
     testkit::assert_raster_snapshot!("pentagram", canvas_with(17, 17, &yours));
 }
 
-#[test]
+#[testkit::test]
 fn polygons_of_several_shapes() {
     let mut all = Vec::new();
     for shape in [
@@ -94,7 +94,7 @@ fn polygons_of_several_shapes() {
     testkit::assert_raster_snapshot!("polygons_of_several_shapes", canvas_with(16, 12, &all));
 }
 
-#[test]
+#[testkit::test]
 fn empty_degenerate_and_hostile_polygons_fill_nothing() {
     let cases = [
         v(&[]),
@@ -121,21 +121,21 @@ fn empty_degenerate_and_hostile_polygons_fill_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn simple_polygons_match_the_even_odd_rule(shape in star_polygon()) {
         let yours = polygon(&shape, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn any_polygon_matches_the_even_odd_rule(shape in any_polygon()) {
         let yours = polygon(&shape, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}"));
         prop_assert_eq!(first_duplicate(&yours), None);
     }
 
-    #[test]
+    #[testkit::test]
     fn reversed_and_rotated_polygons_fill_the_same(shape in any_polygon(), turn in 0usize..12) {
         let mut rotated = shape.clone();
         if !rotated.is_empty() {
@@ -148,7 +148,7 @@ proptest! {
         assert_pixels_eq(&yours, &polygon(&rotated, POLYGON_VIEWPORT), "rotated");
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_keeps_exactly_the_pixels_in_the_viewport(
         shape in any_polygon(), x in -20..10, y in -20..10, w in 0..15, h in 0..15,
     ) {
@@ -156,7 +156,7 @@ proptest! {
         assert_pixels_eq(&even_odd_pixels(&shape, viewport), &polygon(&shape, viewport), &format!("{shape:?} in {viewport:?}"));
     }
 
-    #[test]
+    #[testkit::test]
     fn spans_come_bottom_up_and_left_to_right_without_overlap(shape in any_polygon()) {
         let mut spans: Vec<Span> = Vec::new();
         fill_spans(&shape, POLYGON_VIEWPORT, |span| spans.push(span));
@@ -177,7 +177,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_polygons_never_panic(shape in hostile_polygon()) {
         let small = Viewport::new(-5, -5, 5, 5);
         let yours = polygon(&shape, small);

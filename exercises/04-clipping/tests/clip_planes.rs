@@ -27,13 +27,13 @@ fn exact_t(plane: ClipPlane, a: Vec4, b: Vec4) -> f64 {
     l(a) / (l(a) - l(b))
 }
 
-#[test]
+#[testkit::test]
 fn the_six_planes_are_the_faces_of_the_cube_in_the_stated_order() {
     let expected = common::VOLUME_PLANES.map(|p| p.vector);
     assert_eq!(clip_planes().map(|p| p.vector), expected);
 }
 
-#[test]
+#[testkit::test]
 fn each_plane_has_a_unit_outward_normal_and_distance_one() {
     for plane in clip_planes() {
         let n = plane.vector.truncate();
@@ -50,7 +50,7 @@ fn each_plane_has_a_unit_outward_normal_and_distance_one() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn inside_includes_points_on_the_plane() {
     //   x:  0 (inside)   1 = w (on the plane: inside)   1.5 (outside)
     assert!(RIGHT.inside(p(0.0, 0.0, 0.0, 1.0)));
@@ -62,7 +62,7 @@ fn inside_includes_points_on_the_plane() {
     assert!(!RIGHT.inside(p(f32::NAN, 0.0, 0.0, 1.0)));
 }
 
-#[test]
+#[testkit::test]
 fn corners_of_the_cube_are_inside_all_planes_and_points_behind_the_eye_are_not() {
     let planes = clip_planes();
     for corner in 0..8 {
@@ -76,7 +76,7 @@ fn corners_of_the_cube_are_inside_all_planes_and_points_behind_the_eye_are_not()
     assert!(planes.iter().all(|pl| pl.inside(p(0.0, 0.0, 0.0, 0.0))));
 }
 
-#[test]
+#[testkit::test]
 fn intersect_is_nudged_towards_the_inside_endpoint() {
     // a = (0, 0, 0, 1): l_a = −1;  b = (3, 0, 0, 1): l_b = 2;  t = 1/3.
     //
@@ -91,7 +91,7 @@ fn intersect_is_nudged_towards_the_inside_endpoint() {
     assert!((f64::from(t) - expected).abs() < 1e-7, "b → a: t = {t}");
 }
 
-#[test]
+#[testkit::test]
 fn intersect_in_homogeneous_coordinates_and_at_the_near_plane() {
     // The near plane −z ≤ w: a = (0, 0, 0, 1) inside, b = (0, 0, −5, 3)
     // outside; l_a = −1, l_b = 2, t = 1/3, where z = −5/3 and w = 5/3.
@@ -100,7 +100,7 @@ fn intersect_in_homogeneous_coordinates_and_at_the_near_plane() {
     assert!((f64::from(t) - (1.0 / 3.0 - f64::from(CLIP_NUDGE))).abs() < 1e-7);
 }
 
-#[test]
+#[testkit::test]
 fn intersect_is_none_when_the_edge_does_not_cross() {
     let inside = [
         p(0.0, 0.0, 0.0, 1.0),
@@ -120,7 +120,7 @@ fn intersect_is_none_when_the_edge_does_not_cross() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn intersect_at_an_endpoint_on_the_plane_stays_on_the_edge() {
     // l_a = 0: a is inside (on the plane), t = 0; the nudge must not leave
     // the edge, so t stays 0. Likewise t = 1 when b is on the plane.
@@ -129,7 +129,7 @@ fn intersect_at_an_endpoint_on_the_plane_stays_on_the_edge() {
     assert_eq!(RIGHT.intersect(out, on), Some(1.0));
 }
 
-#[test]
+#[testkit::test]
 fn intersect_refuses_non_finite_input() {
     let a = p(0.0, 0.0, 0.0, 1.0);
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
@@ -148,7 +148,7 @@ fn homogeneous_point() -> impl Strategy<Value = Vec4> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn inside_is_the_sign_of_the_dot_product_and_ignores_scale(
         v in homogeneous_point(),
         k in 0usize..6,
@@ -163,7 +163,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn intersection_lies_on_the_edge_just_inside_the_plane(
         a in homogeneous_point(),
         b in homogeneous_point(),

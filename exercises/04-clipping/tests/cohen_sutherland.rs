@@ -6,7 +6,7 @@ use clipping::cohen_sutherland::{Outcode, cohen_sutherland, outcode};
 
 line_clipping_spec!(cohen_sutherland);
 
-#[test]
+#[testkit::test]
 fn outcodes_of_the_nine_regions() {
     //    1001 │ 1000 │ 1010
     //   ──────┼──────┼──────        window [0, 10]²
@@ -27,7 +27,7 @@ fn outcodes_of_the_nine_regions() {
     assert_eq!(Outcode::LEFT | Outcode::TOP, Outcode(0b1001));
 }
 
-#[test]
+#[testkit::test]
 fn points_on_the_border_are_inside() {
     let w = ten();
     for (x, y) in [
@@ -42,7 +42,7 @@ fn points_on_the_border_are_inside() {
     assert_eq!(outcode(Vec2::new(-1e-6, 10.0), w), Outcode::LEFT);
 }
 
-#[test]
+#[testkit::test]
 fn outcodes_drawn_around_a_window() {
     // One character per pixel centre: the outcode in hex, for the window
     // [4, 10] × [2, 6] (centres on its border are inside).
@@ -63,7 +63,7 @@ fn outcodes_drawn_around_a_window() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn outcode_bits_are_the_four_half_planes(
         p in testkit::strategies::point(30.0),
         window in common::window(),

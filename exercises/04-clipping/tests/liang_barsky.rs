@@ -6,7 +6,7 @@ use clipping::liang_barsky::liang_barsky;
 
 line_clipping_spec!(liang_barsky);
 
-#[test]
+#[testkit::test]
 fn endpoints_inside_are_kept_exactly() {
     // t_in = 0 and t_out = 1 must give the endpoints themselves, not
     // P₀ + 1 · Δ (which can round).

@@ -28,7 +28,7 @@ fn assert_close(got: &[ClipVertex], expected: &[ClipVertex]) {
     }
 }
 
-#[test]
+#[testkit::test]
 fn triangle_across_the_right_plane_becomes_a_quadrilateral() {
     //  y                        clipped at x = w = 1; the closing edge
     //  3 C                      C → A comes first, then A → B, B → C:
@@ -61,7 +61,7 @@ fn triangle_across_the_right_plane_becomes_a_quadrilateral() {
     assert!(got[1].position.x < 1.0 && got[2].position.x < 1.0);
 }
 
-#[test]
+#[testkit::test]
 fn the_closing_edge_is_clipped_too() {
     // Only the closing edge C → A leaves the volume; forgetting it loses
     // the two crossings on it.
@@ -86,7 +86,7 @@ fn the_closing_edge_is_clipped_too() {
     assert!(ys.iter().any(|y| (y - 1.0 / 12.0).abs() < 1e-4), "{ys:?}");
 }
 
-#[test]
+#[testkit::test]
 fn crossing_at_a_vertex_on_the_plane_is_that_vertex() {
     //  y                        A lies on x = w = 1: the edge A → B
     //  1 C                      crosses at t = 0, and the nudged t is
@@ -105,7 +105,7 @@ fn crossing_at_a_vertex_on_the_plane_is_that_vertex() {
     assert_eq!(got[3], c);
 }
 
-#[test]
+#[testkit::test]
 fn polygon_inside_comes_back_unchanged() {
     // A face of the cube lies on the far plane: on-plane vertices are inside.
     let face = [
@@ -131,7 +131,7 @@ fn polygon_inside_comes_back_unchanged() {
     assert_eq!(clip(&pentagon), pentagon);
 }
 
-#[test]
+#[testkit::test]
 fn polygon_outside_vanishes() {
     let beyond_right = [
         flat(1.5, 0.0, Rgba::WHITE),
@@ -160,7 +160,7 @@ fn polygon_outside_vanishes() {
     assert!(clip(&passing).is_empty());
 }
 
-#[test]
+#[testkit::test]
 fn triangle_covering_the_square_is_cut_to_the_square() {
     //   ●               the triangle covers [−1, 1]² entirely: what is
     //   │ ╲             left is the square itself, corners included
@@ -186,7 +186,7 @@ fn triangle_covering_the_square_is_cut_to_the_square() {
     assert!((shoelace(&got) - 4.0).abs() < 1e-4);
 }
 
-#[test]
+#[testkit::test]
 fn depth_and_colour_are_interpolated_at_the_near_plane() {
     // An edge from z/w = 0 to z = −3, w = 1 (in front of the near plane),
     // clipped at z = −w: the new vertex has z/w = −1 and the colour a third
@@ -207,7 +207,7 @@ fn depth_and_colour_are_interpolated_at_the_near_plane() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn degenerate_polygons_are_clipped_like_any_other() {
     assert_eq!(clip(&[]), vec![]);
     let point = [flat(0.5, 0.5, Rgba::WHITE)];
@@ -224,7 +224,7 @@ fn degenerate_polygons_are_clipped_like_any_other() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn bad_input_is_an_error_not_a_panic() {
     let good = flat(0.0, 0.0, Rgba::WHITE);
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
@@ -258,7 +258,7 @@ fn bad_input_is_an_error_not_a_panic() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
     // The sheet's nudge is 1e-6 of the *edge*: on edges 2e17 long it moves
     // a vertex by 2e11, so what is left may be anything down to nothing;
@@ -330,7 +330,7 @@ const PICTURE_TOLERANCE: testkit::image::Tolerance = testkit::image::Tolerance {
     mismatched_fraction: 0.002,
 };
 
-#[test]
+#[testkit::test]
 fn clipped_star_matches_the_reference_image() {
     let picture = four_panels("clipped_star.ply");
     testkit::image::assert_image_matches(
@@ -341,7 +341,7 @@ fn clipped_star_matches_the_reference_image() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn clipped_torus_matches_the_reference_image() {
     let picture = four_panels("clipped_torus.ply");
     testkit::image::assert_image_matches(
@@ -355,7 +355,7 @@ fn clipped_torus_matches_the_reference_image() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn clipped_meshes_keep_everything_inside_and_lose_what_is_outside() {
     for name in ["clipped_star.ply", "clipped_torus.ply"] {
         let mesh = scene::ply::load(scene::data::path(name)).expect("a shipped mesh");
@@ -447,14 +447,14 @@ fn star_flat_polygon() -> impl Strategy<Value = Vec<ClipVertex>> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn every_output_vertex_lies_inside_the_volume(polygon in any_polygon()) {
         for v in clip(&polygon) {
             prop_assert!(excess(v.position) <= 1e-5, "{:?} outside by {}", v, excess(v.position));
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn polygons_inside_are_unchanged(
         polygon in prop::collection::vec(
             (-1.0f32..=1.0, -1.0f32..=1.0, -1.0f32..=1.0, 0.01f32..4.0, colour())
@@ -468,7 +468,7 @@ proptest! {
         prop_assert_eq!(clip(&polygon), polygon);
     }
 
-    #[test]
+    #[testkit::test]
     fn polygons_beyond_one_plane_vanish(
         polygon in prop::collection::vec(any_vertex(), 1..10),
         k in 0usize..6,
@@ -489,7 +489,7 @@ proptest! {
         prop_assert!(clip(&moved).is_empty());
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_twice_changes_nothing(polygon in any_polygon()) {
         let once = clip(&polygon);
         let twice = clip(&once);
@@ -499,7 +499,7 @@ proptest! {
         prop_assert!(outline_distance(&once, &twice) <= 1e-4, "{:#?}\nvs\n{:#?}", once, twice);
     }
 
-    #[test]
+    #[testkit::test]
     fn new_vertices_of_one_pass_are_mixes_of_their_edge(
         polygon in any_polygon(),
         k in 0usize..6,
@@ -525,7 +525,7 @@ proptest! {
         prop_assert_eq!(kept, expected);
     }
 
-    #[test]
+    #[testkit::test]
     fn all_vertices_are_mixes_of_the_polygon(polygon in any_polygon()) {
         // Convex combinations of the input stay in its bounding box, in
         // every coordinate and every colour channel.
@@ -548,7 +548,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn convex_polygon_keeps_exactly_its_area_inside_the_square(polygon in convex_flat_polygon()) {
         let vertices: Vec<ClipVertex> = polygon.iter().map(|p| flat(p.x, p.y, Rgba::WHITE)).collect();
         let got = clip(&vertices);
@@ -557,7 +557,7 @@ proptest! {
             "area {} vs {} (by the hull of the crossings)", shoelace(&got), expected);
     }
 
-    #[test]
+    #[testkit::test]
     fn clipping_never_adds_area(polygon in star_flat_polygon()) {
         let got = clip(&polygon);
         let (before, after) = (shoelace(&polygon), shoelace(&got));

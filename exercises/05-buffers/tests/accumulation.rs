@@ -10,7 +10,7 @@ use canvas::{Canvas, Pixel, Rgba, Vec2, Vec4, Vertex};
 use common::vertex;
 use proptest::prelude::*;
 
-#[test]
+#[testkit::test]
 fn drawing_into_the_back_buffer_shows_only_after_the_swap() {
     let mut buffers = DoubleBuffer::try_new(4, 3).unwrap();
     let p = Pixel::new(1, 2);
@@ -49,7 +49,7 @@ fn close(a: Vec4, b: Vec4) -> bool {
     (a - b).abs().max_element() < 1e-6
 }
 
-#[test]
+#[testkit::test]
 fn each_operation_does_what_glaccum_says() {
     let mut canvas = two_pixels();
     let mut acc = AccumulationBuffer::try_new(2, 1).unwrap();
@@ -87,7 +87,7 @@ fn each_operation_does_what_glaccum_says() {
     assert_eq!(acc.get(Pixel::new(2, 0)), None);
 }
 
-#[test]
+#[testkit::test]
 fn bad_values_and_sizes_are_errors_that_change_nothing() {
     let mut canvas = two_pixels();
     let mut acc = AccumulationBuffer::try_new(2, 1).unwrap();
@@ -125,7 +125,7 @@ fn bad_values_and_sizes_are_errors_that_change_nothing() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn accumulating_one_frame_gives_that_frame(levels in prop::collection::vec(any::<[u8; 4]>(), 12)) {
         let mut frame = Canvas::new(4, 3);
         for (i, &c) in levels.iter().enumerate() {
@@ -141,7 +141,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn n_equal_frames_average_to_that_frame(levels in prop::collection::vec(any::<[u8; 4]>(), 6), n in 1usize..10) {
         let mut frame = Canvas::new(3, 2);
         for (i, &c) in levels.iter().enumerate() {
@@ -181,7 +181,7 @@ fn inside(t: &[Vertex; 3], q: Vec2) -> bool {
     s.iter().all(|&v| v > 0.0) || s.iter().all(|&v| v < 0.0)
 }
 
-#[test]
+#[testkit::test]
 fn one_centred_sample_gives_the_aliased_frame() {
     let triangles = [[
         vertex(1.3, 0.7, 0.5, Rgba::WHITE),
@@ -194,7 +194,7 @@ fn one_centred_sample_gives_the_aliased_frame() {
     assert_eq!(out, aliased);
 }
 
-#[test]
+#[testkit::test]
 fn edge_pixels_get_the_fraction_of_samples_inside() {
     // The given table: the Red Book's j8, moved around the pixel centre.
     let mut xs: Vec<f32> = JITTER_8.iter().map(|j| (j.x + 0.5) * 16.0).collect();
@@ -233,7 +233,7 @@ fn edge_pixels_get_the_fraction_of_samples_inside() {
     assert!(partial > 10, "the edges should be antialiased");
 }
 
-#[test]
+#[testkit::test]
 fn no_jitter_is_an_error() {
     let result = jittered_antialias(4, 4, &[], |_, _| {});
     assert_eq!(result.err(), Some(AccumError::NoJitter));
@@ -261,7 +261,7 @@ fn antialiased_scene() -> Canvas {
     jittered_antialias(64, 48, &JITTER_8, render(&triangles)).unwrap()
 }
 
-#[test]
+#[testkit::test]
 fn antialiased_triangles_match_the_reference_image() {
     testkit::image::assert_image_matches(
         "accumulation_antialiased",

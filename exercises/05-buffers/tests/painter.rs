@@ -15,7 +15,7 @@ fn flat(x: f32, y: f32, size: f32, depth: f32, colour: Rgba) -> [Vertex; 3] {
     ]
 }
 
-#[test]
+#[testkit::test]
 fn the_key_is_the_farthest_vertex() {
     let w = Rgba::WHITE;
     let t = [
@@ -31,7 +31,7 @@ fn the_key_is_the_farthest_vertex() {
     assert_eq!(farthest_depth(&nan), None);
 }
 
-#[test]
+#[testkit::test]
 fn order_is_farthest_first_ties_stable_and_bad_depths_left_out() {
     let w = Rgba::WHITE;
     let triangles = [
@@ -63,7 +63,7 @@ fn layered_scene() -> impl Strategy<Value = Vec<[Vertex; 3]>> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn layered_triangles_in_any_order_give_the_correct_picture(
         (scene, order) in layered_scene().prop_flat_map(|s| {
             let n = s.len();
@@ -86,7 +86,7 @@ fn painter_scene() -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn interpenetrating_triangles_defeat_the_painter() {
     // Both triangles reach depth 0.8, so the sort key ties and the input
     // order stays: red first, then blue over all of red.
@@ -124,7 +124,7 @@ fn interpenetrating_triangles_defeat_the_painter() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn interpenetrating_triangles_match_the_reference_image() {
     testkit::image::assert_image_matches(
         "painter_interpenetrating",
@@ -137,7 +137,7 @@ fn interpenetrating_triangles_match_the_reference_image() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn paint_leaves_the_depth_plane_alone_and_skips_bad_triangles() {
     let mut canvas = Canvas::new(8, 8);
     let mut bad = flat(0.0, 0.0, 6.0, 0.5, Rgba::RED);

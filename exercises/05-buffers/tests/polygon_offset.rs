@@ -46,7 +46,7 @@ fn drawing(offset: Option<PolygonOffset>) -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn offset_is_m_times_factor_plus_r_times_units() {
     let o = PolygonOffset {
         factor: 2.0,
@@ -62,7 +62,7 @@ fn offset_is_m_times_factor_plus_r_times_units() {
     assert_eq!(DEPTH_RESOLUTION, 2.0f32.powi(-24));
 }
 
-#[test]
+#[testkit::test]
 fn slope_is_the_larger_partial_derivative() {
     // z = 0.01·x + 0.03·y + 0.1 → m = 0.03
     let z = |x: f32, y: f32| 0.01 * x + 0.03 * y + 0.1;
@@ -92,7 +92,7 @@ fn slope_is_the_larger_partial_derivative() {
     assert!(m > 0.055 && m < 0.07, "m = {m}");
 }
 
-#[test]
+#[testkit::test]
 fn degenerate_and_non_finite_triangles_have_no_slope() {
     let line = [
         grey(0.0, 0.0, 0.1),
@@ -111,7 +111,7 @@ fn degenerate_and_non_finite_triangles_have_no_slope() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn slope_matches_the_plane_and_ignores_vertex_order(
         a in -0.05f32..0.05, b in -0.05f32..0.05, c in 0.3f32..0.5,
         p in prop::array::uniform6(-10i32..10),
@@ -136,7 +136,7 @@ proptest! {
 /// below-left, so wherever the line's pixel centre is inside, the fill is
 /// nearer than the line and hides it: every other pixel or so of that edge
 /// is missing. On the other two edges the inside is deeper and the line wins.
-#[test]
+#[testkit::test]
 fn without_offset_the_outline_is_stitched() {
     let canvas = drawing(None);
     let outline = outline_pixels(&canvas, tilted());
@@ -149,7 +149,7 @@ fn without_offset_the_outline_is_stitched() {
     testkit::assert_raster_snapshot!("hidden_line_without_offset", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn with_the_slides_offset_the_outline_is_whole() {
     let canvas = drawing(Some(PolygonOffset::SLIDES));
     let outline = outline_pixels(&canvas, tilted());
@@ -161,7 +161,7 @@ fn with_the_slides_offset_the_outline_is_whole() {
     testkit::assert_raster_snapshot!("hidden_line_with_offset", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn offset_moves_the_fill_back_by_o() {
     let mut canvas = Canvas::new(20, 12);
     hidden_line(
@@ -191,7 +191,7 @@ fn offset_moves_the_fill_back_by_o() {
     assert!(checked > 20);
 }
 
-#[test]
+#[testkit::test]
 fn fill_depth_pulled_past_zero_is_clamped() {
     // A pull towards the viewer of o = 2⁻²⁴ · (−2²⁵) = −2, more than any
     // depth: z + o is clamped to 0, as OpenGL clamps it to [0, 1].
@@ -209,7 +209,7 @@ fn fill_depth_pulled_past_zero_is_clamped() {
     assert!(checked > 20);
 }
 
-#[test]
+#[testkit::test]
 fn edges_behind_another_triangle_stay_hidden() {
     // A near, flat triangle (depth 0.1) in front of the tilted one: the
     // offset must not pull the back triangle's edges through it.
@@ -253,7 +253,7 @@ fn edges_behind_another_triangle_stay_hidden() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn degenerate_triangles_are_outlined_only_and_hostile_ones_ignored() {
     let mut canvas = Canvas::new(8, 8);
     let line = [

@@ -27,7 +27,7 @@ fn close(a: f64, b: f64, tolerance: f64) -> bool {
     (a - b).abs() <= tolerance * (1.0 + a.abs().max(b.abs()))
 }
 
-#[test]
+#[testkit::test]
 fn span_below_the_middle_vertex_has_vertex_1_at_the_bottom() {
     // ys = 1 < 2: vertex 1 = lo (0, 0), 2 = mid (8, 2), 3 = hi (2, 6).
     // a at (y1 − ys)/(y1 − y2) = 1/2 of lo–mid: (4, 1); b at 1/6 of lo–hi: (1/3, 1).
@@ -46,7 +46,7 @@ fn span_below_the_middle_vertex_has_vertex_1_at_the_bottom() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
     // ys = 4 ≥ 2: vertex 1 = hi (2, 6), 2 = mid (8, 2), 3 = lo (0, 0).
     // a at 1/2 of hi–mid: (5, 4); b at 1/3 of hi–lo: (4/3, 4).
@@ -67,7 +67,7 @@ fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
     assert!(close(at_mid.a.x, 8.0, 1e-15) && close(at_mid.a.y, plane_z(8.0, 2.0), 1e-15));
 }
 
-#[test]
+#[testkit::test]
 fn vertex_order_does_not_change_the_span() {
     let [p, q, r] = known_triangle();
     for triangle in [
@@ -82,7 +82,7 @@ fn vertex_order_does_not_change_the_span() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn depth_in_span_follows_the_zp_formula() {
     let span = SpanEnds {
         y: 0.0,
@@ -111,7 +111,7 @@ fn depth_in_span_follows_the_zp_formula() {
     assert_eq!(depth_in_span(&edge_on, 4.0), 0.25, "z_a for zero width");
 }
 
-#[test]
+#[testkit::test]
 fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
     let flat_top = [
         DVec3::new(0.0, 0.0, 1.0),
@@ -127,7 +127,7 @@ fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
     assert!(bottom.a.is_finite() && bottom.b.is_finite(), "{bottom:?}");
 }
 
-#[test]
+#[testkit::test]
 fn scanlines_outside_and_bad_triangles_have_no_span() {
     assert_eq!(span_at(known_triangle(), -0.5), None);
     assert_eq!(span_at(known_triangle(), 6.5), None);
@@ -146,7 +146,7 @@ fn scanlines_outside_and_bad_triangles_have_no_span() {
     assert_eq!(span_at(inf, 1.0), None);
 }
 
-#[test]
+#[testkit::test]
 fn plane_of_the_known_triangle() {
     let plane = DepthPlane::try_from_triangle(known_triangle()).unwrap();
     assert!(close(plane.depth_at(DVec2::new(3.0, 1.0)), 10.0, 1e-15));
@@ -166,7 +166,7 @@ fn plane_of_the_known_triangle() {
     assert_eq!(incremental_depths(&plane, 1, 1, 0), Vec::<f64>::new());
 }
 
-#[test]
+#[testkit::test]
 fn triangles_without_a_depth_plane_are_errors() {
     let edge_on = [
         DVec3::ZERO,
@@ -197,7 +197,7 @@ fn triangle() -> impl Strategy<Value = [DVec3; 3]> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn interpolation_and_the_plane_equation_agree(triangle in triangle(), row in -20i32..=20) {
         let plane = DepthPlane::try_from_triangle(triangle).unwrap();
         let Some(span) = span_at(triangle, f64::from(row)) else {
@@ -226,7 +226,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_never_panics(
         v in prop::array::uniform9(prop_oneof![Just(f64::NAN), Just(f64::INFINITY), Just(1e300), Just(-1e300), -5.0f64..5.0]),
         ys in prop_oneof![Just(f64::NAN), -5.0f64..5.0],

@@ -10,7 +10,7 @@ use canvas::{Canvas, Pixel, Rgba, Vertex};
 use common::{fragment, fragments_of, vertex};
 use proptest::prelude::*;
 
-#[test]
+#[testkit::test]
 fn operations_on_the_edge_values() {
     use StencilOp::*;
     // Stored values 0, 1, 254, 255 with reference 7.
@@ -31,7 +31,7 @@ fn operations_on_the_edge_values() {
     assert_eq!(StencilOp::default(), Keep);
 }
 
-#[test]
+#[testkit::test]
 fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
     use StencilFunc::*;
     // ref 0xA1, stored 0xAF: 0xA1 < 0xAF in full, equal in the high nibble.
@@ -60,7 +60,7 @@ fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
     assert_eq!(StencilFunc::default(), Always);
 }
 
-#[test]
+#[testkit::test]
 fn write_mask_keeps_the_bits_outside_it() {
     assert_eq!(
         write_masked(0b1010_1010, 0b0101_0101, 0b0000_1111),
@@ -73,7 +73,7 @@ fn write_mask_keeps_the_bits_outside_it() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn incr_and_decr_saturate_the_wrap_variants_wrap(v in any::<u8>(), r in any::<u8>()) {
         use StencilOp::*;
         let (incr, incr_wrap) = (Incr.apply(v, r), IncrWrap.apply(v, r));
@@ -98,7 +98,7 @@ proptest! {
         prop_assert_eq!(Zero.apply(v, r), 0);
     }
 
-    #[test]
+    #[testkit::test]
     fn the_test_sees_only_the_masked_bits(r in any::<u8>(), s in any::<u8>(), mask in any::<u8>(), noise in any::<u8>()) {
         for f in StencilFunc::ALL {
             // Changing bits outside the mask changes nothing.
@@ -118,7 +118,7 @@ proptest! {
         prop_assert!(StencilFunc::Equal.passes(r, s, 0) && !StencilFunc::Less.passes(r, s, 0));
     }
 
-    #[test]
+    #[testkit::test]
     fn write_mask_takes_masked_bits_from_new_and_the_rest_from_old(old in any::<u8>(), new in any::<u8>(), mask in any::<u8>()) {
         let w = write_masked(old, new, mask);
         for bit in 0..8 {
@@ -142,7 +142,7 @@ fn telling_state(func: StencilFunc) -> StencilState {
     }
 }
 
-#[test]
+#[testkit::test]
 fn each_outcome_applies_its_own_operation() {
     let p = Pixel::new(0, 0);
     let setup = || {
@@ -224,7 +224,7 @@ fn each_outcome_applies_its_own_operation() {
     assert_eq!(c, setup());
 }
 
-#[test]
+#[testkit::test]
 fn operations_write_through_the_write_mask() {
     let p = Pixel::new(0, 0);
     let mut canvas = Canvas::new(1, 1);
@@ -278,7 +278,7 @@ fn masked_rectangle() -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn stencil_equal_masks_a_full_screen_rectangle_to_a_triangle() {
     let canvas = masked_rectangle();
     let triangle: Vec<Pixel> = fragments_of(&canvas, [at(1.0, 1.0), at(14.0, 3.0), at(5.0, 9.0)])
@@ -293,7 +293,7 @@ fn stencil_equal_masks_a_full_screen_rectangle_to_a_triangle() {
     testkit::assert_raster_snapshot!("masked_rectangle", canvas);
 }
 
-#[test]
+#[testkit::test]
 fn incr_counts_the_depth_complexity() {
     // Overlapping triangles with INCR on every fragment: the stencil holds
     // how many triangles cover each pixel.
@@ -325,7 +325,7 @@ fn incr_counts_the_depth_complexity() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn incr_saturates_and_incr_wrap_wraps_in_the_buffer() {
     let p = Pixel::new(0, 0);
     for (op, after) in [(StencilOp::Incr, 255), (StencilOp::IncrWrap, 4)] {

@@ -12,7 +12,7 @@ use proptest::prelude::*;
 const RED: Rgba = Rgba::RED;
 const BLUE: Rgba = Rgba::BLUE;
 
-#[test]
+#[testkit::test]
 fn depth_functions_compare_incoming_with_stored() {
     use DepthFunc::*;
     // incoming 0.25, 0.5, 0.75 against stored 0.5: (<, =, >)
@@ -39,7 +39,7 @@ fn depth_functions_compare_incoming_with_stored() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn less_and_lequal_differ_only_on_ties(a in 0.0f32..=1.0, b in 0.0f32..=1.0, tie in any::<bool>()) {
         let b = if tie { a } else { b };
         let differ = DepthFunc::Less.passes(a, b) != DepthFunc::LEqual.passes(a, b);
@@ -48,7 +48,7 @@ proptest! {
         prop_assert_eq!(differ, a == b, "GREATER vs GEQUAL for {} and {}", a, b);
     }
 
-    #[test]
+    #[testkit::test]
     fn depth_functions_are_related_as_their_operators(a in 0.0f32..=1.0, b in 0.0f32..=1.0, tie in any::<bool>()) {
         use DepthFunc::*;
         let b = if tie { a } else { b };
@@ -62,7 +62,7 @@ proptest! {
         prop_assert_eq!(p(Less), Greater.passes(b, a));
     }
 
-    #[test]
+    #[testkit::test]
     fn draw_order_does_not_change_the_image_for_distinct_depths(
         pixels in prop::collection::vec((0..6i32, 0..5i32), 1..40),
         order in Just((0..40usize).collect::<Vec<_>>()).prop_shuffle(),
@@ -154,7 +154,7 @@ fn colour_rows(canvas: &Canvas) -> Vec<String> {
         .collect()
 }
 
-#[test]
+#[testkit::test]
 fn seed_example_keeps_the_nearer_depth_per_pixel() {
     let expected_depths = [
         "5 5 5 5 5 5 5 ∞",
@@ -171,7 +171,7 @@ fn seed_example_keeps_the_nearer_depth_per_pixel() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn seed_example_less_and_lequal_differ_on_the_ties_only() {
     // The two ties (5 against 5), at (0, 3) and (1, 2), keep red with LESS
     // and go to blue with LEQUAL, the seed pseudo-code's `pz <= readZ`.
@@ -191,7 +191,7 @@ fn seed_example_less_and_lequal_differ_on_the_ties_only() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn never_draws_nothing_and_always_draws_the_last() {
     for (func, expected) in [(DepthFunc::Never, Rgba::BLACK), (DepthFunc::Always, BLUE)] {
         let mut canvas = Canvas::new(2, 1);
@@ -202,7 +202,7 @@ fn never_draws_nothing_and_always_draws_the_last() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn clear_sets_colour_and_clamped_depth_everywhere() {
     let mut canvas = Canvas::new(3, 2);
     canvas.set_depth(Pixel::new(1, 1), 0.25);
@@ -231,7 +231,7 @@ fn clear_sets_colour_and_clamped_depth_everywhere() {
     assert_eq!(canvas, before, "a failed clear changed the canvas");
 }
 
-#[test]
+#[testkit::test]
 fn depth_range_maps_zero_to_near_and_one_to_far() {
     let range = DepthRange::try_new(0.25, 0.75).unwrap();
     assert_eq!((range.map(0.0), range.map(1.0)), (0.25, 0.75));
@@ -249,7 +249,7 @@ fn depth_range_maps_zero_to_near_and_one_to_far() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn depth_range_is_applied_before_the_test_and_the_write() {
     let mut canvas = Canvas::new(1, 1);
     canvas.set_depth(Pixel::new(0, 0), 0.6);
@@ -268,7 +268,7 @@ fn depth_range_is_applied_before_the_test_and_the_write() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn depth_mask_off_writes_colour_but_not_depth() {
     let mut canvas = Canvas::new(1, 1);
     let state = DepthState {
@@ -282,7 +282,7 @@ fn depth_mask_off_writes_colour_but_not_depth() {
     assert!(depth_test(&mut canvas, fragment(0, 0, 0.9, BLUE), &state));
 }
 
-#[test]
+#[testkit::test]
 fn bad_fragments_are_discarded() {
     let mut canvas = Canvas::new(2, 2);
     let always = DepthState::with_func(DepthFunc::Always);
@@ -316,7 +316,7 @@ fn zbuffer_scene() -> Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn interpenetrating_triangles_match_the_nearest_fragment_picture() {
     let mut expected = nearest_fragment_picture(64, 64, &interpenetrating_triangles());
     // The oracle draws on black; paint its background like the scene's.
@@ -333,7 +333,7 @@ fn interpenetrating_triangles_match_the_nearest_fragment_picture() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn interpenetrating_triangles_match_the_reference_image() {
     testkit::image::assert_image_matches(
         "zbuffer_interpenetrating",

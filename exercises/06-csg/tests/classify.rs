@@ -17,7 +17,7 @@ fn unit_box() -> Primitive {
     }
 }
 
-#[test]
+#[testkit::test]
 fn box_interior_faces_edges_and_outside() {
     let b = unit_box();
     assert_eq!(classify_point(&b, Vec3::ZERO), Class::Inside);
@@ -50,7 +50,7 @@ fn box_interior_faces_edges_and_outside() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn sphere_centre_surface_and_outside() {
     let s = Primitive::Sphere {
         centre: Vec3::new(1.0, 2.0, 3.0),
@@ -67,7 +67,7 @@ fn sphere_centre_surface_and_outside() {
     assert_eq!(classify_point(&s, Vec3::new(2.9, 3.9, 4.9)), Class::Outside);
 }
 
-#[test]
+#[testkit::test]
 fn cylinder_axis_caps_rim_and_outside_for_every_axis() {
     for (axis, e) in [(Axis::X, Vec3::X), (Axis::Y, Vec3::Y), (Axis::Z, Vec3::Z)] {
         let c = Vec3::new(0.5, -1.0, 2.0);
@@ -114,7 +114,7 @@ fn cylinder_axis_caps_rim_and_outside_for_every_axis() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn nan_points_and_broken_primitives_are_outside_everything() {
     let p = Vec3::new(f32::NAN, 0.0, 0.0);
     assert_eq!(classify_point(&unit_box(), p), Class::Outside);
@@ -153,7 +153,7 @@ fn two_boxes(tree: Csg) -> Scene {
     Scene::new(vec![a, b], tree).expect("valid")
 }
 
-#[test]
+#[testkit::test]
 fn the_three_rules_on_two_boxes() {
     //   x:  0 ─── 1 ─── 2 ─── 3
     //       [ A         ]
@@ -181,7 +181,7 @@ fn the_three_rules_on_two_boxes() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn slice_through_the_example_at_z_zero() {
     // (cube ∩ sphere) − three cylinders, cut by the plane z = 0 and sampled
     // on a 25 × 25 grid over [−1.5, 1.5]² (step 1/8): the square [−1, 1]²
@@ -209,13 +209,13 @@ fn slice_through_the_example_at_z_zero() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn primitive_classes_match_the_definition(prim in primitive(), p in point()) {
         let class = classify_point(&prim, p);
         prop_assert_eq!(class != Class::Outside, in_primitive(&prim, p), "{:?} at {:?}", prim, p);
     }
 
-    #[test]
+    #[testkit::test]
     fn points_on_a_sphere_along_the_axes_are_on(
         c in point(), r in 1u8..8, axis in 0usize..3, sign in prop::bool::ANY
     ) {
@@ -229,7 +229,7 @@ proptest! {
         prop_assert_eq!(classify_point(&s, c + 1.5 * r * e), Class::Outside);
     }
 
-    #[test]
+    #[testkit::test]
     fn tree_membership_matches_the_rules(
         primitives in prop::collection::vec(primitive(), 4),
         tree in tree(4, 7),

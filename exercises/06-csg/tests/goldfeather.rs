@@ -29,7 +29,7 @@ fn rendered(model: &Model, camera: Camera) -> (Framebuffer, u64) {
     (frame, stats.parity_tests)
 }
 
-#[test]
+#[testkit::test]
 fn a_single_primitive_shows_its_front_face() {
     let camera = straight_camera();
     let ball = sphere(Vec3::ZERO, 1.6);
@@ -54,7 +54,7 @@ fn a_single_primitive_shows_its_front_face() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_dent_shows_the_back_face_of_the_subtracted_sphere() {
     //   viewer (t = −∞) ──▶  z decreasing
     //         B: z ∈ [1, 3]      A: z ∈ [−2, 2]
@@ -94,7 +94,7 @@ fn a_dent_shows_the_back_face_of_the_subtracted_sphere() {
     assert_eq!(frame.depth(side), Some(-(4.0f32 - 2.25).sqrt()));
 }
 
-#[test]
+#[testkit::test]
 fn the_lens_of_two_spheres_shows_both_front_faces() {
     // The seed says Y ∩ X need not be drawn after X ∩ Y when Y is not a
     // complement; but the lens is bounded by both spheres' front faces.
@@ -121,7 +121,7 @@ fn the_lens_of_two_spheres_shows_both_front_faces() {
     assert_frames_equal(&frame, &truth(&scene, camera), "the lens");
 }
 
-#[test]
+#[testkit::test]
 fn parity_tests_are_m_times_m_minus_one_per_product() {
     let primitives: Vec<Primitive> = (0..5)
         .map(|k| sphere(Vec3::new(k as f32 * 0.3, 0.0, 0.0), 1.0))
@@ -143,7 +143,7 @@ fn parity_tests_are_m_times_m_minus_one_per_product() {
     assert_eq!(tests, 28);
 }
 
-#[test]
+#[testkit::test]
 fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_less() {
     let camera = small_camera();
     // What a model refuses: an empty product, a product that starts with a
@@ -187,7 +187,7 @@ fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_les
     assert_frames_equal(&frame, &truth(&scene, camera), "two renderings merged");
 }
 
-#[test]
+#[testkit::test]
 fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     let scene = example_scene();
     let camera = example_camera();
@@ -220,7 +220,7 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 
-    #[test]
+    #[testkit::test]
     fn random_scenes_match_the_ray_caster(scene in scene(5)) {
         let camera = small_camera();
         let model = dnf_model(&scene);

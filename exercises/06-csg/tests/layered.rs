@@ -56,7 +56,7 @@ fn front_camera(width_units: usize) -> Camera {
     Camera::new(w, 16, Vec3::ZERO, 0.0, 0.0, 4.0).expect("valid")
 }
 
-#[test]
+#[testkit::test]
 fn depth_complexity_counts_entry_faces_per_pixel() {
     let scene = example_scene();
     let camera = example_camera();
@@ -77,7 +77,7 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_drilled_plate_needs_two_layers_however_many_holes() {
     for holes in [1, 3, 6] {
         let scene = drilled_plate(holes);
@@ -101,7 +101,7 @@ fn a_drilled_plate_needs_two_layers_however_many_holes() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn skewered_balls_need_one_layer_per_ball() {
     let scene = skewered_balls(5);
     let camera = front_camera(1);
@@ -113,7 +113,7 @@ fn skewered_balls_need_one_layer_per_ball() {
     assert_frames_equal(&frame, &truth(&scene, camera), "skewered balls");
 }
 
-#[test]
+#[testkit::test]
 fn a_product_of_one_primitive_is_one_layer_with_one_parity_test() {
     // The layer holds the primitive's own front face, tested against the
     // primitive itself: it must count as inside (the seed's §6.4).
@@ -126,7 +126,7 @@ fn a_product_of_one_primitive_is_one_layer_with_one_parity_test() {
     assert_frames_equal(&frame, &truth(&scene, camera), "one sphere");
 }
 
-#[test]
+#[testkit::test]
 fn parity_tests_of_plain_and_layered_goldfeather() {
     // The sheet's table: plain Goldfeather needs m·(m − 1) parity tests per
     // product of m literals; layered needs k·m for depth complexity k.
@@ -155,7 +155,7 @@ fn parity_tests_of_plain_and_layered_goldfeather() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     let scene = example_scene();
     let camera = example_camera();
@@ -189,7 +189,7 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn products_are_rendered_one_after_the_other() {
     // Two separate products: the union of a dented and a plain ball.
     let camera = small_camera();
@@ -219,7 +219,7 @@ fn products_are_rendered_one_after_the_other() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 
-    #[test]
+    #[testkit::test]
     fn random_scenes_match_the_ray_caster(scene in scene(5)) {
         let camera = small_camera();
         let model = dnf_model(&scene);

@@ -22,7 +22,7 @@ fn d(x: Csg, y: Csg) -> Csg {
 
 /// Each rule once, on primitives X = 0, Y = 1, Z = 2: the rule's number
 /// and right-hand side, written down from the seed's table.
-#[test]
+#[testkit::test]
 fn each_rule_rewrites_as_the_table_says() {
     let (x, y, z) = (p(0), p(1), p(2));
     let cases = [
@@ -79,7 +79,7 @@ fn each_rule_rewrites_as_the_table_says() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn the_seeds_example_needs_rule_one_twice_at_the_root() {
     // (C ∩ S) − (X ∪ (Y ∪ Z)) → ((C ∩ S) − X) − (Y ∪ Z) → (((C ∩ S) − X) − Y) − Z
     let tree = common::example_tree();
@@ -96,7 +96,7 @@ fn the_seeds_example_needs_rule_one_twice_at_the_root() {
     assert_eq!(products(&n.tree), Ok(vec![expected]));
 }
 
-#[test]
+#[testkit::test]
 fn the_first_matching_rule_wins() {
     // X − (Y ∪ Z) with X a union matches rules 1 and 8: rule 1 first.
     //   (A ∪ B) − (Y ∪ Z)
@@ -109,7 +109,7 @@ fn the_first_matching_rule_wins() {
     assert_eq!(n.tree, u(d(d(p(0), p(2)), p(3)), d(d(p(1), p(2)), p(3))));
 }
 
-#[test]
+#[testkit::test]
 fn a_chain_with_a_difference_inside() {
     // A ∩ (B − (C ∩ D)):
     //   6: (A ∩ B) − (C ∩ D)
@@ -135,7 +135,7 @@ fn a_chain_with_a_difference_inside() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn the_procedure_stops_once_the_right_operand_is_a_primitive() {
     // (X ∩ (Y − Z)) ∩ W: at the root no rule matches (W is a primitive, the
     // left operand an ∩); in the left subtree rule 6 gives (X ∩ Y) − Z.
@@ -149,7 +149,7 @@ fn the_procedure_stops_once_the_right_operand_is_a_primitive() {
     assert_eq!(n.tree, i(d(i(p(0), p(1)), p(2)), p(3)));
 }
 
-#[test]
+#[testkit::test]
 fn primitives_and_normal_trees_are_left_alone() {
     for tree in [
         p(3),
@@ -163,7 +163,7 @@ fn primitives_and_normal_trees_are_left_alone() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn products_of_trees_not_in_normal_form_are_refused() {
     for tree in [
         d(p(0), u(p(1), p(2))),
@@ -197,7 +197,7 @@ fn union_terms(tree: &Csg) -> Vec<Csg> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn normalized_trees_are_sums_of_products_with_primitives_on_the_right(tree in tree(5, 8)) {
         let n = normalize(&tree);
         prop_assert!(is_normal(&n.tree), "{} normalized to {}", tree, n.tree);
@@ -209,7 +209,7 @@ proptest! {
         prop_assert_eq!(rebuilt, union_terms(&n.tree));
     }
 
-    #[test]
+    #[testkit::test]
     fn normalization_preserves_membership(
         primitives in prop::collection::vec(primitive(), 5),
         tree in tree(5, 8),
@@ -224,7 +224,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn normalization_keeps_the_leaves(tree in tree(6, 8)) {
         // Rules only copy and move subtrees: every leaf survives, no new one
         // appears.

@@ -36,7 +36,7 @@ fn three_spheres(products: Vec<Product>) -> Model {
     .expect("valid")
 }
 
-#[test]
+#[testkit::test]
 fn disjoint_bounds_empty_a_product() {
     let model = three_spheres(vec![product(&[A, B]), product(&[A, C])]);
     assert_eq!(
@@ -46,7 +46,7 @@ fn disjoint_bounds_empty_a_product() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn subtracting_something_elsewhere_leaves_the_product_whole() {
     // The seed's table says A − B = ∅ here; it is A.
     let model = three_spheres(vec![product(&[A, NOT_B]), product(&[A, NOT_C])]);
@@ -57,7 +57,7 @@ fn subtracting_something_elsewhere_leaves_the_product_whole() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
     // D at x = 3 overlaps both A (bound up to 1.5) and B (from 3.5) — its
     // bound is [1.5, 4.5] — but A ∩ D's bound is the single plane x = 1.5,
@@ -86,7 +86,7 @@ fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn order_is_kept_and_nothing_else_changes() {
     let products = vec![product(&[C, A, NOT_B]), product(&[A, NOT_C]), product(&[B])];
     let model = three_spheres(products);
@@ -132,7 +132,7 @@ fn random_model() -> impl Strategy<Value = Model> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn pruning_never_changes_membership(model in random_model(), points in prop::collection::vec(point(), 32)) {
         let pruned = prune(&model);
         prop_assert!(Model::new(model.primitives().to_vec(), pruned.clone()).is_ok(), "{:?}", pruned);
@@ -145,7 +145,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn pruning_only_removes(model in random_model()) {
         // Every pruned product is one of the original products with some
         // complements left out, in the original order.

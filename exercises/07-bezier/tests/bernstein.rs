@@ -8,7 +8,7 @@ use bezier::{BezierError, MAX_DEGREE};
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
-#[test]
+#[testkit::test]
 fn binomial_matches_pascals_triangle_up_to_the_degree_limit() {
     for n in 0..=MAX_DEGREE {
         for i in 0..=n {
@@ -21,7 +21,7 @@ fn binomial_matches_pascals_triangle_up_to_the_degree_limit() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn cubic_basis_is_the_seeds_weight_functions() {
     // Seed eq. (2): (1 − t)³, 3t(1 − t)², 3t²(1 − t), t³.
     for k in 0..=16 {
@@ -32,7 +32,7 @@ fn cubic_basis_is_the_seeds_weight_functions() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn known_values_and_the_ends() {
     assert_eq!(bernstein(1, 2, 0.5), Ok(0.5));
     assert_eq!(bernstein(0, 3, 0.5), Ok(0.125));
@@ -48,7 +48,7 @@ fn known_values_and_the_ends() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn the_seeds_one_minus_i_would_be_wrong() {
     // Eq. (3) as printed, C(n,i) tⁱ (1 − i)ⁿ⁻ⁱ, gives B_{0,2}(0.5) = 1 and
     // B_{1,2}(0.5) = 0; the basis with (1 − t) gives ¼ and ½.
@@ -56,7 +56,7 @@ fn the_seeds_one_minus_i_would_be_wrong() {
     assert_eq!(bernstein(1, 2, 0.5), Ok(0.5));
 }
 
-#[test]
+#[testkit::test]
 fn quadratic_and_cubic_curves_follow_seed_equations_1_and_2() {
     let p = [
         DVec2::new(0.0, 0.0),
@@ -84,7 +84,7 @@ fn quadratic_and_cubic_curves_follow_seed_equations_1_and_2() {
     assert_eq!(bernstein_curve(&p, 1.0), Ok(p[3]));
 }
 
-#[test]
+#[testkit::test]
 fn scalar_curves_work_too() {
     // Σ B_{i,n}(t) · i/n = t: the Bernstein form reproduces linear functions.
     let points: Vec<f64> = (0..=7).map(|i| f64::from(i) / 7.0).collect();
@@ -95,7 +95,7 @@ fn scalar_curves_work_too() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn invalid_input_is_a_clear_error() {
     let too_high = MAX_DEGREE + 1;
     assert_eq!(
@@ -143,7 +143,7 @@ fn invalid_input_is_a_clear_error() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn basis_is_non_negative_and_sums_to_one(n in 0..=MAX_DEGREE, t in 0.0..=1.0_f64) {
         let basis = bernstein_basis(n, t).unwrap();
         prop_assert_eq!(basis.len(), n + 1);
@@ -152,7 +152,7 @@ proptest! {
         prop_assert!((sum - 1.0).abs() < 1e-12, "sum {}", sum);
     }
 
-    #[test]
+    #[testkit::test]
     fn bernstein_matches_its_definition(n in 0..=MAX_DEGREE, i in 0..=MAX_DEGREE, t in 0.0..=1.0_f64) {
         prop_assume!(i <= n);
         let b = bernstein(i, n, t).unwrap();
@@ -160,7 +160,7 @@ proptest! {
         prop_assert!((b - expected).abs() <= 1e-12 * expected.max(1e-300).max(1.0), "{} vs {}", b, expected);
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_points_lie_in_the_convex_hull(
         points in prop::collection::vec((-100.0..100.0_f64, -100.0..100.0_f64), 1..12),
         t in 0.0..=1.0_f64,

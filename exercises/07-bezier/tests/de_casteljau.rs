@@ -20,7 +20,7 @@ fn p2(x: f64, y: f64) -> DVec2 {
 ///    /  /  ●  \  \
 ///   P0           P3
 /// ```
-#[test]
+#[testkit::test]
 fn seed_figure_6_at_one_half() {
     let p = [p2(0.0, 0.0), p2(1.0, 2.0), p2(3.0, 2.0), p2(4.0, 0.0)];
     let expected = (p[0] + p[1] * 3.0 + p[2] * 3.0 + p[3]) / 8.0;
@@ -34,7 +34,7 @@ fn seed_figure_6_at_one_half() {
     assert_eq!(cp.derivative, p2(4.5, 0.0));
 }
 
-#[test]
+#[testkit::test]
 fn ends_and_end_tangents_are_exact() {
     let p = [
         p2(1.0, 1.0),
@@ -57,7 +57,7 @@ fn ends_and_end_tangents_are_exact() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn degree_zero_and_one() {
     let single = [p2(3.0, 4.0)];
     assert_eq!(de_casteljau(&single, 0.7), Ok(single[0]));
@@ -76,7 +76,7 @@ fn degree_zero_and_one() {
     assert_eq!(s.right, vec![p2(1.0, 2.0), p2(4.0, 8.0)]);
 }
 
-#[test]
+#[testkit::test]
 fn split_of_a_quadratic_at_one_half() {
     // ```text
     //        P1 (2, 4)
@@ -89,7 +89,7 @@ fn split_of_a_quadratic_at_one_half() {
     assert_eq!(s.right, vec![p2(2.0, 2.0), p2(3.0, 2.0), p2(4.0, 0.0)]);
 }
 
-#[test]
+#[testkit::test]
 fn high_degree_works_and_too_high_is_an_error() {
     let top: Vec<f64> = (0..=MAX_DEGREE).map(|i| i as f64).collect();
     // Σ B_{i,n}(t) · i = n t: linear precision at the highest degree.
@@ -106,7 +106,7 @@ fn high_degree_works_and_too_high_is_an_error() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn invalid_input_is_a_clear_error() {
     let p = [p2(0.0, 0.0), p2(1.0, 1.0)];
     assert_eq!(de_casteljau::<DVec2>(&[], 0.5), Err(BezierError::Empty));
@@ -143,13 +143,13 @@ fn points3(max_len: usize) -> impl Strategy<Value = Vec<DVec3>> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn de_casteljau_equals_the_bernstein_form(points in points3(14), t in 0.0..=1.0_f64) {
         let p = de_casteljau(&points, t).unwrap();
         prop_assert!(p.abs_diff_eq(common::curve3(&points, t), 1e-9), "{} vs {}", p, common::curve3(&points, t));
     }
 
-    #[test]
+    #[testkit::test]
     fn derivative_equals_the_hodograph(points in points3(10), t in 0.0..=1.0_f64) {
         let cp = point_and_derivative(&points, t).unwrap();
         prop_assert!(cp.point.abs_diff_eq(common::curve3(&points, t), 1e-9));
@@ -157,7 +157,7 @@ proptest! {
             "{} vs {}", cp.derivative, common::derivative3(&points, t));
     }
 
-    #[test]
+    #[testkit::test]
     fn split_halves_trace_the_same_curve(points in points3(8), t in 0.0..=1.0_f64, s in 0.0..=1.0_f64) {
         let halves = split(&points, t).unwrap();
         let n = points.len();
@@ -172,7 +172,7 @@ proptest! {
         prop_assert!(on_right.abs_diff_eq(common::curve3(&points, t + s * (1.0 - t)), 1e-8));
     }
 
-    #[test]
+    #[testkit::test]
     fn affine_maps_commute_with_evaluation(
         points in prop::collection::vec((-10.0..10.0_f64, -10.0..10.0_f64), 1..10),
         t in 0.0..=1.0_f64,
@@ -188,7 +188,7 @@ proptest! {
         prop_assert!(lhs.abs_diff_eq(rhs, 1e-9), "{} vs {}", lhs, rhs);
     }
 
-    #[test]
+    #[testkit::test]
     fn points_lie_in_the_convex_hull(
         points in prop::collection::vec((-100.0..100.0_f64, -100.0..100.0_f64), 1..16),
         t in 0.0..=1.0_f64,
@@ -203,7 +203,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn hostile_input_never_panics(
         x in testkit::strategies::hostile_f32(),
         t in testkit::strategies::hostile_f32(),

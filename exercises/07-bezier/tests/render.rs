@@ -24,7 +24,7 @@ fn hill(uv: DVec2) -> Result<SurfaceSample, BezierError> {
     Ok(common::sample_def(&ControlNet::seed_hill(), uv))
 }
 
-#[test]
+#[testkit::test]
 fn phong_lit_from_above_seen_from_the_side() {
     // n = +y at the origin: light 1 at (0, 10, 0) gives φ₁ = 1, its
     // reflection (0, 1, 0) misses the eye on +z (ψ₁ = 0); light 2 below
@@ -34,7 +34,7 @@ fn phong_lit_from_above_seen_from_the_side() {
     assert!(c.abs_diff_eq(d * 1.1, 1e-15), "{c}");
 }
 
-#[test]
+#[testkit::test]
 fn phong_highlight_when_the_eye_is_in_the_reflection() {
     // Eye straight above: r₁ · e = 1, so ψ₁ = 1 and white is added.
     let d = DVec3::new(0.5, 0.25, 1.0);
@@ -55,7 +55,7 @@ fn phong_highlight_when_the_eye_is_in_the_reflection() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn phong_underside_is_lit_by_the_second_light() {
     // n = −y: light 2 at (0, −10, 0) is straight below, eye below too.
     let d = DVec3::new(0.2, 0.4, 0.6);
@@ -63,7 +63,7 @@ fn phong_underside_is_lit_by_the_second_light() {
     assert!(c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15), "{c}");
 }
 
-#[test]
+#[testkit::test]
 fn bad_levels_and_surface_errors_are_reported() {
     let mut canvas = Canvas::new(8, 8);
     for level in [0, MAX_TESS_LEVEL + 1] {
@@ -83,7 +83,7 @@ fn bad_levels_and_surface_errors_are_reported() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn trimming_everything_leaves_the_background() {
     struct All;
     impl bezier::Trim for All {
@@ -103,7 +103,7 @@ fn trimming_everything_leaves_the_background() {
     assert!(covered > (w * h / 5) as usize, "{covered} pixels");
 }
 
-#[test]
+#[testkit::test]
 fn figure_lit_hill_with_a_hole_and_wireframe() {
     // Seed Figs. 15 and 26: the hill, a circle trimmed, two lights, the grid.
     let [w, h] = common::FIGURE_SIZE;
@@ -128,7 +128,7 @@ fn figure_lit_hill_with_a_hole_and_wireframe() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn figure_lit_hill_seen_from_below() {
     // The second light at (0, −10, 0) lights the underside.
     let [w, h] = common::FIGURE_SIZE;

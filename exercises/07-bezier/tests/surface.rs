@@ -24,7 +24,7 @@ fn plane_net() -> ControlNet {
     ControlNet::new(3, 2, points).unwrap()
 }
 
-#[test]
+#[testkit::test]
 fn a_plane_grid_reproduces_its_parameters() {
     // P(u, v) = (2u, 2v, 0): Bernstein linear precision in both directions.
     let net = plane_net();
@@ -56,7 +56,7 @@ fn a_plane_grid_reproduces_its_parameters() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn corners_are_the_corner_control_points() {
     let net = ControlNet::seed_hill();
     for (u, v, i, j) in [
@@ -70,7 +70,7 @@ fn corners_are_the_corner_control_points() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn the_seed_hill_at_its_centre() {
     // Inner points at height ½, the rest at 0: P(½, ½).y = ½ · (B₁₃ + B₂₃)(½)² = ½ · (¾)².
     let net = ControlNet::seed_hill();
@@ -99,7 +99,7 @@ fn collapsed_net() -> ControlNet {
     ControlNet::new(3, 2, points).unwrap()
 }
 
-#[test]
+#[testkit::test]
 fn normal_at_a_collapsed_edge_falls_back_to_its_limit() {
     // The patch is a flat triangle in z = 0, so every normal is +Z; at the
     // apex ∂P/∂u = 0 and the cross product vanishes.
@@ -112,7 +112,7 @@ fn normal_at_a_collapsed_edge_falls_back_to_its_limit() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_net_collapsed_to_a_line_has_no_normal() {
     let points = (0..4).map(|k| DVec3::new(f64::from(k), 0.0, 0.0)).collect();
     let net = ControlNet::new(2, 2, points).unwrap();
@@ -122,7 +122,7 @@ fn a_net_collapsed_to_a_line_has_no_normal() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn invalid_input_is_a_clear_error() {
     let net = ControlNet::seed_hill();
     for bad in [
@@ -179,7 +179,7 @@ fn unit() -> impl Strategy<Value = f64> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn order_does_not_matter_and_both_equal_the_double_sum(net in nets(), u in unit(), v in unit()) {
         let a = evaluate_u_then_v(&net, uv(u, v)).unwrap();
         let b = evaluate_v_then_u(&net, uv(u, v)).unwrap();
@@ -188,7 +188,7 @@ proptest! {
         prop_assert!(a.abs_diff_eq(expected, 1e-12), "{} vs {}", a, expected);
     }
 
-    #[test]
+    #[testkit::test]
     fn partial_derivatives_equal_the_differentiated_sum(net in nets(), u in unit(), v in unit()) {
         let p = partial_derivatives(&net, uv(u, v)).unwrap();
         let [du, dv] = common::surface_partials_def(&net, uv(u, v));
@@ -197,7 +197,7 @@ proptest! {
         prop_assert!(p.dv.abs_diff_eq(dv, 1e-10), "{} vs {}", p.dv, dv);
     }
 
-    #[test]
+    #[testkit::test]
     fn normal_is_unit_and_perpendicular_to_both_derivatives(net in nets(), u in unit(), v in unit()) {
         if let Ok(n) = normal(&net, uv(u, v)) {
             prop_assert!((n.length() - 1.0).abs() < 1e-12);
@@ -209,7 +209,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn surface_points_lie_in_the_convex_hull(net in nets(), u in unit(), v in unit()) {
         let p = evaluate_u_then_v(&net, uv(u, v)).unwrap();
         let lo = net.points().iter().fold(DVec3::INFINITY, |m, &q| m.min(q));
@@ -217,7 +217,7 @@ proptest! {
         prop_assert!(p.cmpge(lo - 1e-12).all() && p.cmple(hi + 1e-12).all());
     }
 
-    #[test]
+    #[testkit::test]
     fn affine_maps_commute_with_evaluation(
         net in nets(), u in unit(), v in unit(),
         m in prop::array::uniform9(-2.0..2.0_f64),

@@ -108,7 +108,7 @@ fn misclassified(
 // ---------------------------------------------------------------------------
 // Simple trims.
 
-#[test]
+#[testkit::test]
 fn interval_includes_its_boundary() {
     let rect = IntervalTrim::new(uv(0.25, 0.5), uv(0.75, 0.625)).unwrap();
     assert!(rect.trims(uv(0.5, 0.55)));
@@ -128,7 +128,7 @@ fn interval_includes_its_boundary() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn circle_excludes_its_boundary() {
     let circle = CircleTrim::new(uv(0.5, 0.5), 0.25).unwrap();
     assert!(circle.trims(uv(0.5, 0.5)));
@@ -139,7 +139,7 @@ fn circle_excludes_its_boundary() {
     assert!(!circle.trims(uv(0.7, 0.7)));
 }
 
-#[test]
+#[testkit::test]
 fn ellipse_includes_its_boundary() {
     let ellipse = EllipseTrim::new(uv(0.5, 0.5), uv(0.25, 0.125)).unwrap();
     assert!(ellipse.trims(uv(0.5, 0.5)));
@@ -151,7 +151,7 @@ fn ellipse_includes_its_boundary() {
     assert!(!ellipse.trims(uv(0.7, 0.6)));
 }
 
-#[test]
+#[testkit::test]
 fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
     let nan = uv(f64::NAN, 0.5);
     assert!(
@@ -184,7 +184,7 @@ fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
     assert!(NewtonTrim::new(vec![a, b, b, b, c], vec![a, d, c]).is_err());
 }
 
-#[test]
+#[testkit::test]
 fn several_simple_shapes_in_one_square() {
     // Seed Fig. 20: square, rectangle, circle and ellipse in one surface.
     let square = IntervalTrim::new(uv(0.1, 0.6), uv(0.35, 0.85)).unwrap();
@@ -207,7 +207,7 @@ fn several_simple_shapes_in_one_square() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn an_ellipse_with_equal_radii_is_the_circle_off_its_boundary(
         c in (0.0..1.0_f64, 0.0..1.0_f64), r in 0.01..0.5_f64, p in (0.0..1.0_f64, 0.0..1.0_f64),
     ) {
@@ -218,7 +218,7 @@ proptest! {
         prop_assert_eq!(circle.trims(p), ellipse.trims(p));
     }
 
-    #[test]
+    #[testkit::test]
     fn interval_is_the_product_of_two_intervals(
         a in (0.0..1.0_f64, 0.0..1.0_f64), b in (0.0..1.0_f64, 0.0..1.0_f64), p in (0.0..1.0_f64, 0.0..1.0_f64),
     ) {
@@ -232,7 +232,7 @@ proptest! {
 // ---------------------------------------------------------------------------
 // Newton's method.
 
-#[test]
+#[testkit::test]
 fn newton_finds_the_square_root_of_two() {
     // x² − 2 from 1: 1.5, 1.41667, 1.414216, 1.41421356237469 with steps
     // h = −0.5, 0.0833, 0.00245, 2.1e-6: the fourth is below ε = 0.001.
@@ -250,7 +250,7 @@ fn newton_finds_the_square_root_of_two() {
     assert!((root.t - 17.0 / 12.0).abs() < 1e-15, "{}", root.t);
 }
 
-#[test]
+#[testkit::test]
 fn newton_stops_where_it_cannot_go_on() {
     // f' = 0 at the start: the step is not finite, nothing moves.
     let flat = newton(|x| x * x + 1.0, |x| 2.0 * x, 0.0, NewtonSettings::default());
@@ -272,7 +272,7 @@ fn newton_stops_where_it_cannot_go_on() {
     assert_eq!((root.t, root.iterations, root.converged), (1.0, 0, false));
 }
 
-#[test]
+#[testkit::test]
 fn between_the_crossings_of_one_arch() {
     // The upper arch of the seed's example, v(t) = 0.5 + 0.8 t (1 − t):
     // at v = 0.6, t (1 − t) = ⅛, so t = ½ ± √½ / 2 and u = 0.5 ± 0.3 √½ = 0.5 ± 0.2121.
@@ -288,7 +288,7 @@ fn between_the_crossings_of_one_arch() {
     assert!(!between_crossings(&arch, uv(0.5, 0.45), s));
 }
 
-#[test]
+#[testkit::test]
 fn an_arch_running_right_to_left_is_the_second_sign_case() {
     // The same arch with its control points reversed: Newton from t = 1
     // now finds the left crossing (x₁ < 0), from t = 0 the right one
@@ -310,19 +310,19 @@ fn an_arch_running_right_to_left_is_the_second_sign_case() {
     assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
 }
 
-#[test]
+#[testkit::test]
 fn quadratic_newton_trim_matches_the_exact_region() {
     let trim = NewtonTrim::quadratic(QUADRATIC).unwrap();
     assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
 }
 
-#[test]
+#[testkit::test]
 fn cubic_newton_trim_matches_the_exact_region() {
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
     assert_eq!(misclassified(100, 0.005, &trim, in_cubic), 0);
 }
 
-#[test]
+#[testkit::test]
 fn nested_newton_trim_keeps_the_inner_region() {
     let outer = NewtonTrim::quadratic(QUADRATIC).unwrap();
     let inner = NewtonTrim::quadratic(INNER).unwrap();
@@ -338,7 +338,7 @@ fn nested_newton_trim_keeps_the_inner_region() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn too_few_iterations_or_a_coarse_epsilon_spoil_the_edge() {
     // Seed §5.2: one iteration cannot find the crossings; the default can.
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
@@ -352,7 +352,7 @@ fn too_few_iterations_or_a_coarse_epsilon_spoil_the_edge() {
 
 /// Seed §5.2 (Figs. 29–34): how many of 100² samples of the cubic region
 /// come out wrong, by iteration limit and ε. The sheet shows this table.
-#[test]
+#[testkit::test]
 fn iteration_and_epsilon_table() {
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
     let epsilons = [0.1, 0.01, 0.001, 0.0001];
@@ -383,7 +383,7 @@ fn iteration_and_epsilon_table() {
 }
 
 /// The same cubic region at 3 and at 10 iterations, as ASCII.
-#[test]
+#[testkit::test]
 fn cubic_trim_at_three_and_ten_iterations() {
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
     let three = trim.clone().with_settings(NewtonSettings {
@@ -414,12 +414,12 @@ fn check_figure(name: &str, trim: &dyn Trim) {
     );
 }
 
-#[test]
+#[testkit::test]
 fn figure_circle() {
     check_figure("trim_circle", &CircleTrim::new(uv(0.5, 0.5), 0.2).unwrap());
 }
 
-#[test]
+#[testkit::test]
 fn figure_rectangle() {
     check_figure(
         "trim_rectangle",
@@ -427,7 +427,7 @@ fn figure_rectangle() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn figure_ellipse() {
     check_figure(
         "trim_ellipse",
@@ -435,7 +435,7 @@ fn figure_ellipse() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn figure_quadratic_newton() {
     check_figure(
         "trim_newton_quadratic",
@@ -443,19 +443,19 @@ fn figure_quadratic_newton() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn figure_cubic_newton() {
     check_figure("trim_newton_cubic", &NewtonTrim::cubic(CUBIC).unwrap());
 }
 
-#[test]
+#[testkit::test]
 fn figure_nested_newton() {
     let outer = NewtonTrim::quadratic(QUADRATIC).unwrap();
     let inner = NewtonTrim::quadratic(INNER).unwrap();
     check_figure("trim_newton_nested", &NestedNewtonTrim::new(outer, inner));
 }
 
-#[test]
+#[testkit::test]
 fn hostile_curves_are_never_inside() {
     let s = NewtonSettings::default();
     assert!(!between_crossings(&[], uv(0.5, 0.5), s));

@@ -54,7 +54,7 @@ fn region(loops: Vec<Vec<Vec<DVec2>>>) -> TrimRegion {
     )
 }
 
-#[test]
+#[testkit::test]
 fn a_segment_is_crossed_once_from_its_left() {
     let segment = [p(0.0, -1.0), p(0.0, 1.0)];
     assert!(crossing_parity(&segment, p(-1.0, 0.0)));
@@ -62,7 +62,7 @@ fn a_segment_is_crossed_once_from_its_left() {
     assert!(!crossing_parity(&segment, p(-1.0, 2.0)));
 }
 
-#[test]
+#[testkit::test]
 fn end_points_on_the_ray_follow_the_half_open_rule() {
     // v ≥ a.v counts as above: a segment from the ray upwards never
     // changes side; one from below up to the ray does.
@@ -86,7 +86,7 @@ fn end_points_on_the_ray_follow_the_half_open_rule() {
     ));
 }
 
-#[test]
+#[testkit::test]
 fn the_parabola_is_crossed_twice_or_once() {
     let parabola = &parabola_loop()[0];
     // Ray at y = ¼ meets y = x² at x = ±½.
@@ -95,7 +95,7 @@ fn the_parabola_is_crossed_twice_or_once() {
     assert!(!crossing_parity(parabola, p(0.6, 0.25)));
 }
 
-#[test]
+#[testkit::test]
 fn parabola_region_is_exact() {
     let r = region(vec![parabola_loop()]);
     for (q, inside) in [
@@ -112,7 +112,7 @@ fn parabola_region_is_exact() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_loop_inside_a_loop_is_a_hole() {
     // A square with the parabola region, shrunk, as a hole, and a
     // square island inside that.
@@ -137,7 +137,7 @@ fn a_loop_inside_a_loop_is_a_hole() {
     assert!(!r.contains(p(3.0, 0.0)), "outside");
 }
 
-#[test]
+#[testkit::test]
 fn end_points_at_different_heights_are_fine() {
     // The seed's Fig. 28 case: an arch from (0.2, 0.4) to (0.8, 0.6). Its
     // u is linear in t, so the exact region is known: between the
@@ -161,7 +161,7 @@ fn end_points_at_different_heights_are_fine() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn points_on_the_boundary_terminate() {
     let r = region(vec![parabola_loop()]);
     for q in [
@@ -180,7 +180,7 @@ fn points_on_the_boundary_terminate() {
     let _either_way = crossing_parity(&wiggle, p(16.0, 0.0));
 }
 
-#[test]
+#[testkit::test]
 fn invalid_loops_are_clear_errors_and_nan_is_outside() {
     assert_eq!(TrimLoop::new(vec![]), Err(BezierError::Empty));
     assert_eq!(TrimLoop::new(vec![vec![]]), Err(BezierError::Empty));
@@ -220,14 +220,14 @@ fn invalid_loops_are_clear_errors_and_nan_is_outside() {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn parabola_region_matches_its_formula(x in -1.5..1.5_f64, y in -0.5..1.5_f64) {
         let q = p(x, y);
         prop_assume!(far_from_parabola(q, 1e-6));
         prop_assert_eq!(region(vec![parabola_loop()]).contains(q), in_parabola(q));
     }
 
-    #[test]
+    #[testkit::test]
     fn rotation_translation_and_orientation_do_not_matter(
         x in -1.5..1.5_f64, y in -0.5..1.5_f64,
         angle in 0.0..std::f64::consts::TAU,
@@ -252,7 +252,7 @@ proptest! {
     }
 }
 
-#[test]
+#[testkit::test]
 fn hostile_curves_never_hang_or_panic() {
     let a = p(0.0, 0.0);
     assert!(!crossing_parity(&[], a));

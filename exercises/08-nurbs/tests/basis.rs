@@ -21,7 +21,7 @@ fn book_knots() -> KnotVector {
     .unwrap()
 }
 
-#[test]
+#[testkit::test]
 fn book_example_has_the_known_values() {
     // At u = 5/2 (span [2, 3), s = 4): N_{2,2} = 1/8, N_{3,2} = 6/8,
     // N_{4,2} = 1/8; all others 0 (The NURBS Book, Ex. 2.3).
@@ -62,7 +62,7 @@ fn book_example_has_the_known_values() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn the_recursion_uses_degree_p_minus_one() {
     // With the seed's (1.9) read literally (N_{i,p} on the right), the
     // hat function N_{0,1} on U = {0, 1, 2} could not be ½ at u = ½.
@@ -72,7 +72,7 @@ fn the_recursion_uses_degree_p_minus_one() {
     assert_eq!(cox_de_boor(&knots, 0, 1, 2.5), 0.0);
 }
 
-#[test]
+#[testkit::test]
 fn steps_are_half_open_except_at_the_domain_end() {
     // Seed (1.8) closes the step: at the interior knot 1 two degree-0
     // functions would be 1. Half-open: exactly one.
@@ -88,7 +88,7 @@ fn steps_are_half_open_except_at_the_domain_end() {
     assert_eq!(find_span(&knots, 0.0), Ok(1));
 }
 
-#[test]
+#[testkit::test]
 fn clamped_bezier_knots_give_the_bernstein_basis() {
     // U = {0, …, 0, 1, …, 1}: N_{i,p} = B_{i,p} (seed 001, §1.2).
     for p in 1..=6 {
@@ -114,7 +114,7 @@ fn clamped_bezier_knots_give_the_bernstein_basis() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn unclamped_uniform_knots_give_the_uniform_cubic_b_spline() {
     // U = {0, 1, …, 7}, p = 3, domain [3, 4]: at the span's start the
     // uniform cubic B-spline weights are 1/6, 4/6, 1/6, 0.
@@ -127,7 +127,7 @@ fn unclamped_uniform_knots_give_the_uniform_cubic_b_spline() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn invalid_knots_parameters_and_spans_are_errors() {
     // The knot vector checks (given code) that every task relies on.
     assert_eq!(
@@ -222,7 +222,7 @@ fn parameter(knots: &KnotVector, t: f64, on_knot: Option<usize>) -> f64 {
 proptest! {
     #![proptest_config(proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn span_contains_the_parameter(
         knots in knot_vector(),
         t in 0.0f64..=1.0,
@@ -240,7 +240,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn basis_is_non_negative_sums_to_one_and_matches_the_definition(
         knots in knot_vector(),
         t in 0.0f64..=1.0,
@@ -267,7 +267,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn derivatives_agree_with_finite_differences(
         knots in knot_vector(),
         t in 0.0f64..=1.0,

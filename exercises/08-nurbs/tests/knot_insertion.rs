@@ -23,7 +23,7 @@ fn inside(knots: &KnotVector, t: f64) -> f64 {
     d.lerp(0.01 + 0.98 * t)
 }
 
-#[test]
+#[testkit::test]
 fn inserting_the_middle_of_a_quadratic_bezier_halves_its_legs() {
     // U = {0,0,0,1,1,1}; inserting ½ once gives de Casteljau's midpoint
     // subdivision in homogeneous space:
@@ -49,7 +49,7 @@ fn inserting_the_middle_of_a_quadratic_bezier_halves_its_legs() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn inserting_a_knot_three_times_into_a_cubic_splits_it_into_two_bezier_pieces() {
     // Inserting ½ three times into a cubic Bézier curve makes the middle
     // control point the curve's point at ½ (two Bézier pieces sharing it).
@@ -70,7 +70,7 @@ fn inserting_a_knot_three_times_into_a_cubic_splits_it_into_two_bezier_pieces() 
     assert_close(on_curve, middle.truncate() / middle.w, 1e-14, "P3 = C(½)");
 }
 
-#[test]
+#[testkit::test]
 fn circle_stays_a_circle_after_insertion() {
     let refined = circle().insert_knot(0.1, 2).unwrap();
     assert_eq!(refined.points().len(), 11);
@@ -81,7 +81,7 @@ fn circle_stays_a_circle_after_insertion() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn torus_decomposes_into_sixteen_biquadratic_patches() {
     // The circle's knots ¼, ½, ¾ already have multiplicity 2 = p: no
     // insertion is needed, the net is cut into 4 × 4 blocks of 3 × 3.
@@ -101,7 +101,7 @@ fn torus_decomposes_into_sixteen_biquadratic_patches() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn invalid_insertions_are_errors() {
     let circle = circle();
     // ¼ already has multiplicity 2 = p.
@@ -197,7 +197,7 @@ fn decomposition_wireframe() -> canvas::Canvas {
     canvas
 }
 
-#[test]
+#[testkit::test]
 fn decomposition_wireframe_matches_the_reference_image() {
     let reference = concat!(
         env!("CARGO_MANIFEST_DIR"),
@@ -217,7 +217,7 @@ fn decomposition_wireframe_matches_the_reference_image() {
 proptest! {
     #![proptest_config(proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn insertion_leaves_the_curve_unchanged(
         curve in nurbs_curve(),
         at in 0.0f64..=1.0,
@@ -244,7 +244,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn surface_insertion_leaves_the_surface_unchanged(
         surface in nurbs_surface(),
         at in 0.0f64..=1.0,
@@ -271,7 +271,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn bezier_patches_reproduce_the_surface(
         surface in nurbs_surface(),
         samples in prop::collection::vec((0.0f64..=1.0, 0.0f64..=1.0), 4),

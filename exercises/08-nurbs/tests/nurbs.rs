@@ -28,7 +28,7 @@ fn near_knot(knots: &KnotVector, u: f64, margin: f64) -> bool {
     knots.knots().iter().any(|&k| (k - u).abs() <= margin)
 }
 
-#[test]
+#[testkit::test]
 fn circle_lies_exactly_on_the_unit_circle() {
     let circle = circle();
     for k in 0..=1000 {
@@ -42,7 +42,7 @@ fn circle_lies_exactly_on_the_unit_circle() {
     assert_close(DVec3::X, circle.point(1.0).unwrap(), 1e-15, "C(1)");
 }
 
-#[test]
+#[testkit::test]
 fn circle_tangent_is_perpendicular_to_the_radius() {
     let circle = circle();
     for k in 0..100 {
@@ -66,7 +66,7 @@ fn circle_tangent_is_perpendicular_to_the_radius() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn bezier_knots_give_the_rational_bezier_curve() {
     // Bézier = B-spline on {0, …, 0, 1, …, 1}: compare with the Bernstein form.
     let points = [
@@ -93,7 +93,7 @@ fn bezier_knots_give_the_rational_bezier_curve() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn torus_points_lie_on_the_torus_and_normals_point_outwards() {
     let torus = torus();
     for a in 0..=24 {
@@ -121,7 +121,7 @@ fn torus_points_lie_on_the_torus_and_normals_point_outwards() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn grid_matches_points_on_the_torus() {
     let torus = torus();
     let (nu, nv) = (7, 5);
@@ -140,7 +140,7 @@ fn grid_matches_points_on_the_torus() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn invalid_input_is_an_error() {
     let circle = circle();
     for u in [-0.5, 1.0 + 1e-12, f64::NAN, f64::INFINITY] {
@@ -176,7 +176,7 @@ fn invalid_input_is_an_error() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn collapsed_edge_has_no_normal() {
     // A bilinear patch whose row u = 0 is a single point (a triangle):
     // S_v = 0 there, so S_u × S_v = 0.
@@ -218,7 +218,7 @@ fn shaded_torus() -> canvas::Canvas {
     common::render_grid(&points, &colours, nu, nv)
 }
 
-#[test]
+#[testkit::test]
 fn shaded_torus_matches_the_reference_image() {
     let reference = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/images/nurbs_torus.png");
     assert_image_matches(
@@ -237,7 +237,7 @@ fn shaded_torus_matches_the_reference_image() {
 proptest! {
     #![proptest_config(proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn curve_matches_the_definition_and_stays_in_the_hull(curve in nurbs_curve(), t in 0.0f64..=1.0) {
         let u = curve.domain().lerp(t);
         let expected = curve_point(curve.knots(), curve.points(), u);
@@ -253,7 +253,7 @@ proptest! {
         prop_assert!(common::in_bounding_box(actual, projected(local), TOLERANCE));
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_is_affinely_invariant(
         curve in nurbs_curve(),
         t in 0.0f64..=1.0,
@@ -273,7 +273,7 @@ proptest! {
         prop_assert!(expected.distance(actual) <= 1e-8, "{expected} vs {actual}");
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_derivative_agrees_with_finite_differences(curve in nurbs_curve(), t in 0.0f64..=1.0) {
         let u = curve.domain().lerp(t);
         prop_assume!(!near_knot(curve.knots(), u, 10.0 * H));
@@ -287,7 +287,7 @@ proptest! {
         prop_assert!(d.tangent.distance(slope) <= 1e-4 * scale, "C′({u}) = {}, quotient {slope}", d.tangent);
     }
 
-    #[test]
+    #[testkit::test]
     fn surface_matches_the_definition(surface in nurbs_surface(), s in 0.0f64..=1.0, t in 0.0f64..=1.0) {
         let (u, v) = (surface.domain_u().lerp(s), surface.domain_v().lerp(t));
         let expected = surface_point(&surface, u, v);
@@ -298,7 +298,7 @@ proptest! {
         prop_assert!(d.point.distance(expected) <= TOLERANCE);
     }
 
-    #[test]
+    #[testkit::test]
     fn surface_derivatives_agree_with_finite_differences(
         surface in nurbs_surface(),
         s in 0.0f64..=1.0,
@@ -322,7 +322,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn grid_matches_single_points(surface in nurbs_surface(), nu in 2usize..6, nv in 2usize..6) {
         let grid = surface.sample_grid(nu, nv).unwrap();
         prop_assert_eq!(grid.len(), nu * nv);

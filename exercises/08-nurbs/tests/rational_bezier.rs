@@ -29,7 +29,7 @@ fn curve_by_definition(points: &[DVec4], u: f64) -> DVec3 {
     num / den
 }
 
-#[test]
+#[testkit::test]
 fn bernstein_has_the_known_values() {
     // B_{1,2}(½) = 2·½·½, B_{0,3}(¼) = (¾)³, B_{2,4}(½) = 6/16.
     assert_relative_eq!(bernstein(2, 1, 0.5), 0.5, max_relative = 1e-15);
@@ -49,7 +49,7 @@ fn bernstein_has_the_known_values() {
     assert_eq!(bernstein(2, 3, 0.5), 0.0);
 }
 
-#[test]
+#[testkit::test]
 fn quarter_circle_lies_exactly_on_the_unit_circle() {
     let points = quarter_circle();
     for k in 0..=1000 {
@@ -68,7 +68,7 @@ fn quarter_circle_lies_exactly_on_the_unit_circle() {
     assert_close(expected, mid, 1e-15, "C(½)");
 }
 
-#[test]
+#[testkit::test]
 fn the_ends_are_the_first_and_last_control_points() {
     // Seed 001 after Example 1.1.2: P_0 = C(0) and P_n = C(1) (the seed
     // writes P_1 = C(1) for the quadratic, a typo for P_2).
@@ -91,7 +91,7 @@ fn the_ends_are_the_first_and_last_control_points() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn unit_weights_give_the_polynomial_bezier_curve() {
     // Seed 001, Example 1.1.2: C(u) = (1−u)² P0 + 2u(1−u) P1 + u² P2.
     let (p0, p1, p2) = (DVec3::ZERO, DVec3::new(10.0, 15.0, 0.0), DVec3::X * 20.0);
@@ -107,7 +107,7 @@ fn unit_weights_give_the_polynomial_bezier_curve() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn bilinear_patch_interpolates_its_corners() {
     //  P01 ── P11        degree (1, 1), unit weights: the bilinear patch
     //   │      │         S(u, v) = (1−u)(1−v) P00 + (1−u) v P01
@@ -133,7 +133,7 @@ fn bilinear_patch_interpolates_its_corners() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn extruded_quarter_circle_is_a_quarter_cylinder() {
     // Rows along u: the quarter circle; columns along v: z = 0 and z = 2.
     let mut points = Vec::new();
@@ -151,7 +151,7 @@ fn extruded_quarter_circle_is_a_quarter_cylinder() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn invalid_input_is_an_error() {
     let good = quarter_circle();
     assert_eq!(
@@ -205,7 +205,7 @@ fn weighted_points(max: usize) -> impl Strategy<Value = Vec<DVec4>> {
 proptest! {
     #![proptest_config(proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn bernstein_basis_is_non_negative_and_sums_to_one(n in 0usize..=20, u in 0.0f64..=1.0) {
         let values: Vec<f64> = (0..=n).map(|i| bernstein(n, i, u)).collect();
         for (i, &b) in values.iter().enumerate() {
@@ -217,14 +217,14 @@ proptest! {
         prop_assert!((sum - 1.0).abs() < 1e-12, "sum {sum}");
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_matches_the_definition(points in weighted_points(8), u in 0.0f64..=1.0) {
         let expected = curve_by_definition(&points, u);
         let actual = rational_bezier_point(&points, u).unwrap();
         prop_assert!(expected.distance(actual) <= TOLERANCE, "{expected} vs {actual}");
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_lies_in_the_convex_hull(points in weighted_points(8), u in 0.0f64..=1.0) {
         // Tested on the bounding box, and on the distance to the hull's
         // farthest direction: every projection onto an axis of a few
@@ -239,7 +239,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn curve_is_affinely_invariant(
         points in weighted_points(6),
         u in 0.0f64..=1.0,
@@ -258,7 +258,7 @@ proptest! {
         prop_assert!(expected.distance(actual) <= 1e-8, "{expected} vs {actual}");
     }
 
-    #[test]
+    #[testkit::test]
     fn scaling_all_weights_changes_nothing(points in weighted_points(6), u in 0.0f64..=1.0, c in 0.1f64..10.0) {
         let scaled: Vec<DVec4> = points.iter().map(|&p| p * c).collect();
         let a = rational_bezier_point(&points, u).unwrap();
@@ -266,7 +266,7 @@ proptest! {
         prop_assert!(a.distance(b) <= TOLERANCE, "{a} vs {b}");
     }
 
-    #[test]
+    #[testkit::test]
     fn surface_matches_the_definition(
         rows in 1usize..=4,
         columns in 1usize..=4,

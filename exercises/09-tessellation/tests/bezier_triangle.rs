@@ -48,7 +48,7 @@ fn linear(p1: DVec3, p2: DVec3, p3: DVec3) -> CubicBezierTriangle {
     }
 }
 
-#[test]
+#[testkit::test]
 fn corners_are_the_corner_control_points() {
     let t = lumpy();
     assert_eq!(evaluate(&t, [1.0, 0.0, 0.0]), t.b300);
@@ -56,7 +56,7 @@ fn corners_are_the_corner_control_points() {
     assert_eq!(evaluate(&t, [0.0, 0.0, 1.0]), t.b003);
 }
 
-#[test]
+#[testkit::test]
 fn edges_are_cubic_bezier_curves() {
     // On w = 0: Σ b_ij0 3!/(i! j!) uⁱ vʲ, the cubic with control points
     // b030, b120, b210, b300 at parameter u; likewise the other edges.
@@ -80,7 +80,7 @@ fn edges_are_cubic_bezier_curves() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn centre_weighs_b111_six_twentysevenths() {
     // At (⅓, ⅓, ⅓) every cubic term is 1/27, times 1, 3 or 6.
     let t = lumpy();
@@ -90,7 +90,7 @@ fn centre_weighs_b111_six_twentysevenths() {
     assert!(evaluate(&t, [1.0 / 3.0; 3]).distance(expected) < EXACT);
 }
 
-#[test]
+#[testkit::test]
 fn flat_triangle_with_face_normals_stays_flat() {
     // Normals equal to the face normal: every w_ij is 0, the edge points
     // are the thirds, E = V and b111 = V: the linear control points.
@@ -112,7 +112,7 @@ fn flat_triangle_with_face_normals_stays_flat() {
     assert_eq!(pn.normals, [DVec3::Z; 3], "normals are normalised");
 }
 
-#[test]
+#[testkit::test]
 fn pn_triangle_interpolates_vertices_and_normals() {
     let positions = [
         DVec3::new(1.0, 0.0, 0.0),
@@ -146,7 +146,7 @@ fn pn_triangle_interpolates_vertices_and_normals() {
     assert_eq!(mesh.triangles, domain.triangles);
 }
 
-#[test]
+#[testkit::test]
 fn pn_octant_bulges_towards_the_sphere() {
     // The octant of the unit sphere from its three axis points with their
     // normals. By hand: on the edge Y–Z, w = (Z − Y)·Y = −1, so the edge
@@ -178,7 +178,7 @@ fn pn_octant_bulges_towards_the_sphere() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn zero_or_non_finite_input_is_an_error() {
     let positions = [DVec3::X, DVec3::Y, DVec3::Z];
     let zero = [DVec3::X, DVec3::ZERO, DVec3::Z];
@@ -197,7 +197,7 @@ fn zero_or_non_finite_input_is_an_error() {
     ));
 }
 
-#[test]
+#[testkit::test]
 fn pn_sphere_matches_the_reference_image() {
     // The octahedron's eight faces as PN triangles with normals = positions.
     let axes = [DVec3::X, DVec3::Y, -DVec3::X, -DVec3::Y];
@@ -257,19 +257,19 @@ fn barycentric() -> impl Strategy<Value = [f64; 3]> {
 proptest! {
     #![proptest_config(testkit::strategies::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn linear_control_points_give_the_flat_triangle(p1 in point(), p2 in point(), p3 in point(), b in barycentric()) {
         let flat = b[0] * p1 + b[1] * p2 + b[2] * p3;
         prop_assert!(evaluate(&linear(p1, p2, p3), b).distance(flat) < 1e-9);
     }
 
-    #[test]
+    #[testkit::test]
     fn equal_control_points_give_a_constant(p in point(), b in barycentric()) {
         let t = CubicBezierTriangle { b300: p, b030: p, b003: p, b210: p, b201: p, b120: p, b021: p, b102: p, b012: p, b111: p };
         prop_assert!(evaluate(&t, b).distance(p) < 1e-9, "the Bernstein weights sum to 1");
     }
 
-    #[test]
+    #[testkit::test]
     fn pn_tangent_planes_are_perpendicular_to_the_normals(p in [point(), point(), point()], n in [unit(), unit(), unit()]) {
         let g = pn_triangle(p, n).unwrap().geometry;
         // The edge control points next to a vertex span its tangent plane.

@@ -67,7 +67,7 @@ fn edge<'a>(v1: SurfacePoint, v2: SurfacePoint, mid: SurfacePoint) -> EdgeContex
 // ---------------------------------------------------------------------------
 // The edge tests, on hand-made edges with known answers.
 
-#[test]
+#[testkit::test]
 fn one_edge_normal_compares_both_ends_with_the_midpoint() {
     // |N1 − N12| = |(0, 0, 1) − (0, 0.6, 0.8)| = sqrt(0.36 + 0.04) = 0.632…
     let n12 = DVec3::new(0.0, 0.6, 0.8);
@@ -85,7 +85,7 @@ fn one_edge_normal_compares_both_ends_with_the_midpoint() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn complementary_test_also_compares_the_end_normals() {
     // N1, N2 at ±0.5 rad from N12 = z: |N1 − N12| = 2 sin 0.25 = 0.4948,
     // |N1 − N2| = 2 sin 0.5 = 0.9589.
@@ -107,7 +107,7 @@ fn complementary_test_also_compares_the_end_normals() {
     assert!(one_edge_complementary(&e, 0.49, 10.0), "t1 still applies");
 }
 
-#[test]
+#[testkit::test]
 fn two_triangle_test_averages_without_normalising() {
     // N1 = N2 = N12 = z, opposite normals ±x: N' = (0, 0, 2)/4, |N12 − N'| = 0.5.
     let z = |p: DVec3| at(p, DVec3::Z);
@@ -120,7 +120,7 @@ fn two_triangle_test_averages_without_normalising() {
     assert!(two_triangle(&e, 0.47) && !two_triangle(&e, 0.48));
 }
 
-#[test]
+#[testkit::test]
 fn first_order_test_averages_the_ring() {
     // Ring normals z, z, y, −y: N'' = (0, 0, 0.5), |N12 − N''| = 0.5.
     let ring = [
@@ -136,7 +136,7 @@ fn first_order_test_averages_the_ring() {
     assert!(!first_order_neighbour(&e, 1e-9), "a flat ring never splits");
 }
 
-#[test]
+#[testkit::test]
 fn vector_deviation_measures_the_angle_of_the_sub_chords() {
     //        V12 (1, 1)
     //       ╱    ╲          45° against the chord: 1 − cos 45° = 0.2929
@@ -168,7 +168,7 @@ fn vector_deviation_measures_the_angle_of_the_sub_chords() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn local_flat_test_compares_the_edge_with_the_normals() {
     // U = ±x (the edge is 2 long, U is a unit vector); |U · N1| = 0.6
     // with N1 = (0.6, 0, 0.8), and 0 with N2 = z.
@@ -187,7 +187,7 @@ fn local_flat_test_compares_the_edge_with_the_normals() {
     assert!(!local_flat(&flat, 1e-12));
 }
 
-#[test]
+#[testkit::test]
 fn umbrella_test_compares_the_unit_umbrella_with_the_normal() {
     // V1 at the origin with N1 = z; neighbours (±1, 0, 1): the umbrella is
     // (0, 0, 1), along the normal: |Û · N1| = 1.
@@ -226,7 +226,7 @@ fn umbrella_test_compares_the_unit_umbrella_with_the_normal() {
     assert!(!umbrella_flat(&e, 1e-12), "no neighbours, no umbrella");
 }
 
-#[test]
+#[testkit::test]
 fn every_test_splits_a_bent_edge_and_keeps_a_flat_one() {
     //   N1 ↖   N12 ↑   ↗ N2       bent: normals turn by ±37°, the midpoint
     //   V1 ────────── V2           sags 0.5 below the chord
@@ -266,7 +266,7 @@ fn trough() -> BezierPatch {
     })
 }
 
-#[test]
+#[testkit::test]
 fn one_generation_on_a_trough_follows_the_patterns() {
     // One cell, two triangles; the one-edge test splits every edge along
     // which u changes (bottom, top, diagonal), never the sides u = 0, 1:
@@ -291,7 +291,7 @@ fn one_generation_on_a_trough_follows_the_patterns() {
     assert_tiles_rectangle(&mesh, 1.0, 1.0, "trough");
 }
 
-#[test]
+#[testkit::test]
 fn depth_zero_and_flat_patches_keep_the_initial_mesh() {
     let patch = BezierPatch::seed_surface();
     let initial = sample_grid(&patch, 9);
@@ -313,7 +313,7 @@ fn depth_zero_and_flat_patches_keep_the_initial_mesh() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn refinement_is_watertight_on_the_surface_and_never_worse() {
     let patch = BezierPatch::seed_surface();
     let initial = sample_grid(&patch, 13);
@@ -340,7 +340,7 @@ fn refinement_is_watertight_on_the_surface_and_never_worse() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn table_of_triangle_counts() {
     // The seed's table (p. 22–27) for its surface from 1152 triangles;
     // printed with `--nocapture`, copied into the task sheet.
@@ -373,7 +373,7 @@ fn table_of_triangle_counts() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn bad_input_is_an_error() {
     let patch = unit_plane();
     let initial = sample_grid(&patch, 3);
@@ -416,7 +416,7 @@ fn bad_input_is_an_error() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn adaptive_seed_surface_matches_the_reference_image() {
     let patch = BezierPatch::seed_surface();
     let mesh = refine(

@@ -26,7 +26,7 @@ fn parabola() -> Vec<DVec3> {
     vec![p(0.0, 0.0, 0.0), p(1.0, 1.0, 0.0), p(2.0, 0.0, 0.0)]
 }
 
-#[test]
+#[testkit::test]
 fn parabola_gets_the_segments_its_chord_error_needs() {
     // k = ⌈sqrt(2·1·2 / (8 tol))⌉ = ⌈sqrt(1 / (2 tol))⌉.
     for (tolerance, k) in [
@@ -46,7 +46,7 @@ fn parabola_gets_the_segments_its_chord_error_needs() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn polyline_of_a_cubic_stays_within_the_tolerance() {
     //   an S-shaped cubic, sampled densely against its polyline
     let cubic = vec![
@@ -74,7 +74,7 @@ fn polyline_of_a_cubic_stays_within_the_tolerance() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn straight_curves_need_one_segment() {
     let evenly = vec![
         p(0.0, 0.0, 0.0),
@@ -88,7 +88,7 @@ fn straight_curves_need_one_segment() {
     assert_eq!(curve_segments(&[], 1e-9), Ok(1), "no points");
 }
 
-#[test]
+#[testkit::test]
 fn curved_curves_are_capped_and_bad_input_is_an_error() {
     assert_eq!(curve_segments(&parabola(), 1e-300), Ok(MAX_SEGMENTS));
     for tolerance in [0.0, -1.0, f64::NAN, f64::INFINITY] {
@@ -109,7 +109,7 @@ fn curved_curves_are_capped_and_bad_input_is_an_error() {
     assert_eq!(curve_segments(&huge, 0.1), Ok(MAX_SEGMENTS));
 }
 
-#[test]
+#[testkit::test]
 fn resolution_follows_each_direction_on_its_own() {
     // Curved like the parabola along u (i), straight along v (j):
     // P_ij = (i, j, parabola height) with heights 0, 1, 0.
@@ -169,7 +169,7 @@ fn assert_watertight_on_surface(grid: &PatchGrid, tolerance: f64) -> tessellatio
     mesh
 }
 
-#[test]
+#[testkit::test]
 fn example_surface_is_watertight_at_every_tolerance() {
     let grid = PatchGrid::example();
     for tolerance in [1.0, 0.1, 0.01, 0.002, 1e-4] {
@@ -177,7 +177,7 @@ fn example_surface_is_watertight_at_every_tolerance() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn curved_patch_gets_more_triangles_than_flat_ones() {
     // The example's bump sits in patch (1, 1); patch (0, 0) is nearly flat.
     let grid = PatchGrid::example();
@@ -199,7 +199,7 @@ fn curved_patch_gets_more_triangles_than_flat_ones() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn single_flat_patch_is_a_fan_around_its_centre() {
     // A bilinear plane: every curve needs 1 segment, the patch 2 × 2 cells,
     // whose inner grid is the single point (½, ½): four corners, one
@@ -212,7 +212,7 @@ fn single_flat_patch_is_a_fan_around_its_centre() {
     assert_eq!(assert_tiles_rectangle(&mesh, 1.0, 1.0, "plane"), 4);
 }
 
-#[test]
+#[testkit::test]
 fn grids_whose_neighbours_do_not_meet_are_rejected() {
     let a = patch_from(1, 1, |i, j| p(i as f64, j as f64, 0.0));
     let b = patch_from(1, 1, |i, j| p(1.0 + i as f64, j as f64, 0.5));
@@ -227,7 +227,7 @@ fn grids_whose_neighbours_do_not_meet_are_rejected() {
     ));
 }
 
-#[test]
+#[testkit::test]
 fn example_surface_matches_the_reference_image() {
     let mesh = tessellate_patch_grid(&PatchGrid::example(), 0.004).unwrap();
     let view = View {
@@ -257,7 +257,7 @@ fn any_grid() -> impl Strategy<Value = PatchGrid> {
 proptest! {
     #![proptest_config(testkit::strategies::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn random_grids_are_watertight(grid in any_grid(), tolerance in 0.002f64..0.5) {
         assert_watertight_on_surface(&grid, tolerance);
     }

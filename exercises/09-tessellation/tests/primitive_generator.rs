@@ -30,7 +30,7 @@ fn assert_close(yours: &[f64], expected: &[f64], what: &str) {
     }
 }
 
-#[test]
+#[testkit::test]
 fn levels_are_clamped_and_rounded_per_spacing() {
     use Spacing::{Equal, FractionalEven as Even, FractionalOdd as Odd};
     let cases = [
@@ -60,7 +60,7 @@ fn levels_are_clamped_and_rounded_per_spacing() {
     assert_eq!(MAX_TESS_GEN_LEVEL, 64.0);
 }
 
-#[test]
+#[testkit::test]
 fn edges_are_subdivided_with_two_short_fractional_segments() {
     assert_close(
         &subdivide_edge(4.0, Spacing::Equal),
@@ -102,7 +102,7 @@ fn edges_are_subdivided_with_two_short_fractional_segments() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn levels_of_one_give_a_single_quad_or_triangle() {
     for spacing in [Spacing::Equal, Spacing::FractionalOdd] {
         let quad = quad_domain([1.0, 0.7], [1.0, 0.5, 1.0, 1.0], spacing);
@@ -117,7 +117,7 @@ fn levels_of_one_give_a_single_quad_or_triangle() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn non_positive_or_nan_outer_levels_discard_the_patch() {
     for spacing in SPACINGS {
         for bad in [0.0, -1.0, f64::NAN] {
@@ -133,7 +133,7 @@ fn non_positive_or_nan_outer_levels_discard_the_patch() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn equal_quads_of_level_three_are_the_regular_grid() {
     // 4 × 4 points; 9 cells; the ring 4 sides × (3 + 1) triangles + 2 inside.
     let quad = quad_domain([3.0, 3.0], [3.0; 4], Spacing::Equal);
@@ -149,7 +149,7 @@ fn equal_quads_of_level_three_are_the_regular_grid() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn inner_levels_subdivide_u_and_v_of_the_quad() {
     // inner[0] = 2 cuts u in halves, inner[1] = 4 cuts v in quarters: the
     // inner grid is the column u = ½ at v = ¼, ½, ¾.
@@ -164,7 +164,7 @@ fn inner_levels_subdivide_u_and_v_of_the_quad() {
     assert_eq!(inside, [(0.5, 0.25), (0.5, 0.5), (0.5, 0.75)]);
 }
 
-#[test]
+#[testkit::test]
 fn triangle_of_inner_level_two_has_a_centre_point() {
     // ⌊2/2⌋ = 1 concentric triangle, degenerate to the centroid.
     let tri = triangle_domain(2.0, [1.0; 3], Spacing::Equal);
@@ -191,7 +191,7 @@ fn ring_corner(corner: DVec2, towards1: DVec2, towards2: DVec2, d: f64) -> DVec2
     corner + DVec2::new(c * e2.y - e1.y * c, e1.x * c - c * e2.x) / det
 }
 
-#[test]
+#[testkit::test]
 fn inner_triangles_follow_the_perpendicular_construction() {
     // Inner level 5, equal: rings at d = 1/5 (3 segments per edge) and
     // d = 2/5 (1 segment: the innermost triangle).
@@ -216,7 +216,7 @@ fn inner_triangles_follow_the_perpendicular_construction() {
     assert_eq!((tri.points.len(), tri.triangles.len()), (27, 37));
 }
 
-#[test]
+#[testkit::test]
 fn inner_level_three_makes_corners_at_five_ninths() {
     // Barycentric corner of the single inner triangle: (1 − 4d/3, 2d/3, 2d/3), d = 1/3.
     let tri = triangle_domain(3.0, [1.0; 3], Spacing::Equal);
@@ -232,7 +232,7 @@ fn inner_level_three_makes_corners_at_five_ninths() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn fractional_odd_inner_level_one_puts_inner_corners_on_the_edges() {
     // Inner 1 with an outer level above 1 counts as 1 + ε: 3 segments
     // whose two short ones have length ε/2 — the inner corners lie on the
@@ -319,7 +319,7 @@ fn spacing() -> impl Strategy<Value = Spacing> {
 proptest! {
     #![proptest_config(testkit::strategies::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn edge_subdivision_is_monotone_and_symmetric(level in level(), spacing in spacing()) {
         let d = subdivide_edge(level, spacing);
         let (f, n) = clamp_level(level, spacing);
@@ -339,7 +339,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn quad_domain_tiles_the_unit_square(inner in [level(), level()], outer in [level(), level(), level(), level()], spacing in spacing()) {
         let quad = quad_domain(inner, outer, spacing);
         let counts = outer.map(|l| clamp_level(l, spacing).1);
@@ -381,7 +381,7 @@ proptest! {
         assert_close(&edge(&|p| near(p.y, 1.0).then_some(p.x)), &subdivide_edge(outer[3], spacing), "v = 1");
     }
 
-    #[test]
+    #[testkit::test]
     fn triangle_domain_tiles_the_triangle(inner in level(), outer in [level(), level(), level()], spacing in spacing()) {
         let tri = triangle_domain(inner, outer, spacing);
         for p in &tri.points {

@@ -13,7 +13,7 @@ use tessellation::render::Style;
 use tessellation::uniform::tessellate_uniform;
 use tessellation::{DVec2, DVec3};
 
-#[test]
+#[testkit::test]
 fn grid_of_three_by_two_cells_is_numbered_row_by_row() {
     //   v ▲ 8───9──10──11
     //     │ 4───5───6───7
@@ -37,14 +37,14 @@ fn grid_of_three_by_two_cells_is_numbered_row_by_row() {
     assert_eq!(&mesh.triangles[10..], &[[6, 7, 11], [6, 11, 10]]);
 }
 
-#[test]
+#[testkit::test]
 fn seed_surface_at_25_samples_has_1152_triangles() {
     // The seed's initial mesh: sample_size = 25, i.e. 24 × 24 cells.
     let mesh = tessellate_uniform(&BezierPatch::seed_surface(), 24, 24).unwrap();
     assert_eq!((mesh.vertex_count(), mesh.triangle_count()), (625, 1152));
 }
 
-#[test]
+#[testkit::test]
 fn every_vertex_lies_on_the_surface_with_the_surface_normal() {
     let patch = BezierPatch::seed_surface();
     let mesh = tessellate_uniform(&patch, 7, 5).unwrap();
@@ -80,7 +80,7 @@ fn every_vertex_lies_on_the_surface_with_the_surface_normal() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn bilinear_patch_is_reproduced_exactly() {
     // A twisted bilinear patch: S(u, v) = (1−u)(1−v) P00 + u(1−v) P10 + (1−u)v P01 + uv P11.
     let corners = [
@@ -101,7 +101,7 @@ fn bilinear_patch_is_reproduced_exactly() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn one_cell_is_two_triangles() {
     let mesh = tessellate_uniform(&unit_plane(), 1, 1).unwrap();
     assert_eq!(mesh.triangles, [[0, 1, 3], [0, 3, 2]]);
@@ -124,7 +124,7 @@ fn one_cell_is_two_triangles() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn zero_and_huge_resolutions_are_errors() {
     let patch = unit_plane();
     assert_eq!(
@@ -141,13 +141,13 @@ fn zero_and_huge_resolutions_are_errors() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn seed_surface_shaded_matches_the_reference_image() {
     let mesh = tessellate_uniform(&BezierPatch::seed_surface(), 24, 24).unwrap();
     assert_picture("uniform_seed_shaded", &mesh, SEED_VIEW, Style::Shaded);
 }
 
-#[test]
+#[testkit::test]
 fn seed_surface_wireframe_matches_the_reference_image() {
     let mesh = tessellate_uniform(&BezierPatch::seed_surface(), 12, 12).unwrap();
     assert_picture("uniform_seed_wireframe", &mesh, SEED_VIEW, Style::Wireframe);
@@ -172,7 +172,7 @@ fn any_patch() -> impl Strategy<Value = BezierPatch> {
 proptest! {
     #![proptest_config(testkit::strategies::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn mesh_tiles_the_parameter_square_and_lies_on_the_surface(patch in any_patch(), n_u in 1usize..12, n_v in 1usize..12) {
         let mesh = tessellate_uniform(&patch, n_u, n_v).unwrap();
         prop_assert_eq!(mesh.vertex_count(), (n_u + 1) * (n_v + 1));
@@ -185,7 +185,7 @@ proptest! {
     }
 }
 
-#[test]
+#[testkit::test]
 fn multi_patch_surface_matches_the_reference_image() {
     // Every patch of the example grid at the same 8 × 8 cells: neighbours
     // share their boundary points because they share the resolution.

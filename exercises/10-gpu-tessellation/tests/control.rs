@@ -61,7 +61,7 @@ fn close(gpu: f32, cpu: f32) -> bool {
     (gpu - cpu).abs() <= 1e-4 * cpu.abs() + 1e-3
 }
 
-#[test]
+#[testkit::test]
 fn uniform_levels_are_clamped_to_one_and_64() {
     let wgsl = control_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -87,7 +87,7 @@ fn uniform_levels_are_clamped_to_one_and_64() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
     let wgsl = control_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -139,7 +139,7 @@ fn neighbour_sharing_reversed_boundary(a: &BezierPatch, rest: &BezierPatch) -> B
 proptest! {
     #![proptest_config(ProptestConfig { cases: 12, ..testkit::proptest_config() })]
 
-    #[test]
+    #[testkit::test]
     fn adaptive_levels_follow_the_projected_control_polygon(
         patches in prop::collection::vec(common::patch(), 1..40),
         eye in (-1.5f32..1.5, -1.5f32..1.5, 3.0f32..6.0),
@@ -164,7 +164,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn a_shared_boundary_gets_bit_identical_levels_from_both_patches(
         pairs in prop::collection::vec((common::patch(), common::patch()), 1..20),
         eye in (-1.5f32..1.5, -1.5f32..1.5, 3.0f32..6.0),

@@ -108,7 +108,7 @@ fn triangle_cross_length(t: &BezierTriangle, uvw: DVec3) -> f64 {
     dv.cross(dw).length()
 }
 
-#[test]
+#[testkit::test]
 fn patch_corners_are_the_corner_control_points() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -134,7 +134,7 @@ fn patch_corners_are_the_corner_control_points() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn flat_patch_has_the_planes_normal_everywhere() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -152,7 +152,7 @@ fn flat_patch_has_the_planes_normal_everywhere() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn normal_uses_the_surface_tangent_not_the_last_rows() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -179,7 +179,7 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
     }
 }
 
-#[test]
+#[testkit::test]
 fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -204,7 +204,7 @@ fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 12, ..testkit::proptest_config() })]
 
-    #[test]
+    #[testkit::test]
     fn random_patches_match_the_cpu_evaluation(
         patches in prop::collection::vec(common::patch(), 1..6),
         levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0, 0.5f32..20.0), 6),
@@ -228,7 +228,7 @@ proptest! {
         }
     }
 
-    #[test]
+    #[testkit::test]
     fn random_bezier_triangles_match_the_cpu_evaluation(
         triangles in prop::collection::vec(common::triangle(), 1..6),
         levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0), 6),
@@ -253,7 +253,7 @@ proptest! {
     }
 }
 
-#[test]
+#[testkit::test]
 fn pn_triangle_interpolates_its_vertices_and_normals() {
     let wgsl = evaluation_wgsl();
     let Some(gpu) = common::gpu() else { return };

@@ -101,7 +101,7 @@ fn cpu_render(patches: &[(BezierPatch, Vec2, Vec2)]) -> Canvas {
     })
 }
 
-#[test]
+#[testkit::test]
 fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
     let wgsl = shading_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -119,7 +119,7 @@ fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
 ///  |     +-----+     |
 ///  +-----------------+
 /// ```
-#[test]
+#[testkit::test]
 fn the_nearer_of_two_overlapping_patches_is_kept() {
     let wgsl = shading_wgsl();
     let Some(gpu) = common::gpu() else { return };
@@ -149,7 +149,7 @@ fn brute_force_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 
-    #[test]
+    #[testkit::test]
     fn wireframe_edges_are_each_edge_once_sorted(
         triangles in prop::collection::vec(prop::array::uniform3(0u32..12), 0..30),
     ) {
@@ -157,7 +157,7 @@ proptest! {
     }
 }
 
-#[test]
+#[testkit::test]
 fn wireframe_of_a_domain_obeys_eulers_formula() {
     for level in [1.0, 2.0, 5.0, 7.5, 32.0] {
         let d = quad_domain(QuadLevels::uniform(level), Spacing::Equal);
@@ -180,7 +180,7 @@ fn segment_distance(p: Vec2, a: Vec2, b: Vec2) -> f32 {
     p.distance(a + t * (b - a))
 }
 
-#[test]
+#[testkit::test]
 fn wireframe_lines_lie_on_the_tessellations_edges() {
     let domain = quad_domain(QuadLevels::uniform(4.0), Spacing::Equal);
     let edges = wireframe_edges(&domain.triangles);

@@ -151,7 +151,7 @@ fn quadratic_lens() -> TrimShape {
     }
 }
 
-#[test]
+#[testkit::test]
 fn rectangle_trims_the_closed_box() {
     check(
         "trim_rectangle",
@@ -162,7 +162,7 @@ fn rectangle_trims_the_closed_box() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn circle_trims_its_open_disk() {
     check(
         "trim_circle",
@@ -173,7 +173,7 @@ fn circle_trims_its_open_disk() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn ellipse_trims_its_closed_inside() {
     check(
         "trim_ellipse",
@@ -184,7 +184,7 @@ fn ellipse_trims_its_closed_inside() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn several_shapes_trim_their_union() {
     check(
         "trim_union",
@@ -205,12 +205,12 @@ fn several_shapes_trim_their_union() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn quadratic_bezier_region_is_trimmed_by_newton() {
     check("trim_bezier_quadratic", vec![quadratic_lens()]);
 }
 
-#[test]
+#[testkit::test]
 fn cubic_bezier_region_is_trimmed_by_newton() {
     let (l, r) = (Vec2::new(0.15, 0.45), Vec2::new(0.85, 0.45));
     check(
@@ -228,7 +228,7 @@ fn cubic_bezier_region_is_trimmed_by_newton() {
 ///    |   (island)   |     the inner lens stays
 ///     \____________/
 /// ```
-#[test]
+#[testkit::test]
 fn nested_regions_keep_the_inner_island() {
     let (l, r) = (Vec2::new(0.35, 0.5), Vec2::new(0.65, 0.5));
     check(
@@ -246,7 +246,7 @@ fn nested_regions_keep_the_inner_island() {
     );
 }
 
-#[test]
+#[testkit::test]
 fn one_newton_step_or_a_coarse_epsilon_trims_less() {
     let wgsl = trimming_wgsl();
     let Some(gpu) = common::gpu() else { return };

@@ -10,6 +10,12 @@
 //!   │ compile error: all its tasks fail, other topics go on            │
 //!   └─────────────────────> Report ──> table, report.json, results.json, junit.xml, report.html
 //! ```
+//!
+//! What a grade promises: each test runs in a bubblewrap sandbox
+//! ([`run::Sandbox`]) where one can be had, and a test passed only when it
+//! exited with status 0 and printed the random token the grader made for
+//! that run ([`outcome::judge`]; the test side is `crates/testkit-macros`),
+//! so student code that prints a passing summary and exits has not passed.
 
 mod build;
 mod export;
@@ -380,6 +386,7 @@ fn plan(
                 env_remove: ENV_REMOVE.to_vec(),
                 time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
                 memory_limit_mib: topic.sheet.memory_limit_mib,
+                verdict_file: scratch.join(".testkit-verdict"),
                 log: out
                     .join("logs")
                     .join(&topic.name)
@@ -601,11 +608,9 @@ fn ignored_test(name: String) -> TestReport {
 }
 
 fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
-    let verdict = outcome::judge(&run.output, &run.exit, time_limit_s);
+    let verdict = outcome::judge(&run.output, &run.exit, &run.token, time_limit_s);
     let status = if verdict.passed {
         TestStatus::Passed
-    } else if verdict.ignored {
-        TestStatus::Ignored
     } else {
         TestStatus::Failed
     };

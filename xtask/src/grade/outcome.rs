@@ -29,10 +29,13 @@ use serde::{Deserialize, Serialize};
 pub const RASTER_DIFF_BEGIN: &str = "--- raster diff: expected vs yours ---";
 /// The line that closes a raster diff (testkit's `RASTER_DIFF_END`).
 pub const RASTER_DIFF_END: &str = "--- end raster diff ---";
-/// What libtest prints when the one selected test passed.
+/// What a `#[testkit::test]` prints, before its token, once every
+/// assertion has held (`crates/testkit-macros` writes it; repeated here so
+/// that xtask needs no course crate).
+pub const VERDICT_PREFIX: &str = "testkit verdict: passed ";
+/// What libtest prints when the one selected test passed: not proof of a
+/// pass (the code under test can print it), only a hint of a forgery.
 const PASSED_SUMMARY: &str = "test result: ok. 1 passed";
-/// What libtest prints when the one selected test is `#[ignore]`d.
-const IGNORED_SUMMARY: &str = "test result: ok. 0 passed; 0 failed; 1 ignored";
 /// The message of `todo!()` (and of `unimplemented!` with "not implemented").
 const TODO_PREFIX: &str = "not yet implemented";
 /// proptest's prefix of a failed property.
@@ -61,10 +64,8 @@ pub struct Exit {
 /// The verdict on one test run.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Verdict {
-    /// Status 0 and libtest's `1 passed`.
+    /// Status 0 and the run's token after [`VERDICT_PREFIX`].
     pub passed: bool,
-    /// The test is `#[ignore]`d (counted neither way).
-    pub ignored: bool,
     /// Why it failed, in one short paragraph for a student.
     pub reason: Option<String>,
     /// `file:line:col` of the final panic.
@@ -140,19 +141,22 @@ struct Panic {
     message: String,
 }
 
-/// Judges a finished test from its exit and its output. `time_limit_s` is
-/// only used to word the timeout reason.
+/// Judges a finished test from its exit and its output. A test passed
+/// when it exited with status 0 and printed [`VERDICT_PREFIX`] followed by
+/// `token`, the secret the grader gave this run alone (see
+/// `crates/testkit-macros`): neither libtest's summary nor the exit status
+/// is proof, since the code under test can print and exit as it likes.
+/// `time_limit_s` is only used to word the timeout reason.
 #[must_use]
-pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
-    if exit.code == Some(0) && output.contains(PASSED_SUMMARY) {
+pub fn judge(output: &str, exit: &Exit, token: &str, time_limit_s: f64) -> Verdict {
+    let confirmed = !token.is_empty()
+        && output
+            .lines()
+            .filter_map(|line| line.strip_prefix(VERDICT_PREFIX))
+            .any(|t| t.trim_end() == token);
+    if exit.code == Some(0) && confirmed {
         return Verdict {
             passed: true,
-            ..Verdict::default()
-        };
-    }
-    if exit.code == Some(0) && output.contains(IGNORED_SUMMARY) {
-        return Verdict {
-            ignored: true,
             ..Verdict::default()
         };
     }
@@ -225,6 +229,10 @@ pub fn judge(output: &str, exit: &Exit, time_limit_s: f64) -> Verdict {
         reason
     } else if output.contains("test result: FAILED") {
         "failed".to_owned()
+    } else if exit.code == Some(0) && output.contains(PASSED_SUMMARY) {
+        "the test did not run to its end: its process reported success without the grader's \
+         confirmation (did the code end the process, e.g. with `std::process::exit`?)"
+            .to_owned()
     } else {
         match exit.code {
             Some(code) => format!(
@@ -404,27 +412,52 @@ mod tests {
     }
 
     fn reason(output: &str, exit: &Exit) -> String {
-        judge(output, exit, 20.0)
+        judge(output, exit, TOKEN, 20.0)
             .reason
             .expect("a failure has a reason")
     }
 
-    const PASSED: &str = "\nrunning 1 test\ntest a ... ok\n\ntest result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 3 filtered out; finished in 0.00s\n\n";
+    const TOKEN: &str = "3f0c9a61d2b84e07a5c1e9d6b0f27c48";
+    const SUMMARY: &str = "\ntest result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 3 filtered out; finished in 0.00s\n\n";
+
+    fn passed_output(token: &str) -> String {
+        format!("\nrunning 1 test\ntest a ... \n{VERDICT_PREFIX}{token}\nok\n{SUMMARY}")
+    }
 
     #[test]
-    fn passes_only_with_status_zero_and_the_summary() {
-        assert!(judge(PASSED, &exit(0), 20.0).passed);
-        assert!(!judge(PASSED, &exit(1), 20.0).passed);
-        assert!(!judge("\nrunning 1 test\ntest a ... ", &exit(0), 20.0).passed);
+    fn passes_only_with_status_zero_and_this_runs_token() {
+        assert!(judge(&passed_output(TOKEN), &exit(0), TOKEN, 20.0).passed);
+        assert!(!judge(&passed_output(TOKEN), &exit(1), TOKEN, 20.0).passed);
+        assert!(!judge("\nrunning 1 test\ntest a ... ", &exit(0), TOKEN, 20.0).passed);
+        // Another run's token, a prefix of this one's, or none at all.
+        let other = "0123456789abcdef0123456789abcdef";
+        assert!(!judge(&passed_output(other), &exit(0), TOKEN, 20.0).passed);
+        assert!(!judge(&passed_output(&TOKEN[..8]), &exit(0), TOKEN, 20.0).passed);
+        assert!(!judge(&passed_output(""), &exit(0), "", 20.0).passed);
+    }
+
+    #[test]
+    fn a_forged_summary_and_exit_zero_fail_and_say_so() {
+        let forged = format!("\nrunning 1 test\ntest a ... ok\n{SUMMARY}");
+        let verdict = judge(&forged, &exit(0), TOKEN, 20.0);
+        assert!(!verdict.passed);
+        assert!(
+            verdict
+                .reason
+                .as_deref()
+                .unwrap()
+                .contains("did not run to its end"),
+            "{verdict:?}"
+        );
+        // An `#[ignore]`d test is never run, so its summary is a forgery too.
         let ignored = "running 1 test\ntest a ... ignored\n\ntest result: ok. 0 passed; 0 failed; 1 ignored; 0 measured; 3 filtered out\n";
-        let verdict = judge(ignored, &exit(0), 20.0);
-        assert!(verdict.ignored && !verdict.passed);
+        assert!(!judge(ignored, &exit(0), TOKEN, 20.0).passed);
     }
 
     #[test]
     fn assertion_message_is_the_lines_up_to_the_note() {
         let output = "\nrunning 1 test\ntest panics ... \nthread 'panics' (4568) panicked at tests/t.rs:2:23:\nassertion `left == right` failed: values differ\n  left: 1\n right: 2\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\nFAILED\n\nfailures:\n\nfailures:\n    panics\n\ntest result: FAILED. 0 passed; 1 failed; 0 ignored\n";
-        let verdict = judge(output, &exit(101), 20.0);
+        let verdict = judge(output, &exit(101), TOKEN, 20.0);
         assert_eq!(
             verdict.reason.as_deref(),
             Some("panicked: assertion `left == right` failed: values differ\n  left: 1\n right: 2")
@@ -446,7 +479,7 @@ mod tests {
     #[test]
     fn last_panic_wins_and_header_may_follow_libtest_text() {
         let output = "test multi ... thread 'multi' (1) panicked at a.rs:1:1:\ncase 0\nnote: run with `RUST_BACKTRACE=1` environment variable\n\nthread 'multi' (1) panicked at a.rs:1:2:\ncase 1\n\nthread 'multi' panicked at a.rs:1:3:\nfinal\nline2\nFAILED\n\nfailures:\n";
-        let verdict = judge(output, &exit(101), 20.0);
+        let verdict = judge(output, &exit(101), TOKEN, 20.0);
         assert_eq!(verdict.reason.as_deref(), Some("panicked: final\nline2"));
         assert_eq!(verdict.panic_location.as_deref(), Some("a.rs:1:3"));
         let old_style = "thread 'x' panicked at 'boom', src/lib.rs:1:1\nnote: run\n";
@@ -458,7 +491,7 @@ mod tests {
         let output = format!(
             "thread 't' panicked at tests/dda.rs:9:5:\nsteep line: the pixels differ\n{RASTER_DIFF_BEGIN}\nlegend\n2 |.+\n1 |#-\n{RASTER_DIFF_END}\nnote: run with\nFAILED\n"
         );
-        let verdict = judge(&output, &exit(101), 20.0);
+        let verdict = judge(&output, &exit(101), TOKEN, 20.0);
         assert_eq!(
             verdict.reason.as_deref(),
             Some("panicked: steep line: the pixels differ")
@@ -473,7 +506,7 @@ mod tests {
         let output = format!(
             "test p ... \nthread 'p' panicked at tests/dda.rs:9:5:\nfirst {RASTER_DIFF_BEGIN}\n\nthread 'p' panicked at tests/dda.rs:9:5:\nstep\n\nthread 'p' panicked at tests/dda.rs:20:1:\nTest failed: covers both ends\n{RASTER_DIFF_BEGIN}\n1 |#-\n{RASTER_DIFF_END}.\nminimal failing input: line = Line {{\n    a: 1.0,\n}}\n\tsuccesses: 3\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n"
         );
-        let verdict = judge(&output, &exit(101), 20.0);
+        let verdict = judge(&output, &exit(101), TOKEN, 20.0);
         assert_eq!(
             verdict.reason.as_deref(),
             Some("panicked: covers both ends")
@@ -486,7 +519,7 @@ mod tests {
         assert_eq!(verdict.panic_location.as_deref(), Some("tests/dda.rs:20:1"));
 
         let todo = "thread 'p' panicked at tests/dda.rs:20:1:\nTest failed: not yet implemented: dda: draw it.\nminimal failing input: a = 0.0, b = 1.0\n\tsuccesses: 0\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n";
-        let verdict = judge(todo, &exit(101), 20.0);
+        let verdict = judge(todo, &exit(101), TOKEN, 20.0);
         assert_eq!(
             verdict.reason.as_deref(),
             Some("not implemented yet: dda: draw it")
@@ -518,7 +551,7 @@ snapshot assertion for 'octants' failed in line 73
 note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace
 FAILED
 ";
-        let verdict = judge(output, &exit(101), 20.0);
+        let verdict = judge(output, &exit(101), TOKEN, 20.0);
         assert_eq!(
             verdict.reason.as_deref(),
             Some(
@@ -547,7 +580,7 @@ FAILED
             "timed out after 20 s (infinite loop?)"
         );
         assert_eq!(
-            judge("", &timed_out, 2.5).reason.as_deref(),
+            judge("", &timed_out, TOKEN, 2.5).reason.as_deref(),
             Some("timed out after 2.5 s (infinite loop?)")
         );
         let flood = Exit {

@@ -146,7 +146,7 @@ pub struct TaskReport {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TestStatus {
-    /// Exit status 0 and libtest's `1 passed`.
+    /// Exit status 0 and the run's token (see [`super::outcome::judge`]).
     Passed,
     /// Anything else.
     Failed,

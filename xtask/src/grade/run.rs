@@ -42,6 +42,10 @@ const SIGNAL_EXIT_BASE: i32 = 128;
 /// The exit code after an interrupt (128 + SIGINT, as shells report it).
 const INTERRUPTED_EXIT_CODE: i32 = SIGNAL_EXIT_BASE + 2;
 
+/// The environment variable that names a test's token file (see
+/// `crates/testkit-macros`, which reads it).
+pub const VERDICT_FILE_VAR: &str = "TESTKIT_VERDICT_FILE";
+
 /// The process groups of the tests running now.
 static RUNNING: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
 
@@ -87,7 +91,11 @@ impl Sandbox {
     /// `bwrap` and its options, up to the program it runs.
     fn command(&self, cwd: &Path) -> Command {
         let mut command = Command::new(&self.program);
-        command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc"]);
+        // No `/proc`: neither the grader nor another test is visible, and a
+        // test cannot read its own memory or first environment through
+        // `/proc/self` (see `crates/testkit-macros`). The root's bind would
+        // show the host's `/proc`, so an empty one covers it.
+        command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--tmpfs", "/proc"]);
         command.args(["--tmpfs", "/tmp"]);
         if let Some(home) = std::env::var_os("HOME").filter(|h| Path::new(h) != Path::new("/")) {
             command.arg("--tmpfs").arg(home);
@@ -134,6 +142,9 @@ pub struct TestCommand {
     pub memory_limit_mib: u64,
     /// Where stdout and stderr go.
     pub log: PathBuf,
+    /// Where the run's secret token is written for the test to take (in
+    /// the test's own scratch folder, which no other test can see).
+    pub verdict_file: PathBuf,
     /// The sandbox, or `None` to run unsandboxed.
     pub sandbox: Option<Sandbox>,
 }
@@ -147,6 +158,8 @@ pub struct Finished {
     pub duration: Duration,
     /// Its output (the end of it, when long), lossily decoded.
     pub output: String,
+    /// The secret a passed test prints (see [`super::outcome::judge`]).
+    pub token: String,
 }
 
 impl Finished {
@@ -160,6 +173,7 @@ impl Finished {
             },
             duration: Duration::ZERO,
             output: String::new(),
+            token: String::new(),
         }
     }
 }
@@ -215,6 +229,7 @@ impl TestCommand {
             command.env_remove(name);
         }
         command.envs(self.env.iter().map(|(k, v)| (k, v)));
+        command.env(VERDICT_FILE_VAR, &self.verdict_file);
         command
     }
 
@@ -227,6 +242,13 @@ impl TestCommand {
         for dir in self.sandbox.iter().flat_map(|s| &s.writable) {
             fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
         }
+        let token = new_token()?;
+        if let Some(parent) = self.verdict_file.parent() {
+            fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        fs::write(&self.verdict_file, &token)
+            .with_context(|| format!("cannot write {}", self.verdict_file.display()))?;
         let log = File::create(&self.log)
             .with_context(|| format!("cannot create the log {}", self.log.display()))?;
         // Both streams share one file description, so they interleave in order.
@@ -258,6 +280,8 @@ impl TestCommand {
         };
         let duration = start.elapsed();
         kill_group(child.id());
+        // A test that never started its body leaves the token behind.
+        let _ = fs::remove_file(&self.verdict_file);
         if let Ok(mut running) = RUNNING.lock() {
             running.remove(&child.id());
         }
@@ -292,8 +316,18 @@ impl TestCommand {
             exit,
             duration,
             output,
+            token,
         })
     }
+}
+
+/// 128 random bits from the operating system, in hex: a token no test can
+/// guess, fresh for every run.
+fn new_token() -> Result<String> {
+    let mut bytes = [0_u8; 16];
+    getrandom::fill(&mut bytes)
+        .map_err(|e| anyhow::anyhow!("no random numbers for a token: {e}"))?;
+    Ok(bytes.iter().map(|b| format!("{b:02x}")).collect())
 }
 
 /// Kills what is left of the process group `pgid` (the test's own, see

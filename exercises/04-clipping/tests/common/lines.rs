@@ -38,14 +38,14 @@ macro_rules! line_clipping_spec {
             }
         }
 
-        #[test]
+        #[testkit::test]
         fn segment_inside_is_unchanged() {
             for seg in [s(1.0, 2.0, 9.0, 7.5), s(0.0, 0.0, 10.0, 10.0), s(3.0, 3.0, 3.0, 3.0)] {
                 assert_eq!(clip(seg, ten()), Some(seg));
             }
         }
 
-        #[test]
+        #[testkit::test]
         fn horizontal_segment_is_cut_at_both_sides_keeping_its_direction() {
             //   ─ ─ ┌──────────┐─ ─ →       (−5, 5) → (15, 5)
             //       │●────────●│            becomes (0, 5) → (10, 5)
@@ -56,7 +56,7 @@ macro_rules! line_clipping_spec {
             assert_eq!(clip(s(5.0, 15.0, 5.0, -5.0), ten()), Some(s(5.0, 10.0, 5.0, 0.0)));
         }
 
-        #[test]
+        #[testkit::test]
         fn diagonal_segment_is_cut_at_two_borders() {
             // y = x / 2 + 4 from x = −4 to x = 16: enters at (0, 4), leaves
             // the top at (12, 10)... past the right border first, at (10, 9).
@@ -68,7 +68,7 @@ macro_rules! line_clipping_spec {
             assert_close(clip(s(-2.0, -6.0, 8.0, 14.0), ten()), Some(s(1.0, 0.0, 6.0, 10.0)));
         }
 
-        #[test]
+        #[testkit::test]
         fn segment_touching_a_corner_is_that_point() {
             //        ╲
             //         ●┌───     (−1, 1) → (1, −1) meets the window only
@@ -78,7 +78,7 @@ macro_rules! line_clipping_spec {
                 "{got:?}");
         }
 
-        #[test]
+        #[testkit::test]
         fn segments_that_miss_are_rejected() {
             // Both endpoints beyond the same border (trivial reject).
             assert_eq!(clip(s(-5.0, -1.0, 15.0, -1.0), ten()), None);
@@ -96,7 +96,7 @@ macro_rules! line_clipping_spec {
             assert_eq!(clip(s(-1.0, 5.0, -1.0, 5.0), ten()), None);
         }
 
-        #[test]
+        #[testkit::test]
         fn viewport_window_reaches_half_a_pixel_beyond_the_border_pixels() {
             // Pixels 0..=9 cover [−½, 9½] (slides: y_min − 0.5, y_max + 0.5).
             let window = ClipWindow::from_viewport(Viewport::new(0, 0, 9, 9)).expect("non-empty");
@@ -105,7 +105,7 @@ macro_rules! line_clipping_spec {
             assert_eq!(clip(s(-0.6, 0.0, -0.6, 9.0), window), None);
         }
 
-        #[test]
+        #[testkit::test]
         fn degenerate_windows_clip_to_a_line_or_a_point() {
             let line = ClipWindow::try_new(Vec2::new(0.0, 2.0), Vec2::new(10.0, 2.0)).expect("valid");
             assert_eq!(clip(s(-5.0, 2.0, 15.0, 2.0), line), Some(s(0.0, 2.0, 10.0, 2.0)));
@@ -113,7 +113,7 @@ macro_rules! line_clipping_spec {
             assert_eq!(clip(s(0.0, 3.0, 4.0, 3.0), line), None);
         }
 
-        #[test]
+        #[testkit::test]
         fn very_long_segments_are_cut_to_the_window() {
             let m = MAX_COORD as f32;
             let got = clip(s(-m, -m, m, m), ten()).expect("crosses the window");
@@ -122,7 +122,7 @@ macro_rules! line_clipping_spec {
             assert_eq!(got, s(0.0, 5.0, 10.0, 5.0));
         }
 
-        #[test]
+        #[testkit::test]
         fn bad_endpoints_are_errors_not_panics() {
             let window = ten();
             for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
@@ -138,7 +138,7 @@ macro_rules! line_clipping_spec {
         proptest! {
             #![proptest_config(testkit::proptest_config())]
 
-            #[test]
+            #[testkit::test]
             fn visible_part_is_the_definitions(
                 segment in common::segment(),
                 window in common::window(),
@@ -149,7 +149,7 @@ macro_rules! line_clipping_spec {
                 }
             }
 
-            #[test]
+            #[testkit::test]
             fn result_lies_in_the_window_on_the_segment_in_its_direction(
                 segment in common::segment(),
                 window in common::window(),
@@ -169,7 +169,7 @@ macro_rules! line_clipping_spec {
                 }
             }
 
-            #[test]
+            #[testkit::test]
             fn clipping_twice_changes_nothing(
                 segment in common::segment(),
                 window in common::window(),
@@ -186,7 +186,7 @@ macro_rules! line_clipping_spec {
                 }
             }
 
-            #[test]
+            #[testkit::test]
             fn reversed_segment_gives_the_reversed_piece(
                 segment in common::segment(),
                 window in common::window(),
