@@ -40,9 +40,13 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
-    /// The project's test command: stubs in sync, reference scores 100 %, stubs score 0,
-    /// the student edition builds.
-    Test,
+    /// The project's test command: stubs in sync, reference scores 100 %, stubs and a
+    /// do-nothing edition score 0, the student edition builds.
+    Test {
+        /// Run only these steps (numbers as the summary shows them, e.g. `--step 7`).
+        #[arg(long = "step", value_name = "N")]
+        steps: Vec<usize>,
+    },
     /// Write the solution workspace (the course with reference/ laid over the stubs) to DIR,
     /// to open in an editor.
     Stage {
@@ -127,7 +131,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Grade(args) => grade(root, args),
         Command::Stubs { check } => stubs::run(&root, check),
-        Command::Test => test::run(&root),
+        Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
         Command::Release { dir, topics } => release::run(&root, &dir, &topics),

@@ -102,7 +102,15 @@ pub enum Overlay<'a> {
     /// stubs; everything else, `lib.rs` and given code included, stays the
     /// course's. A task file the submission lacks keeps its stub.
     Submission(&'a Path),
+    /// The stubs with each `todo!()` replaced by the cheapest body that
+    /// compiles (see `stubs::do_nothing`), except on the lines listed per
+    /// task file: the edition every task must score 0 with.
+    DoNothing(&'a DoNothingKeep),
 }
+
+/// Lines (1-based) of task files whose `todo!()` the do-nothing edition
+/// keeps, by the file's path in the course.
+pub type DoNothingKeep = std::collections::BTreeMap<PathBuf, Vec<usize>>;
 
 /// Every file under `root`, relative to it and sorted, skipping
 /// [`SKIPPED_FOLDERS`] at any depth and [`SOLUTIONS`] at the top. Symbolic links are neither listed nor
@@ -198,6 +206,17 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
                     files.retain(|(to, _)| *to != staged);
                     files.push((staged, Source::File(source)));
                 }
+            }
+        }
+        Overlay::DoNothing(keep) => {
+            for task_file in task_files(root)? {
+                let path = root.join(&task_file);
+                let stub = fs::read_to_string(&path)
+                    .with_context(|| format!("cannot read {}", path.display()))?;
+                let lines = keep.get(&task_file).map_or(&[][..], Vec::as_slice);
+                let (text, _) = crate::stubs::do_nothing(&stub, lines);
+                files.retain(|(to, _)| *to != task_file);
+                files.push((task_file, Source::Text(text.into_bytes())));
             }
         }
         Overlay::Submission(submission) => {

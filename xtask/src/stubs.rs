@@ -29,7 +29,10 @@ use anyhow::{Context, Result, bail};
 
 use crate::topics::{self, Topic};
 
+mod do_nothing;
 pub mod quiet;
+
+pub use do_nothing::do_nothing;
 
 /// Opens a solution region; may be followed by `<task>: <instruction>`.
 const BEGIN_MARKER: &str = "// BEGIN SOLUTION";

@@ -20,21 +20,28 @@
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
 
-use std::path::Path;
+use std::collections::BTreeSet;
+use std::fs;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail, ensure};
 
 use crate::cargo;
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
-use crate::stage::{self, Overlay};
+use crate::stage::{self, DoNothingKeep, Overlay};
 use crate::{release, setup, stubs, topics};
+
+/// The tests known to pass against the do-nothing edition (see
+/// [`do_nothing_scores_zero`]), one `topic/task/test` per line.
+const DO_NOTHING_PASSES: &str = "xtask/tests/do_nothing_passes.txt";
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
 
-/// Runs the four steps and prints a summary; fails if any step failed.
-pub fn run(root: &Path) -> Result<()> {
+/// Runs the steps (all, or those numbered in `only`) and prints a
+/// summary; fails if any step failed.
+pub fn run(root: &Path, only: &[usize]) -> Result<()> {
     // GPU topics need a Vulkan driver; an error in the topics themselves
     // is reported by the steps below.
     if topics::discover(root).is_ok_and(|topics| topics.iter().any(|t| t.sheet.gpu)) {
@@ -67,12 +74,25 @@ pub fn run(root: &Path) -> Result<()> {
             Box::new(|| clippy(root, Overlay::Own)),
         ),
         (
+            "a do-nothing edition scores 0 (beyond the tests still listed as vacuous)",
+            Box::new(|| do_nothing_scores_zero(root)),
+        ),
+        (
             "the student edition builds, fails only at todo!() and grades",
             Box::new(|| student_edition(root)),
         ),
     ];
+    if let Some(unknown) = only.iter().find(|&&n| n == 0 || n > steps.len()) {
+        bail!(
+            "there is no step {unknown}: the steps are 1 to {}",
+            steps.len()
+        );
+    }
     let mut results: Vec<(&str, Result<String>, Duration)> = Vec::new();
     for (number, (title, step)) in steps.iter().enumerate() {
+        if !only.is_empty() && !only.contains(&(number + 1)) {
+            continue;
+        }
         println!();
         println!("==> [{}/{}] {title}", number + 1, steps.len());
         let started = Instant::now();
@@ -268,6 +288,119 @@ fn stubs_score_zero(root: &Path) -> Result<String> {
         report.duration_s,
         failed.len()
     ))
+}
+
+/// A do-nothing edition (every `todo!()` replaced by the cheapest body
+/// that compiles) scores 0 on every task: no test pays for doing nothing,
+/// beyond the tests still listed in [`DO_NOTHING_PASSES`].
+fn do_nothing_scores_zero(root: &Path) -> Result<String> {
+    // A body that does not compile (a return type without `Default`) keeps
+    // its `todo!()`: the errors name the lines, a few rounds at most.
+    let mut keep = DoNothingKeep::new();
+    for round in 1.. {
+        let staged = stage::stage(root, Overlay::DoNothing(&keep), None)?;
+        let mut command = staged.cargo();
+        command.args(["check", "--workspace", "--lib", "--message-format", "short"]);
+        let (compiles, output) = run_captured(&mut command)?;
+        if compiles {
+            break;
+        }
+        let mut new = 0;
+        for (file, line) in error_lines(&output) {
+            let lines = keep.entry(file).or_default();
+            if !lines.contains(&line) {
+                lines.push(line);
+                new += 1;
+            }
+        }
+        if new == 0 || round == 5 {
+            bail!(
+                "the do-nothing edition does not compile:\n{}",
+                tail(&output, 30)
+            );
+        }
+    }
+    let report = grade_into(root, Overlay::DoNothing(&keep), "do-nothing")?;
+    let known_path = root.join(DO_NOTHING_PASSES);
+    let known_text = fs::read_to_string(&known_path).unwrap_or_default();
+    let known: BTreeSet<&str> = known_text
+        .lines()
+        .map(str::trim)
+        .filter(|line| !line.is_empty() && !line.starts_with('#'))
+        .collect();
+    let mut paying = BTreeSet::new();
+    let mut problems = Vec::new();
+    for topic in &report.topics {
+        for task in topic.tasks.iter().filter(|t| t.score > 0.0) {
+            let passing: Vec<String> = task
+                .tests
+                .iter()
+                .filter(|t| t.status == TestStatus::Passed)
+                .map(|t| format!("{}/{}/{}", topic.name, task.id, t.name))
+                .collect();
+            let new: Vec<&str> = passing
+                .iter()
+                .map(String::as_str)
+                .filter(|t| !known.contains(t))
+                .collect();
+            if !new.is_empty() {
+                problems.push(format!(
+                    "{} / {}: {} of {} points for doing nothing; not listed in {DO_NOTHING_PASSES}: {}",
+                    topic.name,
+                    task.id,
+                    task.score,
+                    task.points,
+                    new.join(", ")
+                ));
+            }
+            paying.extend(passing);
+        }
+    }
+    for stale in known.iter().filter(|t| !paying.contains(**t)) {
+        problems.push(format!(
+            "{stale} no longer passes against the do-nothing edition: delete its line from {DO_NOTHING_PASSES}"
+        ));
+    }
+    if !problems.is_empty() {
+        bail!(
+            "the do-nothing edition scores {} of {} points; {} problem(s):\n  {}",
+            report.score,
+            report.max_score,
+            problems.len(),
+            problems.join("\n  ")
+        );
+    }
+    let kept: usize = keep.values().map(Vec::len).sum();
+    let known_note = if known.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "; {} known test(s) still pass for nothing ({} points), listed in {DO_NOTHING_PASSES}",
+            known.len(),
+            report.score
+        )
+    };
+    Ok(format!(
+        "{} of {} points in {:.1} s ({kept} todo!() kept where no cheap body compiles){known_note}",
+        report.score, report.max_score, report.duration_s
+    ))
+}
+
+/// `(file, line)` of each error in cargo's `--message-format short`
+/// output that lies in a task file (`exercises/…`).
+fn error_lines(output: &str) -> Vec<(PathBuf, usize)> {
+    output
+        .lines()
+        .filter_map(|line| {
+            let (place, _) = line.split_once(": error")?;
+            let mut parts = place.rsplitn(3, ':');
+            let _column = parts.next()?;
+            let number = parts.next()?.parse().ok()?;
+            let file = parts.next()?;
+            file.starts_with("exercises/")
+                .then(|| (PathBuf::from(file), number))
+        })
+        .collect()
 }
 
 /// The panic messages of the failed tests in `cargo test` output that are

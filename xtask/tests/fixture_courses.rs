@@ -582,15 +582,16 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/7]",
-        "==> [2/7]",
-        "==> [3/7] reference solutions are clippy-clean",
-        "==> [4/7]",
-        "==> [5/7]",
-        "==> [6/7] the stubs are clippy-clean",
-        "==> [7/7] the student edition",
+        "==> [1/8]",
+        "==> [2/8]",
+        "==> [3/8] reference solutions are clippy-clean",
+        "==> [4/8]",
+        "==> [5/8]",
+        "==> [6/8] the stubs are clippy-clean",
+        "==> [7/8] a do-nothing edition scores 0",
+        "==> [8/8] the student edition",
         "==> summary",
-        "all 7 steps passed",
+        "all 8 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
@@ -603,8 +604,15 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "no solutions in the edition"
     );
 
-    // A "stub" that already solves its task breaks steps 1, 5 and 7 (the
-    // edition students get would pay for it too).
+    // A "stub" that already solves its task breaks steps 1, 5, 7 and 8
+    // (the edition students get would pay for it too); a test listed as
+    // passing against the do-nothing edition that no longer does is named.
+    fs::create_dir_all(root.join("xtask/tests")).unwrap();
+    fs::write(
+        root.join("xtask/tests/do_nothing_passes.txt"),
+        "# known\n01-tiny/double/doubles_nothing\n",
+    )
+    .unwrap();
     let stub = root.join("exercises/01-tiny/src/ops.rs");
     let text = fs::read_to_string(&stub).unwrap();
     fs::write(
@@ -625,8 +633,20 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "{text}"
     );
     assert!(
-        text.contains("3 of 7 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("3 of 7 steps failed"),
+        text.contains(
+            "01-tiny / negate: 1 of 1 points for doing nothing; not listed in xtask/tests/do_nothing_passes.txt: 01-tiny/negate/negates"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "01-tiny/double/doubles_nothing no longer passes against the do-nothing edition"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("4 of 8 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("4 of 8 steps failed"),
         "{text}"
     );
 }

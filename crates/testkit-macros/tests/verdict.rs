@@ -53,7 +53,13 @@ fn run(name: &str) -> (String, bool) {
     let file = dir.join("token");
     std::fs::write(&file, TOKEN).unwrap();
     let output = Command::new(std::env::current_exe().unwrap())
-        .args(["--exact", name, "--ignored", "--nocapture", "--test-threads=1"])
+        .args([
+            "--exact",
+            name,
+            "--ignored",
+            "--nocapture",
+            "--test-threads=1",
+        ])
         .env("TESTKIT_VERDICT_FILE", &file)
         .output()
         .unwrap();

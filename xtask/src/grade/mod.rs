@@ -130,7 +130,7 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
     in_stage.target_dir = Some(staged.target_dir.clone());
     let edition = match overlay {
         Overlay::Reference => Edition::Reference,
-        Overlay::Own | Overlay::Submission(_) => Edition::Student,
+        Overlay::Own | Overlay::Submission(_) | Overlay::DoNothing(_) => Edition::Student,
     };
     let mut report = grade_tree(&in_stage, edition)?;
     report.root = root;

@@ -137,7 +137,7 @@ pub fn has_word(text: &str, word: &str) -> bool {
 }
 
 /// The identifier at the start of `text`, if any.
-fn identifier(text: &str) -> Option<&str> {
+pub(super) fn identifier(text: &str) -> Option<&str> {
     let end = text
         .find(|c: char| !(c.is_alphanumeric() || c == '_'))
         .unwrap_or(text.len());
@@ -149,7 +149,7 @@ fn identifier(text: &str) -> Option<&str> {
 
 /// The offset of the bracket that closes the one at `open`, counting
 /// `()[]{}` (and `<>` when `angles`, where `->` is not a bracket).
-fn closing(text: &str, open: usize, angles: bool) -> Option<usize> {
+pub(super) fn closing(text: &str, open: usize, angles: bool) -> Option<usize> {
     let bytes = text.as_bytes();
     let mut depth = 0i32;
     for (i, &b) in bytes.iter().enumerate().skip(open) {
