@@ -47,6 +47,8 @@ fn horizontal_line_between_rows_splits_them_evenly() {
 #[testkit::test]
 fn zero_length_line_draws_nothing() {
     assert!(area(Vec2::new(2.0, 2.0), Vec2::new(2.0, 2.0)).is_empty());
+    // Half a pixel of length already covers something.
+    assert!(!area(Vec2::new(2.0, 2.0), Vec2::new(2.5, 2.0)).is_empty());
 }
 
 #[testkit::test]
@@ -72,6 +74,9 @@ proptest! {
     #[testkit::test]
     fn intensity_is_in_zero_to_one_and_no_pixel_repeats(from in point(40.0), to in point(40.0)) {
         let got = area(from, to);
+        if from.distance(to) >= 0.5 {
+            prop_assert!(!got.is_empty(), "{from} -> {to} covers no pixel");
+        }
         let mut seen = std::collections::HashSet::new();
         for (p, w) in got {
             prop_assert!(w > 0.0 && w <= 1.0, "pixel {p}: intensity {w}");
@@ -83,6 +88,9 @@ proptest! {
     fn reversed_line_gives_the_same_intensities(from in point(40.0), to in point(40.0)) {
         let mut forward = area(from, to);
         let mut backward = area(to, from);
+        if from.distance(to) >= 0.5 {
+            prop_assert!(!forward.is_empty(), "{from} -> {to} covers no pixel");
+        }
         forward.sort_by_key(|&(p, _)| p);
         backward.sort_by_key(|&(p, _)| p);
         prop_assert_eq!(forward.len(), backward.len());
@@ -99,5 +107,7 @@ proptest! {
             prop_assert!(area(a, b).is_empty());
             prop_assert!(area(b, a).is_empty());
         }
+        // Refusing a line is no reason to refuse the next one.
+        prop_assert!(!area(b, b + Vec2::new(3.0, 1.0)).is_empty(), "{b} -> {b} + (3, 1) drew nothing");
     }
 }

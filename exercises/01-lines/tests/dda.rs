@@ -157,7 +157,9 @@ proptest! {
 
     #[testkit::test]
     fn attributes_stay_between_the_endpoints(from in vertex(50.0), to in vertex(50.0)) {
-        for f in dda(&from, &to) {
+        let fragments = dda(&from, &to);
+        prop_assert!(!fragments.is_empty(), "no fragments for {from:?} -> {to:?}: a line has at least the first endpoint's pixel");
+        for f in fragments {
             let between = |v: f32, a: f32, b: f32| v >= a.min(b) - 1e-6 && v <= a.max(b) + 1e-6;
             prop_assert!(between(f.depth, from.depth, to.depth), "depth {} outside [{}, {}]", f.depth, from.depth, to.depth);
             for (v, a, b) in [(f.colour.r, from.colour.r, to.colour.r), (f.colour.g, from.colour.g, to.colour.g), (f.colour.b, from.colour.b, to.colour.b)] {
@@ -193,6 +195,7 @@ proptest! {
         prop_assume!(!has_tie(a, b));
         let forward = pixels(&dda(&white(a.x as f32, a.y as f32), &white(b.x as f32, b.y as f32)));
         let backward = pixels(&dda(&white(b.x as f32, b.y as f32), &white(a.x as f32, a.y as f32)));
+        prop_assert!(forward.contains(&a) && forward.contains(&b), "{a} -> {b} must draw both endpoints: {forward:?}");
         testkit::assert_pixels_eq(&forward, &backward, &format!("{a} <-> {b}"));
     }
 
@@ -210,5 +213,9 @@ proptest! {
         if !finite_and_small {
             prop_assert_eq!(count, 0);
         }
+        // Refusing a line is no reason to refuse the next one.
+        count = 0;
+        dda_line(&white(b.x, b.y), &white(0.0, 0.0), |_| count += 1);
+        prop_assert!(count > 0, "{b} -> (0, 0) drew nothing");
     }
 }

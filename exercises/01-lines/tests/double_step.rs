@@ -90,6 +90,9 @@ fn endpoints_beyond_max_coord_draw_nothing() {
         double_step(Pixel::new(0, 0), Pixel::new(0, -MAX_COORD - 1)),
         []
     );
+    // At the limit itself, a line is drawn.
+    let edge = [Pixel::new(0, -MAX_COORD), Pixel::new(1, 4 - MAX_COORD)];
+    assert_eq!(double_step(edge[0], edge[1]).len(), 5, "{} -> {}", edge[0], edge[1]);
 }
 
 proptest! {
@@ -105,6 +108,8 @@ proptest! {
 
     #[testkit::test]
     fn reversed_line_covers_same_pixels([from, to] in pixel_line(40)) {
-        assert_pixels_eq(&double_step(from, to), &double_step(to, from), &format!("{from} <-> {to}"));
+        let forward = double_step(from, to);
+        prop_assert!(forward.contains(&from) && forward.contains(&to), "{from} -> {to} must draw both endpoints: {forward:?}");
+        assert_pixels_eq(&forward, &double_step(to, from), &format!("{from} <-> {to}"));
     }
 }

@@ -84,7 +84,14 @@ fn horizontal_line_has_full_middle_and_equal_neighbours() {
 #[testkit::test]
 fn diagonal_line_neighbours_are_cos_45_away() {
     // Pixel centres beside a 45° line lie 1/√2 ≈ 0.707 from it.
-    for (p, w) in gs(Pixel::new(0, 0), Pixel::new(4, 4)) {
+    let got = gs(Pixel::new(0, 0), Pixel::new(4, 4));
+    for i in 0..=4 {
+        assert!(
+            got.iter().any(|&(p, _)| p == Pixel::new(i, i)),
+            "({i}, {i}) on the line is not drawn: {got:?}"
+        );
+    }
+    for (p, w) in got {
         let expected = if p.x == p.y {
             1.0
         } else {
@@ -109,6 +116,8 @@ fn a_shallow_line() {
 #[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     assert!(gs(Pixel::new(-MAX_COORD - 1, 0), Pixel::new(0, 0)).is_empty());
+    // At the limit itself, a line is drawn.
+    assert!(!gs(Pixel::new(-MAX_COORD, 0), Pixel::new(3 - MAX_COORD, 1)).is_empty());
 }
 
 proptest! {
@@ -136,7 +145,9 @@ proptest! {
         prop_assume!(from != to);
         let (a, b) = (from.centre().as_dvec2(), to.centre().as_dvec2());
         let n = (b - a).perp().normalize();
-        for (p, w) in gs(from, to) {
+        let got = gs(from, to);
+        prop_assert!(got.iter().any(|&(p, _)| p == from) && got.iter().any(|&(p, _)| p == to), "{from} -> {to} must draw both endpoints: {got:?}");
+        for (p, w) in got {
             let d = (p.centre().as_dvec2() - a).dot(n).abs();
             // The table is sampled every 1/16 pixel: allow the value at a
             // neighbouring sample.
@@ -149,6 +160,7 @@ proptest! {
     fn reversed_line_gives_the_same_intensities([from, to] in pixel_line(40)) {
         let mut forward = gs(from, to);
         let mut backward = gs(to, from);
+        prop_assert!(forward.iter().any(|&(p, _)| p == from), "{from} -> {to} does not draw {from}: {forward:?}");
         forward.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
         backward.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
         prop_assert_eq!(forward, backward);

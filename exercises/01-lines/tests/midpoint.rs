@@ -84,6 +84,9 @@ fn endpoints_beyond_max_coord_draw_nothing() {
         ),
         []
     );
+    // At the limit itself, a line is drawn.
+    let edge = [Pixel::new(MAX_COORD - 2, 0), Pixel::new(MAX_COORD, 1)];
+    assert_eq!(midpoint(edge[0], edge[1]).len(), 3, "{} -> {}", edge[0], edge[1]);
 }
 
 proptest! {
@@ -101,6 +104,7 @@ proptest! {
     fn reversed_line_covers_same_pixels([from, to] in pixel_line(40)) {
         let forward = midpoint(from, to);
         let backward = midpoint(to, from);
+        prop_assert!(forward.contains(&from) && forward.contains(&to), "{from} -> {to} must draw both endpoints: {forward:?}");
         assert_pixels_eq(&forward, &backward, &format!("{from} -> {to} (expected) vs {to} -> {from} (yours)"));
     }
 

@@ -33,6 +33,8 @@ proptest! {
 
     #[testkit::test]
     fn reversed_line_gets_the_same_intensity([from, to] in pixel_line(1000)) {
-        prop_assert_eq!(slope_intensity(from, to), slope_intensity(to, from));
+        let intensity = slope_intensity(from, to);
+        prop_assert!(intensity > 0.0 && intensity <= 1.0, "{from} -> {to}: {intensity} is not in (0, 1]");
+        prop_assert_eq!(intensity, slope_intensity(to, from));
     }
 }

@@ -88,6 +88,8 @@ fn empty_viewport_and_lines_outside_draw_nothing() {
     assert_eq!(clipped(line.0, line.1, Viewport::new(5, 5, 4, 9)), []);
     assert_eq!(clipped(line.0, line.1, Viewport::new(0, 4, 10, 9)), []);
     assert_eq!(clipped(line.0, line.1, Viewport::new(11, 0, 20, 9)), []);
+    // The part inside a viewport that the line crosses is drawn.
+    assert!(!clipped(line.0, line.1, Viewport::new(2, 0, 8, 9)).is_empty());
 }
 
 proptest! {

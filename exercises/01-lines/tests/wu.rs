@@ -70,6 +70,8 @@ fn a_shallow_line() {
 #[testkit::test]
 fn endpoints_beyond_max_coord_draw_nothing() {
     assert!(wu(Pixel::new(0, MAX_COORD + 1), Pixel::new(0, 0)).is_empty());
+    // At the limit itself, a line is drawn.
+    assert!(!wu(Pixel::new(0, MAX_COORD), Pixel::new(1, MAX_COORD - 3)).is_empty());
 }
 
 proptest! {
@@ -88,7 +90,9 @@ proptest! {
 
     #[testkit::test]
     fn intensity_is_never_above_full([from, to] in pixel_line(40)) {
-        for (p, w) in wu(from, to) {
+        let got = wu(from, to);
+        prop_assert!(got.iter().any(|&(p, w)| p == from && w > 0.0), "{from} -> {to} does not draw {from}: {got:?}");
+        for (p, w) in got {
             prop_assert!((0.0..=1.0).contains(&w), "pixel {p}: {w}");
         }
     }
@@ -105,6 +109,7 @@ proptest! {
             *mean.entry(m).or_insert(0.0) += f64::from(w) * f64::from(n);
         }
         let (m0, n0) = if x_major { (from.x, from.y) } else { (from.y, from.x) };
+        prop_assert_eq!(mean.len(), dm.unsigned_abs() as usize + 1, "one column per step of the major axis");
         for (m, weighted) in mean {
             let ideal = if dm == 0 { f64::from(n0) } else { f64::from(n0) + f64::from(dn) * f64::from(m - m0) / f64::from(dm) };
             prop_assert!((weighted - ideal).abs() <= 2.0 / 256.0 + 1e-4, "column {m}: mean {weighted}, ideal {ideal}");
