@@ -111,6 +111,7 @@ proptest! {
     #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), radius in 0..40) {
         let yours = disc(centre, radius);
+        prop_assert!(yours.contains(&centre), "filled_circle({}, {}) does not fill its centre", centre, radius);
         prop_assert_eq!(first_duplicate(&yours), None, "filled_circle({}, {}) plots a pixel twice", centre, radius);
     }
 
@@ -172,5 +173,7 @@ proptest! {
         } else if !within_limits(centre, radius, radius) {
             prop_assert_eq!(count(|plot| filled_circle(centre, radius, plot)), 0, "filled_circle({}, {}) must draw nothing", centre, radius);
         }
+        // Refusing one is no reason to refuse the next.
+        prop_assert!(count(|plot| filled_circle(Pixel::new(0, 0), 3, plot)) > 0, "filled_circle((0, 0), 3) drew nothing");
     }
 }

@@ -144,6 +144,7 @@ proptest! {
     #[testkit::test]
     fn circle_has_eightfold_symmetry_and_no_gaps(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + radius, centre.y)), "{}({}, {}) does not draw its rightmost point {}", "integer_circle", centre, radius, Pixel::new(centre.x + radius, centre.y));
         if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
             prop_assert!(false, "integer_circle({}, {}) draws {} but not its mirror image {}", centre, radius, p, image);
         }
@@ -160,5 +161,7 @@ proptest! {
         } else if !within_limits(centre, radius, radius) {
             prop_assert_eq!(count(|plot| integer_circle(centre, radius, plot)), 0, "integer_circle({}, {}) must draw nothing", centre, radius);
         }
+        // Refusing one is no reason to refuse the next.
+        prop_assert!(count(|plot| integer_circle(Pixel::new(0, 0), 3, plot)) > 0, "integer_circle((0, 0), 3) drew nothing");
     }
 }

@@ -189,12 +189,14 @@ proptest! {
     #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + radius, centre.y)), "{}({}, {}) does not draw its rightmost point {}", "midpoint_circle", centre, radius, Pixel::new(centre.x + radius, centre.y));
         prop_assert_eq!(first_duplicate(&yours), None, "midpoint_circle({}, {}) plots a pixel twice", centre, radius);
     }
 
     #[testkit::test]
     fn circle_has_eightfold_symmetry(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + radius, centre.y)), "{}({}, {}) does not draw its rightmost point {}", "midpoint_circle", centre, radius, Pixel::new(centre.x + radius, centre.y));
         if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
             prop_assert!(false, "midpoint_circle({}, {}) draws {} but not its mirror image {}", centre, radius, p, image);
         }
@@ -207,7 +209,9 @@ proptest! {
         // m − ½ and m + ½, i.e. |√(R² − n²) − m| < ½, in integers
         // (2m − 1)² < 4(R² − n²) < (2m + 1)².
         let r = i64::from(radius);
-        for p in circle(centre, radius) {
+        let yours = circle(centre, radius);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + radius, centre.y)), "{}({}, {}) does not draw its rightmost point {}", "midpoint_circle", centre, radius, Pixel::new(centre.x + radius, centre.y));
+        for p in yours {
             let (dx, dy) = (i64::from(p.x - centre.x).abs(), i64::from(p.y - centre.y).abs());
             let (m, n) = (dx.max(dy), dx.min(dy));
             let s = 4 * (r * r - n * n);
@@ -255,5 +259,7 @@ proptest! {
         } else if !within_limits(centre, radius, radius) {
             prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot)), 0, "midpoint_circle({}, {}) must draw nothing", centre, radius);
         }
+        // Refusing one is no reason to refuse the next.
+        prop_assert!(count(|plot| midpoint_circle(Pixel::new(0, 0), 3, plot)) > 0, "midpoint_circle((0, 0), 3) drew nothing");
     }
 }

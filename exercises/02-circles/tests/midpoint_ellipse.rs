@@ -184,12 +184,14 @@ proptest! {
     #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
         prop_assert_eq!(first_duplicate(&yours), None, "midpoint_ellipse({}, {}, {}) plots a pixel twice", centre, a, b);
     }
 
     #[testkit::test]
     fn ellipse_has_fourfold_symmetry(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
         if let Some((p, image)) = missing_mirror_image(&yours, centre, false) {
             prop_assert!(false, "midpoint_ellipse({}, {}, {}) draws {} but not its mirror image {}", centre, a, b, p, image);
         }
@@ -199,13 +201,16 @@ proptest! {
     fn swapping_the_semi_axes_transposes_the_ellipse(a in 0..60, b in 0..60) {
         let centre = Pixel::new(0, 0);
         let transposed: Vec<Pixel> = ellipse(centre, b, a).into_iter().map(|p| Pixel::new(p.y, p.x)).collect();
+        prop_assert!(transposed.contains(&Pixel::new(a, 0)), "midpoint_ellipse(_, {}, {}) does not draw (0, {})", b, a, a);
         assert_pixels_eq(&ellipse(centre, a, b), &transposed, &format!("midpoint_ellipse(_, {a}, {b}) (expected) vs midpoint_ellipse(_, {b}, {a}) transposed (yours)"));
     }
 
     #[testkit::test]
     fn every_pixel_is_the_nearest_in_its_column_or_its_row(centre in pixel(50), a in 1..60, b in 1..60) {
         // Within half a pixel of the ellipse: along its column or its row.
-        for p in ellipse(centre, a, b) {
+        let yours = ellipse(centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
+        for p in yours {
             let (x, y) = (i64::from(p.x - centre.x).abs(), i64::from(p.y - centre.y).abs());
             let in_column = x <= i64::from(a) && nearest_row(a.into(), b.into(), x) == y;
             let in_row = y <= i64::from(b) && nearest_row(b.into(), a.into(), y) == x;
@@ -238,5 +243,7 @@ proptest! {
         } else if !drawable {
             prop_assert_eq!(count(|plot| midpoint_ellipse(centre, a, b, plot)), 0, "midpoint_ellipse({}, {}, {}) must draw nothing", centre, a, b);
         }
+        // Refusing one is no reason to refuse the next.
+        prop_assert!(count(|plot| midpoint_ellipse(Pixel::new(0, 0), 4, 2, plot)) > 0, "midpoint_ellipse((0, 0), 4, 2) drew nothing");
     }
 }
