@@ -120,5 +120,8 @@ proptest! {
         let yours = pixels([a, b, c], small);
         prop_assert!(yours.iter().all(|&p| small.contains(p)));
         prop_assert!(counts(&yours).values().all(|&n| n == 1));
+        // Refusing one is no reason to refuse the next.
+        let ordinary = [Vec2::new(-3.5, -3.5), Vec2::new(3.5, -3.5), Vec2::new(0.0, 3.5)];
+        assert_pixels_eq(&triangle_pixels(ordinary, small), &pixels(ordinary, small), "an ordinary triangle after a hostile one");
     }
 }

@@ -90,6 +90,12 @@ fn a_buffer_larger_than_any_canvas_is_refused() {
     let everything = Viewport::new(i32::MIN, i32::MIN, i32::MAX, i32::MAX);
     assert_eq!(by_edges(&huge, everything), (vec![], 0));
     assert_eq!(by_fence(&huge, 0, everything), (vec![], 0));
+    // The buffer spans the viewport's width and the polygon's rows: a small
+    // polygon in a large viewport fills.
+    let small = v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]);
+    let large = Viewport::new(-1000, -1000, 1000, 1000);
+    assert_eq!(by_edges(&small, large).0.len(), 36);
+    assert_eq!(by_fence(&small, 0, large).0.len(), 36);
 }
 
 proptest! {
@@ -115,9 +121,13 @@ proptest! {
     fn fence_at_the_right_end_inverts_as_much_as_edge_fill(shape in any_polygon()) {
         // Past the viewport's right edge, every crossing inverts from the
         // fence back to itself: the very pixels edge fill inverts.
-        let (_, edges) = by_edges(&shape, POLYGON_VIEWPORT);
+        let (filled, edges) = by_edges(&shape, POLYGON_VIEWPORT);
         let (_, fence) = by_fence(&shape, POLYGON_VIEWPORT.x_max + 1, POLYGON_VIEWPORT);
         prop_assert_eq!(edges, fence);
+        prop_assert!(filled.is_empty() || edges > 0, "{} pixels filled without an inversion", filled.len());
+        if !even_odd_pixels(&shape, POLYGON_VIEWPORT).is_empty() {
+            prop_assert!(edges > 0, "a polygon that covers pixels inverts none");
+        }
     }
 
     #[testkit::test]
@@ -137,5 +147,9 @@ proptest! {
             prop_assert!(yours.iter().all(|&p| small.contains(p)));
             prop_assert_eq!(first_duplicate(&yours), None);
         }
+        // Refusing one is no reason to refuse the next.
+        let square = v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]);
+        prop_assert_eq!(by_edges(&square, small).0.len(), 36);
+        prop_assert_eq!(by_fence(&square, fence, small).0.len(), 36);
     }
 }

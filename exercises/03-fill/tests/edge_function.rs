@@ -247,6 +247,7 @@ proptest! {
     #[testkit::test]
     fn both_windings_fill_the_same_pixels(tri in any_triangle()) {
         let [a, b, c] = tri;
+        prop_assert_eq!(pixels(tri, WIDE).is_empty(), triangle_pixels(positions(tri), WIDE).is_empty(), "fills pixels exactly when the definition does");
         assert_pixels_eq(&pixels([a, b, c], WIDE), &pixels([a, c, b], WIDE), "reversed winding");
         assert_pixels_eq(&pixels([a, b, c], WIDE), &pixels([b, c, a], WIDE), "rotated vertices");
     }
@@ -261,6 +262,8 @@ proptest! {
         prop_assume!(side(c) * side(d) < 0.0);
         let first = pixels([at(a.x, a.y), at(b.x, b.y), at(c.x, c.y)], WIDE);
         let second = pixels([at(b.x, b.y), at(a.x, a.y), at(d.x, d.y)], WIDE);
+        let expected = triangle_pixels([a, b, c], WIDE).len() + triangle_pixels([b, a, d], WIDE).len();
+        prop_assert_eq!(first.len() + second.len(), expected, "the two triangles fill as many pixels as they cover");
         let mut both = first.clone();
         both.extend(&second);
         prop_assert!(counts(&both).values().all(|&n| n == 1), "a pixel on the shared edge twice");
@@ -271,7 +274,9 @@ proptest! {
         // One-hot colours: red, green and blue are the three weights.
         let hot = [Rgba::new(1.0, 0.0, 0.0, 0.0), Rgba::new(0.0, 1.0, 0.0, 0.0), Rgba::new(0.0, 0.0, 1.0, 0.0)];
         let v: [Vertex; 3] = std::array::from_fn(|k| Vertex::new(tri[k].position, tri[k].depth, hot[k]));
-        for f in fragments(v, WIDE) {
+        let got = fragments(v, WIDE);
+        prop_assert_eq!(got.is_empty(), triangle_pixels(positions(v), WIDE).is_empty(), "fills pixels exactly when the definition does");
+        for f in got {
             let w = [f.colour.r, f.colour.g, f.colour.b];
             prop_assert!((w.iter().sum::<f32>() - 1.0).abs() < WEIGHT_TOLERANCE, "weights {w:?} at {}", f.pixel);
             prop_assert!(w.iter().all(|&l| (-WEIGHT_TOLERANCE..=1.0 + WEIGHT_TOLERANCE).contains(&l)), "weights {w:?} at {}", f.pixel);
@@ -287,7 +292,9 @@ proptest! {
     fn depth_lies_between_the_vertex_depths(tri in any_triangle()) {
         let lo = tri.iter().map(|v| v.depth).fold(f32::INFINITY, f32::min);
         let hi = tri.iter().map(|v| v.depth).fold(f32::NEG_INFINITY, f32::max);
-        for f in fragments(tri, WIDE) {
+        let got = fragments(tri, WIDE);
+        prop_assert_eq!(got.is_empty(), triangle_pixels(positions(tri), WIDE).is_empty(), "fills pixels exactly when the definition does");
+        for f in got {
             prop_assert!(f.depth >= lo - WEIGHT_TOLERANCE && f.depth <= hi + WEIGHT_TOLERANCE,
                 "depth {} at {} outside [{lo}, {hi}]", f.depth, f.pixel);
         }
@@ -299,5 +306,8 @@ proptest! {
         let yours = pixels([at(a.x, a.y), at(b.x, b.y), at(c.x, c.y)], small);
         prop_assert!(yours.iter().all(|&p| small.contains(p)));
         prop_assert!(counts(&yours).values().all(|&n| n == 1));
+        // Refusing one is no reason to refuse the next.
+        let ordinary = [at(-3.5, -3.5), at(3.5, -3.5), at(0.0, 3.5)];
+        assert_pixels_eq(&triangle_pixels(positions(ordinary), small), &pixels(ordinary, small), "an ordinary triangle after a hostile one");
     }
 }

@@ -88,6 +88,9 @@ fn a_buffer_larger_than_any_canvas_is_refused() {
     let huge = v(&[(-1e30, -1e30), (1e30, -1e30), (1e30, 1e30), (-1e30, 1e30)]);
     let everything = Viewport::new(i32::MIN, i32::MIN, i32::MAX, i32::MAX);
     assert_eq!(polygon(&huge, everything), []);
+    // A small polygon in the same viewport needs a small buffer: it fills.
+    let small = v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]);
+    assert_eq!(polygon(&small, everything).len(), 36);
 }
 
 proptest! {
@@ -121,5 +124,7 @@ proptest! {
         let yours = polygon(&shape, small);
         prop_assert!(yours.iter().all(|&p| small.contains(p)));
         prop_assert_eq!(first_duplicate(&yours), None);
+        // Refusing one is no reason to refuse the next.
+        prop_assert_eq!(polygon(&v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]), small).len(), 36);
     }
 }

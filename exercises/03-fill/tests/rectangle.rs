@@ -53,6 +53,11 @@ fn empty_and_inverted_boxes_fill_nothing() {
             "fill_rectangle({min}, {max})"
         );
     }
+    // A box around one pixel centre fills that pixel.
+    assert_eq!(
+        rectangle(Vec2::new(0.5, 0.5), Vec2::new(1.5, 1.5), WIDE),
+        [Pixel::new(1, 1)]
+    );
 }
 
 #[testkit::test]
@@ -145,7 +150,10 @@ proptest! {
         for (min, max) in parts {
             yours.extend(rectangle(flip(min), flip(max), WIDE));
         }
-        let whole = rectangle(flip(Vec2::new(xs[0], y0)), flip(Vec2::new(xs[2], y1)), WIDE);
+        let (min, max) = (flip(Vec2::new(xs[0], y0)), flip(Vec2::new(xs[2], y1)));
+        let whole = rectangle(min, max, WIDE);
+        let covers_a_centre = viewport_pixels(WIDE).any(|p| in_half_open_box(p, min, max));
+        prop_assert_eq!(whole.is_empty(), !covers_a_centre, "fill_rectangle({}, {}) must fill {} pixel", min, max, if covers_a_centre { "at least one" } else { "no" });
         assert_pixels_eq(&whole, &yours, "two halves against the whole box");
         prop_assert!(counts(&yours).values().all(|&n| n == 1), "a pixel covered twice");
     }
@@ -156,5 +164,7 @@ proptest! {
         let yours = rectangle(a, b, small);
         prop_assert!(yours.iter().all(|&p| small.contains(p)));
         prop_assert_eq!(first_duplicate(&yours), None);
+        // Refusing one is no reason to refuse the next.
+        prop_assert_eq!(rectangle(Vec2::new(-1.0, -1.0), Vec2::new(1.0, 1.0), small).len(), 4);
     }
 }

@@ -144,6 +144,7 @@ proptest! {
         }
         let reversed: Vec<Vec2> = shape.iter().rev().copied().collect();
         let yours = polygon(&shape, POLYGON_VIEWPORT);
+        prop_assert_eq!(yours.is_empty(), even_odd_pixels(&shape, POLYGON_VIEWPORT).is_empty(), "fills pixels exactly when the even-odd rule does");
         assert_pixels_eq(&yours, &polygon(&reversed, POLYGON_VIEWPORT), "reversed");
         assert_pixels_eq(&yours, &polygon(&rotated, POLYGON_VIEWPORT), "rotated");
     }
@@ -160,6 +161,7 @@ proptest! {
     fn spans_come_bottom_up_and_left_to_right_without_overlap(shape in any_polygon()) {
         let mut spans: Vec<Span> = Vec::new();
         fill_spans(&shape, POLYGON_VIEWPORT, |span| spans.push(span));
+        prop_assert_eq!(spans.is_empty(), even_odd_pixels(&shape, POLYGON_VIEWPORT).is_empty(), "spans exactly when the even-odd rule fills pixels");
         for span in &spans {
             prop_assert!(!span.is_empty(), "empty span {:?}", span);
             prop_assert!(
@@ -183,5 +185,7 @@ proptest! {
         let yours = polygon(&shape, small);
         prop_assert!(yours.iter().all(|&p| small.contains(p)));
         prop_assert_eq!(first_duplicate(&yours), None);
+        // Refusing one is no reason to refuse the next.
+        prop_assert_eq!(polygon(&v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]), small).len(), 36);
     }
 }
