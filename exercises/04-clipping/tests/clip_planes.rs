@@ -113,6 +113,8 @@ fn intersect_is_none_when_the_edge_does_not_cross() {
             assert_eq!(RIGHT.intersect(a, b), None, "{a:?} → {b:?}, both inside");
         }
     }
+    // An edge that does cross has its crossing.
+    assert!(RIGHT.intersect(inside[0], outside[0]).is_some());
     for a in outside {
         for b in outside {
             assert_eq!(RIGHT.intersect(a, b), None, "{a:?} → {b:?}, both outside");
@@ -136,6 +138,8 @@ fn intersect_refuses_non_finite_input() {
         assert_eq!(RIGHT.intersect(a, p(bad, 0.0, 0.0, 1.0)), None, "{bad}");
         assert_eq!(RIGHT.intersect(p(0.0, bad, 0.0, 1.0), a), None, "{bad}");
     }
+    // The same edges with finite coordinates cross.
+    assert!(RIGHT.intersect(a, p(2.0, 0.0, 0.0, 1.0)).is_some());
     // Finite, but the distance overflows to infinity.
     assert_eq!(RIGHT.intersect(a, p(f32::MAX, 0.0, 0.0, -f32::MAX)), None);
 }
@@ -173,6 +177,9 @@ proptest! {
         let crosses = plane.inside(a) != plane.inside(b);
         let t = plane.intersect(a, b);
         prop_assert_eq!(t.is_some(), crosses);
+        // The definition, in f64: the signs of the distances differ.
+        let l = |v: Vec4| -> f64 { (0..4).map(|i| f64::from(v[i]) * f64::from(plane.vector[i])).sum() };
+        prop_assert_eq!(crosses, (l(a) <= 0.0) != (l(b) <= 0.0), "inside disagrees with the sign of v · p");
         if let Some(t) = t {
             prop_assert!((0.0..=1.0).contains(&t), "t = {}", t);
             let exact = exact_t(plane, a, b);

@@ -28,6 +28,19 @@ fn assert_close(got: &[ClipVertex], expected: &[ClipVertex]) {
     }
 }
 
+/// A polygon with a vertex well inside the volume keeps at least that
+/// vertex, so its clipped polygon has three vertices or more.
+fn keeps_what_is_inside(polygon: &[ClipVertex], got: &[ClipVertex]) -> Result<(), TestCaseError> {
+    let inside = polygon.len() >= 3 && polygon.iter().any(|v| excess(v.position) < -1e-3);
+    if inside && got.len() < 3 {
+        return Err(TestCaseError::fail(format!(
+            "a polygon with a vertex inside the volume was clipped to {} vertices",
+            got.len()
+        )));
+    }
+    Ok(())
+}
+
 #[testkit::test]
 fn triangle_across_the_right_plane_becomes_a_quadrilateral() {
     //  y                        clipped at x = w = 1; the closing edge
@@ -158,6 +171,9 @@ fn polygon_outside_vanishes() {
         flat(-9.0, -9.0, Rgba::WHITE),
     ];
     assert!(clip(&passing).is_empty());
+    // Moved onto the square, the same triangle is kept in part.
+    let crossing = passing.map(|v| flat(v.position.x + 2.0, v.position.y + 2.0, v.colour));
+    assert!(clip(&crossing).len() >= 3, "{:#?}", clip(&crossing));
 }
 
 #[testkit::test]
@@ -274,6 +290,10 @@ fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
             .all(|v| v.position.is_finite() && excess(v.position) < 1e-3),
         "{got:#?}"
     );
+    // At the same scale but with w as large, the triangle lies in the
+    // volume (touching its faces) and is kept.
+    let polygon = polygon.map(|v| cv(v.position.x * 1e-2, v.position.y * 1e-2, 0.0, 1.0e15, v.colour));
+    assert!(clip(&polygon).len() >= 3, "{:#?}", clip(&polygon));
 }
 
 // ---------------------------------------------------------------------------
@@ -449,7 +469,9 @@ proptest! {
 
     #[testkit::test]
     fn every_output_vertex_lies_inside_the_volume(polygon in any_polygon()) {
-        for v in clip(&polygon) {
+        let got = clip(&polygon);
+        keeps_what_is_inside(&polygon, &got)?;
+        for v in got {
             prop_assert!(excess(v.position) <= 1e-5, "{:?} outside by {}", v, excess(v.position));
         }
     }
@@ -487,11 +509,15 @@ proptest! {
             })
             .collect();
         prop_assert!(clip(&moved).is_empty());
+        // Refusing one is no reason to refuse the next.
+        let inside = [flat(-0.5, -0.5, Rgba::WHITE), flat(0.5, -0.5, Rgba::WHITE), flat(0.0, 0.5, Rgba::WHITE)];
+        prop_assert_eq!(clip(&inside).len(), 3);
     }
 
     #[testkit::test]
     fn clipping_twice_changes_nothing(polygon in any_polygon()) {
         let once = clip(&polygon);
+        keeps_what_is_inside(&polygon, &once)?;
         let twice = clip(&once);
         // A vertex that rounding left a hair outside may be cut off again,
         // by a crossing anywhere on an edge that runs along the plane; the
@@ -527,6 +553,7 @@ proptest! {
 
     #[testkit::test]
     fn all_vertices_are_mixes_of_the_polygon(polygon in any_polygon()) {
+        keeps_what_is_inside(&polygon, &clip(&polygon))?;
         // Convex combinations of the input stay in its bounding box, in
         // every coordinate and every colour channel.
         let lo = polygon.iter().fold([f32::INFINITY; 8], |m, v| {
@@ -560,6 +587,7 @@ proptest! {
     #[testkit::test]
     fn clipping_never_adds_area(polygon in star_flat_polygon()) {
         let got = clip(&polygon);
+        keeps_what_is_inside(&polygon, &got)?;
         let (before, after) = (shoelace(&polygon), shoelace(&got));
         prop_assert!(after.abs() <= before.abs() + 1e-5, "{} → {}", before, after);
         // Nor does it change the winding.

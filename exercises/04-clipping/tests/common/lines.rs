@@ -28,6 +28,15 @@ macro_rules! line_clipping_spec {
             ClipWindow::try_new(Vec2::ZERO, Vec2::splat(10.0)).expect("valid window")
         }
 
+        /// A segment whose visible part is longer than rounding is kept.
+        fn kept_if_visible(got: Option<Segment>, segment: Segment, window: ClipWindow) -> Result<(), TestCaseError> {
+            let visible = common::visible_part(segment, window).is_some_and(|[a, b]| common::dist(a, b) > 1e-3);
+            if visible && got.is_none() {
+                return Err(TestCaseError::fail(format!("{segment:?} crosses {window:?} but was rejected")));
+            }
+            Ok(())
+        }
+
         fn assert_close(got: Option<Segment>, expected: Option<Segment>) {
             match (got, expected) {
                 (Some(g), Some(e)) => assert!(
@@ -94,6 +103,8 @@ macro_rules! line_clipping_spec {
             assert_eq!(clip(s(2.0, 13.0, -2.0, 9.0), ten()), None);
             // A point outside.
             assert_eq!(clip(s(-1.0, 5.0, -1.0, 5.0), ten()), None);
+            // While one that crosses is kept.
+            assert_eq!(clip(s(-5.0, 5.0, 15.0, 5.0), ten()), Some(s(0.0, 5.0, 10.0, 5.0)));
         }
 
         #[testkit::test]
@@ -154,6 +165,7 @@ macro_rules! line_clipping_spec {
                 segment in common::segment(),
                 window in common::window(),
             ) {
+                kept_if_visible(clip(segment, window), segment, window)?;
                 if let Some(got) = clip(segment, window) {
                     let grown = ClipWindow::try_new(
                         window.min() - Vec2::splat(1e-4),
@@ -174,6 +186,7 @@ macro_rules! line_clipping_spec {
                 segment in common::segment(),
                 window in common::window(),
             ) {
+                kept_if_visible(clip(segment, window), segment, window)?;
                 if let Some(once) = clip(segment, window) {
                     // A piece a rounding error outside may be dropped.
                     match clip(once, window) {
@@ -193,6 +206,7 @@ macro_rules! line_clipping_spec {
             ) {
                 let forward = clip(segment, window);
                 let backward = clip(Segment::new(segment.to, segment.from), window);
+                kept_if_visible(forward, segment, window)?;
                 match (forward, backward) {
                     (Some(f), Some(b)) => prop_assert!(
                         f.from.distance(b.to) <= 1e-4 && f.to.distance(b.from) <= 1e-4,
