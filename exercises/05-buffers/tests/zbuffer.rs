@@ -302,6 +302,8 @@ fn bad_fragments_are_discarded() {
         Canvas::new(2, 2),
         "a discarded fragment changed the canvas"
     );
+    // A good fragment after them passes.
+    assert!(depth_test(&mut canvas, fragment(1, 1, 0.5, RED), &always));
 }
 
 fn zbuffer_scene() -> Canvas {

@@ -159,5 +159,17 @@ proptest! {
             });
             prop_assert!(found, "{} is not a pruned original", p);
         }
+        // Rule 1 drops exactly the products whose positive bounds miss.
+        let bounds: Vec<_> = model.primitives().iter().map(Primitive::bounds).collect();
+        let non_empty = model.products().iter().filter(|o| {
+            o.literals.iter().filter(|l| !l.complement).try_fold(None, |acc: Option<csg::primitive::Aabb>, l| {
+                let b = bounds[l.primitive];
+                match acc {
+                    None => Some(Some(b)),
+                    Some(a) => a.intersection(&b).map(Some),
+                }
+            }).is_some()
+        }).count();
+        prop_assert_eq!(pruned.len(), non_empty, "products kept (rule 1 drops those whose positive bounds do not overlap)");
     }
 }
