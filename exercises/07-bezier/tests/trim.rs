@@ -170,6 +170,12 @@ fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
             .unwrap()
             .trims(uv(0.5, f64::NAN))
     );
+    // The same shapes trim their centres.
+    let centre = uv(0.5, 0.5);
+    assert!(IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0)).unwrap().trims(centre));
+    assert!(CircleTrim::new(centre, 1.0).unwrap().trims(centre));
+    assert!(EllipseTrim::new(centre, uv(1.0, 1.0)).unwrap().trims(centre));
+    assert!(NewtonTrim::quadratic(QUADRATIC).unwrap().trims(centre));
     assert!(IntervalTrim::new(uv(0.5, 0.0), uv(0.4, 1.0)).is_err());
     assert!(IntervalTrim::new(uv(f64::NAN, 0.0), uv(0.4, 1.0)).is_err());
     assert!(CircleTrim::new(uv(0.5, 0.5), -0.1).is_err());
@@ -215,6 +221,7 @@ proptest! {
         prop_assume!(((p - c).length() - r).abs() > 1e-9);
         let circle = CircleTrim::new(c, r).unwrap();
         let ellipse = EllipseTrim::new(c, DVec2::splat(r)).unwrap();
+        prop_assert_eq!(circle.trims(p), (p - c).length() < r, "the circle trims |uv − centre| < radius at {}", p);
         prop_assert_eq!(circle.trims(p), ellipse.trims(p));
     }
 
@@ -469,4 +476,6 @@ fn hostile_curves_are_never_inside() {
         epsilon: f64::NAN,
     };
     assert!(!between_crossings(&arch, uv(0.5, 0.6), nan_settings));
+    // With finite settings, the same point lies under the arch.
+    assert!(between_crossings(&arch, uv(0.5, 0.6), s));
 }

@@ -173,6 +173,8 @@ fn points_on_the_boundary_terminate() {
     ] {
         let _either_way = r.contains(q);
     }
+    // Off the boundary, the answers are clear.
+    assert!(r.contains(p(0.0, 0.5)) && !r.contains(p(0.0, 2.0)));
     // A curve of the highest degree through the point.
     let wiggle: Vec<DVec2> = (0..=bezier::MAX_DEGREE)
         .map(|i| p(i as f64, if i % 2 == 0 { 1.0 } else { -1.0 }))
@@ -214,6 +216,7 @@ fn invalid_loops_are_clear_errors_and_nan_is_outside() {
     ] {
         assert!(!r.contains(q), "{q}");
     }
+    assert!(r.contains(p(0.0, 0.5)), "(0, 0.5) lies inside the parabola's loop");
     assert!(!TrimRegion::new(vec![]).contains(p(0.0, 0.5)));
 }
 
@@ -272,4 +275,6 @@ fn hostile_curves_never_hang_or_panic() {
         p(f64::MAX, -f64::MAX),
     ];
     let _either_way = crossing_parity(&huge, a);
+    // An ordinary segment across the ray is crossed.
+    assert!(crossing_parity(&[p(1.0, 1.0), p(1.0, -1.0)], a));
 }
