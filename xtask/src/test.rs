@@ -20,8 +20,6 @@
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
 
-use std::collections::BTreeSet;
-use std::fs;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -31,10 +29,6 @@ use crate::cargo;
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
 use crate::stage::{self, DoNothingKeep, Overlay};
 use crate::{release, setup, stubs, topics};
-
-/// The tests known to pass against the do-nothing edition (see
-/// [`do_nothing_scores_zero`]), one `topic/task/test` per line.
-const DO_NOTHING_PASSES: &str = "xtask/tests/do_nothing_passes.txt";
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
@@ -74,7 +68,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
             Box::new(|| clippy(root, Overlay::Own)),
         ),
         (
-            "a do-nothing edition scores 0 (beyond the tests still listed as vacuous)",
+            "a do-nothing edition scores 0 on every task",
             Box::new(|| do_nothing_scores_zero(root)),
         ),
         (
@@ -291,8 +285,7 @@ fn stubs_score_zero(root: &Path) -> Result<String> {
 }
 
 /// A do-nothing edition (every `todo!()` replaced by the cheapest body
-/// that compiles) scores 0 on every task: no test pays for doing nothing,
-/// beyond the tests still listed in [`DO_NOTHING_PASSES`].
+/// that compiles) scores 0 on every task: no test pays for doing nothing.
 fn do_nothing_scores_zero(root: &Path) -> Result<String> {
     // A body that does not compile (a return type without `Default`) keeps
     // its `todo!()`: the errors name the lines, a few rounds at most.
@@ -321,49 +314,30 @@ fn do_nothing_scores_zero(root: &Path) -> Result<String> {
         }
     }
     let report = grade_into(root, Overlay::DoNothing(&keep), "do-nothing")?;
-    let known_path = root.join(DO_NOTHING_PASSES);
-    let known_text = fs::read_to_string(&known_path).unwrap_or_default();
-    let known: BTreeSet<&str> = known_text
-        .lines()
-        .map(str::trim)
-        .filter(|line| !line.is_empty() && !line.starts_with('#'))
-        .collect();
-    let mut paying = BTreeSet::new();
     let mut problems = Vec::new();
     for topic in &report.topics {
         for task in topic.tasks.iter().filter(|t| t.score > 0.0) {
-            let passing: Vec<String> = task
+            let passing: Vec<&str> = task
                 .tests
                 .iter()
                 .filter(|t| t.status == TestStatus::Passed)
-                .map(|t| format!("{}/{}/{}", topic.name, task.id, t.name))
+                .map(|t| t.name.as_str())
                 .collect();
-            let new: Vec<&str> = passing
-                .iter()
-                .map(String::as_str)
-                .filter(|t| !known.contains(t))
-                .collect();
-            if !new.is_empty() {
-                problems.push(format!(
-                    "{} / {}: {} of {} points for doing nothing; not listed in {DO_NOTHING_PASSES}: {}",
-                    topic.name,
-                    task.id,
-                    task.score,
-                    task.points,
-                    new.join(", ")
-                ));
-            }
-            paying.extend(passing);
+            problems.push(format!(
+                "{} / {}: {} of {} points for doing nothing ({} of {} tests pass: {})",
+                topic.name,
+                task.id,
+                task.score,
+                task.points,
+                passing.len(),
+                task.tests.len(),
+                passing.join(", ")
+            ));
         }
-    }
-    for stale in known.iter().filter(|t| !paying.contains(**t)) {
-        problems.push(format!(
-            "{stale} no longer passes against the do-nothing edition: delete its line from {DO_NOTHING_PASSES}"
-        ));
     }
     if !problems.is_empty() {
         bail!(
-            "the do-nothing edition scores {} of {} points; {} problem(s):\n  {}",
+            "the do-nothing edition scores {} of {} points; {} task(s) pay for nothing (make each test also require what only a working body gives):\n  {}",
             report.score,
             report.max_score,
             problems.len(),
@@ -371,18 +345,9 @@ fn do_nothing_scores_zero(root: &Path) -> Result<String> {
         );
     }
     let kept: usize = keep.values().map(Vec::len).sum();
-    let known_note = if known.is_empty() {
-        String::new()
-    } else {
-        format!(
-            "; {} known test(s) still pass for nothing ({} points), listed in {DO_NOTHING_PASSES}",
-            known.len(),
-            report.score
-        )
-    };
     Ok(format!(
-        "{} of {} points in {:.1} s ({kept} todo!() kept where no cheap body compiles){known_note}",
-        report.score, report.max_score, report.duration_s
+        "0 of {} points in {:.1} s ({kept} todo!() kept where no cheap body compiles)",
+        report.max_score, report.duration_s
     ))
 }
 

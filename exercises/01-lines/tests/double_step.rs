@@ -92,7 +92,13 @@ fn endpoints_beyond_max_coord_draw_nothing() {
     );
     // At the limit itself, a line is drawn.
     let edge = [Pixel::new(0, -MAX_COORD), Pixel::new(1, 4 - MAX_COORD)];
-    assert_eq!(double_step(edge[0], edge[1]).len(), 5, "{} -> {}", edge[0], edge[1]);
+    assert_eq!(
+        double_step(edge[0], edge[1]).len(),
+        5,
+        "{} -> {}",
+        edge[0],
+        edge[1]
+    );
 }
 
 proptest! {

@@ -86,7 +86,13 @@ fn endpoints_beyond_max_coord_draw_nothing() {
     );
     // At the limit itself, a line is drawn.
     let edge = [Pixel::new(MAX_COORD - 2, 0), Pixel::new(MAX_COORD, 1)];
-    assert_eq!(midpoint(edge[0], edge[1]).len(), 3, "{} -> {}", edge[0], edge[1]);
+    assert_eq!(
+        midpoint(edge[0], edge[1]).len(),
+        3,
+        "{} -> {}",
+        edge[0],
+        edge[1]
+    );
 }
 
 proptest! {

@@ -292,7 +292,15 @@ fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
     );
     // At the same scale but with w as large, the triangle lies in the
     // volume (touching its faces) and is kept.
-    let polygon = polygon.map(|v| cv(v.position.x * 1e-2, v.position.y * 1e-2, 0.0, 1.0e15, v.colour));
+    let polygon = polygon.map(|v| {
+        cv(
+            v.position.x * 1e-2,
+            v.position.y * 1e-2,
+            0.0,
+            1.0e15,
+            v.colour,
+        )
+    });
     assert!(clip(&polygon).len() >= 3, "{:#?}", clip(&polygon));
 }
 

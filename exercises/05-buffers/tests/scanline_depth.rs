@@ -80,7 +80,10 @@ fn vertex_order_does_not_change_the_span() {
     ] {
         assert_eq!(span_at(triangle, 1.5), span_at(known_triangle(), 1.5));
     }
-    assert!(span_at(known_triangle(), 1.5).is_some(), "a scanline through the triangle has a span");
+    assert!(
+        span_at(known_triangle(), 1.5).is_some(),
+        "a scanline through the triangle has a span"
+    );
 }
 
 #[testkit::test]
@@ -132,7 +135,10 @@ fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
 fn scanlines_outside_and_bad_triangles_have_no_span() {
     assert_eq!(span_at(known_triangle(), -0.5), None);
     assert_eq!(span_at(known_triangle(), 6.5), None);
-    assert!(span_at(known_triangle(), 1.5).is_some(), "a scanline through the triangle has a span");
+    assert!(
+        span_at(known_triangle(), 1.5).is_some(),
+        "a scanline through the triangle has a span"
+    );
     assert_eq!(span_at(known_triangle(), f64::NAN), None);
     let flat = [
         DVec3::ZERO,

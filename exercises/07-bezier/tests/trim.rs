@@ -172,9 +172,17 @@ fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
     );
     // The same shapes trim their centres.
     let centre = uv(0.5, 0.5);
-    assert!(IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0)).unwrap().trims(centre));
+    assert!(
+        IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0))
+            .unwrap()
+            .trims(centre)
+    );
     assert!(CircleTrim::new(centre, 1.0).unwrap().trims(centre));
-    assert!(EllipseTrim::new(centre, uv(1.0, 1.0)).unwrap().trims(centre));
+    assert!(
+        EllipseTrim::new(centre, uv(1.0, 1.0))
+            .unwrap()
+            .trims(centre)
+    );
     assert!(NewtonTrim::quadratic(QUADRATIC).unwrap().trims(centre));
     assert!(IntervalTrim::new(uv(0.5, 0.0), uv(0.4, 1.0)).is_err());
     assert!(IntervalTrim::new(uv(f64::NAN, 0.0), uv(0.4, 1.0)).is_err());

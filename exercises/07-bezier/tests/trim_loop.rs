@@ -216,7 +216,10 @@ fn invalid_loops_are_clear_errors_and_nan_is_outside() {
     ] {
         assert!(!r.contains(q), "{q}");
     }
-    assert!(r.contains(p(0.0, 0.5)), "(0, 0.5) lies inside the parabola's loop");
+    assert!(
+        r.contains(p(0.0, 0.5)),
+        "(0, 0.5) lies inside the parabola's loop"
+    );
     assert!(!TrimRegion::new(vec![]).contains(p(0.0, 0.5)));
 }
 

@@ -122,6 +122,11 @@ fn unclamped_uniform_knots_give_the_uniform_cubic_b_spline() {
     assert_eq!(knots.domain().start, 3.0);
     assert_eq!(knots.domain().end, 4.0);
     let values = basis_funs(&knots, find_span(&knots, 3.0).unwrap(), 3.0).unwrap();
+    assert_eq!(
+        values.len(),
+        4,
+        "p + 1 = 4 basis functions are non-zero on a span"
+    );
     for (value, expected) in values.iter().zip([1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0]) {
         assert_relative_eq!(*value, expected, epsilon = 1e-15);
     }

@@ -264,6 +264,10 @@ proptest! {
         let a = rational_bezier_point(&points, u).unwrap();
         let b = rational_bezier_point(&scaled, u).unwrap();
         prop_assert!(a.distance(b) <= TOLERANCE, "{a} vs {b}");
+        // The curve starts at its first point (homogeneous: x, y, z over w).
+        let first = points[0].truncate() / points[0].w;
+        let start = rational_bezier_point(&scaled, 0.0).unwrap();
+        prop_assert!(start.distance(first) <= TOLERANCE, "starts at {start}, not at {first}");
     }
 
     #[testkit::test]

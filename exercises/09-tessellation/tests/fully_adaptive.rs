@@ -363,6 +363,10 @@ fn table_of_triangle_counts() {
         );
         counts.push(mesh.triangle_count());
     }
+    // Refinement only splits: no test ends with fewer triangles.
+    for (count, (name, _)) in counts.iter().zip(tests()) {
+        assert!(*count >= 1152, "{name}: {count} triangles from 1152");
+    }
     // The seed's observation: the complementary test adds a condition to
     // the one-edge test, so it splits at least as much.
     assert!(

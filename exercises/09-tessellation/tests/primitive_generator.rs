@@ -130,6 +130,15 @@ fn non_positive_or_nan_outer_levels_discard_the_patch() {
                 TriangleDomain::default()
             );
         }
+        // With every level positive, the same patches are generated.
+        assert_ne!(
+            quad_domain([3.0, 3.0], [3.0; 4], spacing),
+            QuadDomain::default()
+        );
+        assert_ne!(
+            triangle_domain(3.0, [3.0; 3], spacing),
+            TriangleDomain::default()
+        );
     }
 }
 

@@ -48,6 +48,7 @@ fn seed_surface_at_25_samples_has_1152_triangles() {
 fn every_vertex_lies_on_the_surface_with_the_surface_normal() {
     let patch = BezierPatch::seed_surface();
     let mesh = tessellate_uniform(&patch, 7, 5).unwrap();
+    assert_eq!(mesh.vertex_count(), 48, "(n_u + 1)(n_v + 1) vertices");
     for k in 0..mesh.vertex_count() {
         let uv = mesh.uvs[k];
         let exact = bernstein_surface(&patch, uv);
@@ -91,6 +92,8 @@ fn bilinear_patch_is_reproduced_exactly() {
     ];
     let patch = BezierPatch::try_new(1, 1, corners.to_vec()).unwrap();
     let mesh = tessellate_uniform(&patch, 4, 4).unwrap();
+    assert_eq!(mesh.vertex_count(), 25, "(n_u + 1)(n_v + 1) vertices");
+    assert_eq!(mesh.uvs.len(), 25, "a (u, v) per vertex");
     for (uv, p) in mesh.uvs.iter().zip(&mesh.positions) {
         let (u, v) = (uv.x, uv.y);
         let exact = (1.0 - u) * (1.0 - v) * corners[0]
