@@ -293,7 +293,15 @@ fn do_nothing_scores_zero(root: &Path) -> Result<String> {
     for round in 1.. {
         let staged = stage::stage(root, Overlay::DoNothing(&keep), None)?;
         let mut command = staged.cargo();
-        command.args(["check", "--workspace", "--lib", "--message-format", "short"]);
+        // Every crate's errors at once, not just the first failing crate's.
+        command.args([
+            "check",
+            "--workspace",
+            "--lib",
+            "--keep-going",
+            "--message-format",
+            "short",
+        ]);
         let (compiles, output) = run_captured(&mut command)?;
         if compiles {
             break;

@@ -60,12 +60,15 @@ fn point(curve: &TrimCurve, t: f64) -> DVec2 {
 }
 
 /// The closed polygon around the region: `upper` from its start to its
-/// end, then `lower` back.
+/// end, then `lower` back to where `upper` started (either curve may run
+/// either way).
 fn region_polygon(upper: &TrimCurve, lower: &TrimCurve) -> Vec<DVec2> {
     let forward = (0..=FLATTENING).map(|k| point(upper, k as f64 / FLATTENING as f64));
-    let back = (0..=FLATTENING)
-        .rev()
-        .map(|k| point(lower, k as f64 / FLATTENING as f64));
+    let lower_starts_at_the_end = point(lower, 0.0).distance(point(upper, 1.0)) < 1e-9;
+    let back = (0..=FLATTENING).rev().map(|k| {
+        let t = k as f64 / FLATTENING as f64;
+        point(lower, if lower_starts_at_the_end { 1.0 - t } else { t })
+    });
     forward.chain(back).collect()
 }
 
@@ -208,6 +211,45 @@ fn several_shapes_trim_their_union() {
 #[testkit::test]
 fn quadratic_bezier_region_is_trimmed_by_newton() {
     check("trim_bezier_quadratic", vec![quadratic_lens()]);
+}
+
+/// A curve reversed: the same points, the other way round.
+fn reversed(curve: TrimCurve) -> TrimCurve {
+    match curve {
+        TrimCurve::Quadratic(mut p) => {
+            p.reverse();
+            TrimCurve::Quadratic(p)
+        }
+        TrimCurve::Cubic(mut p) => {
+            p.reverse();
+            TrimCurve::Cubic(p)
+        }
+    }
+}
+
+/// The lens with its curves running right to left: Newton from `t = 1` now
+/// finds the *left* crossing, so a point inside has `x₁ < 0 < x₂`, the case
+/// the seed's shader (Listing 11) does not test. Both curves reversed, and
+/// one of each.
+#[testkit::test]
+fn curves_running_right_to_left_trim_the_same_region() {
+    let TrimShape::Bezier { upper, lower } = quadratic_lens() else {
+        unreachable!("the lens is a Bézier region")
+    };
+    check(
+        "trim_bezier_right_to_left",
+        vec![TrimShape::Bezier {
+            upper: reversed(upper),
+            lower: reversed(lower),
+        }],
+    );
+    check(
+        "trim_bezier_mixed_directions",
+        vec![TrimShape::Bezier {
+            upper: reversed(upper),
+            lower,
+        }],
+    );
 }
 
 #[testkit::test]

@@ -5,16 +5,29 @@
 //! crate (the official solution, by a path relative to the stage or an
 //! absolute one), and `include!`, `include_str!` and `include_bytes!` read
 //! any file the grader's account can read into the program, or, through a
-//! `const` panic, into the compiler's errors that the report shows. A task
-//! file that names any of them is not compiled: its topic scores 0 with
-//! that reason. The test is by word, in the code with comments and string
-//! literals blanked out: the three names may not appear at all (a macro
-//! could call `include!` through an identifier passed in).
+//! `const` panic, into the compiler's errors that the report shows; so do
+//! the dependencies' macros built on them (`wgpu::include_wgsl!` reads a
+//! file into a shader's source). A task file that names any of them is not
+//! compiled: its topic scores 0 with that reason. The test is by word, in
+//! the code with comments and string literals blanked out: no name
+//! `include` or `include_…` may appear at all (a macro could call
+//! `include!` through an identifier passed in).
 
-use crate::stubs::quiet::{has_word, mask};
+use crate::stubs::quiet::mask;
 
-/// The macros that read a file at compile time.
-const INCLUDE_MACROS: [&str; 3] = ["include", "include_str", "include_bytes"];
+/// The name of std's macro that reads a file at compile time; its kin
+/// (`include_str`, `include_bytes`, the dependencies' `include_wgsl`,
+/// `include_spirv`, …) are named `include_…`.
+const INCLUDE: &str = "include";
+
+/// The identifiers of `line` that are [`INCLUDE`] or start with `include_`.
+fn include_names(line: &str) -> impl Iterator<Item = &str> {
+    line.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .filter(|word| {
+            word.strip_prefix(INCLUDE)
+                .is_some_and(|rest| rest.is_empty() || rest.starts_with('_'))
+        })
+}
 
 /// Each use of a forbidden construct in `source`, as `line: what`.
 #[must_use]
@@ -22,13 +35,11 @@ pub fn uses(source: &str) -> Vec<String> {
     let masked = mask(source);
     let mut found = Vec::new();
     for (number, line) in masked.lines().enumerate() {
-        for name in INCLUDE_MACROS {
-            if has_word(line, name) {
-                found.push(format!(
-                    "{}: `{name}!` reads a file at compile time",
-                    number + 1
-                ));
-            }
+        for name in include_names(line) {
+            found.push(format!(
+                "{}: `{name}!` reads a file at compile time",
+                number + 1
+            ));
         }
     }
     // `path = ...` inside an attribute, `#[...]` or `#![...]`, which may
@@ -106,6 +117,7 @@ const LEAK: &str = include_str!(\"/etc/passwd\");
 macro_rules! paste { ($m:ident) => { $m!(\"f\") } }
 const AGAIN: &str = paste!(include_bytes);
 #[derive(Debug)] struct Xpath { path: u32 }
+const WGSL: wgpu::ShaderModuleDescriptor = wgpu::include_wgsl!(\"../../reference/x.wgsl\");
 ";
         assert_eq!(
             uses(source),
@@ -115,6 +127,7 @@ const AGAIN: &str = paste!(include_bytes);
                 "6: `#[path]` compiles another file as a module",
                 "9: `include_str!` reads a file at compile time",
                 "11: `include_bytes!` reads a file at compile time",
+                "13: `include_wgsl!` reads a file at compile time",
             ]
         );
     }
@@ -131,5 +144,6 @@ const AGAIN: &str = paste!(include_bytes);
             ]
         );
         assert!(uses("pub fn f(path: &str) -> usize { path.len() }").is_empty());
+        assert!(uses("fn included(excluded: u8) -> u8 { excluded }").is_empty());
     }
 }
