@@ -322,19 +322,57 @@ fn an_arch_running_right_to_left_is_the_second_sign_case() {
     // A whole region given from its right end point is the same region.
     let [a, b, c, d] = QUADRATIC;
     let trim = NewtonTrim::quadratic([c, b, a, d]).unwrap();
-    assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
+    assert_eq!(
+        misclassified(100, 0.005, &trim, in_quadratic),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
 }
 
 #[testkit::test]
 fn quadratic_newton_trim_matches_the_exact_region() {
     let trim = NewtonTrim::quadratic(QUADRATIC).unwrap();
-    assert_eq!(misclassified(100, 0.005, &trim, in_quadratic), 0);
+    assert_eq!(
+        misclassified(100, 0.005, &trim, in_quadratic),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
 }
 
 #[testkit::test]
 fn cubic_newton_trim_matches_the_exact_region() {
     let trim = NewtonTrim::cubic(CUBIC).unwrap();
-    assert_eq!(misclassified(100, 0.005, &trim, in_cubic), 0);
+    assert_eq!(
+        misclassified(100, 0.005, &trim, in_cubic),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
+}
+
+#[testkit::test]
+fn a_cubic_region_of_curves_running_right_to_left_is_the_same_region() {
+    // Listing 9's curves p0 p1 p2 p3 and p0 p4 p5 p3, each reversed: every
+    // inside point is now the second sign case.
+    let [p0, p1, p2, p3, p4, p5] = CUBIC;
+    let trim = NewtonTrim::new(vec![p3, p2, p1, p0], vec![p3, p5, p4, p0]).unwrap();
+    assert_eq!(
+        misclassified(100, 0.005, &trim, in_cubic),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
+}
+
+#[testkit::test]
+fn a_nested_region_given_right_to_left_keeps_the_same_inner_region() {
+    let ([a, b, c, d], [e, f, g, h]) = (QUADRATIC, INNER);
+    let outer = NewtonTrim::quadratic([c, b, a, d]).unwrap();
+    let inner = NewtonTrim::quadratic([g, f, e, h]).unwrap();
+    let ring = NestedNewtonTrim::new(outer, inner);
+    assert_eq!(
+        misclassified(100, 0.005, &ring, |p| in_quadratic(p) && !in_inner(p)),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
 }
 
 #[testkit::test]
@@ -349,7 +387,8 @@ fn nested_newton_trim_keeps_the_inner_region() {
     );
     assert_eq!(
         misclassified(100, 0.005, &ring, |p| in_quadratic(p) && !in_inner(p)),
-        0
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
     );
 }
 
@@ -362,7 +401,11 @@ fn too_few_iterations_or_a_coarse_epsilon_spoil_the_edge() {
         epsilon: 0.001,
     });
     assert!(misclassified(100, 0.005, &one, in_cubic) > 100);
-    assert_eq!(misclassified(100, 0.005, &trim, in_cubic), 0);
+    assert_eq!(
+        misclassified(100, 0.005, &trim, in_cubic),
+        0,
+        "samples of the grid on the wrong side of the region (away from its boundary)"
+    );
 }
 
 /// Seed §5.2 (Figs. 29–34): how many of 100² samples of the cubic region
