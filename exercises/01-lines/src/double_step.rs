@@ -47,7 +47,11 @@ impl Pattern {
 
 /// Rasterizes the line from `from` to `to` two pixels per step and calls
 /// `plot` once per pixel, in order from `from` to `to`; the pixels are
-/// exactly those of the midpoint line.
+/// exactly those of the midpoint line. Each double step first reports the
+/// pattern it chose to `step` (in first-octant terms: the rows of its two
+/// pixels counted along the minor axis, away from `from`), then plots its
+/// two pixels; the single last pixel of an odd number of steps reports no
+/// pattern.
 ///
 /// In the first octant (`0 ≤ Δy ≤ Δx`) the decision variable looks at the
 /// midpoints of the two columns ahead. For `m ≤ ½` the slides' variable
@@ -60,10 +64,15 @@ impl Pattern {
 /// line has an odd number of steps, the last pixel is its endpoint.
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
-pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+pub fn double_step_line(
+    from: Pixel,
+    to: Pixel,
+    mut plot: impl FnMut(Pixel),
+    mut step: impl FnMut(Pattern),
+) {
     // Unused until you write the body:
-    let _ = (&from, &to, &mut plot);
+    let _ = (&from, &to, &mut plot, &mut step);
     todo!(
-        "double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code); the pixels must equal the midpoint line's"
+        "double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code), report it to `step`, plot its two pixels; the pixels must equal the midpoint line's"
     )
 }

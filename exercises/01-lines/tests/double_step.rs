@@ -4,22 +4,91 @@ mod common;
 
 use canvas::{MAX_COORD, Pixel};
 use common::{INK, collect, nearest_pixels, octant_sheet};
-use lines::double_step::double_step_line;
+use lines::double_step::{Pattern, double_step_line};
 use proptest::prelude::*;
 use testkit::{assert_pixels_eq, strategies::pixel_line};
 
+/// The pixels of `double_step_line(from, to, …)`, after checking the
+/// patterns it reported: one per double step, each the one its two pixels
+/// show, and only those the slope allows. Every test goes through here, so
+/// every test grades the double step, not only its pixels.
 fn double_step(from: Pixel, to: Pixel) -> Vec<Pixel> {
-    collect(|plot| double_step_line(from, to, plot))
+    let mut patterns = Vec::new();
+    let pixels = collect(|plot| double_step_line(from, to, plot, |p| patterns.push(p)));
+    check_patterns(from, to, &pixels, &patterns);
+    pixels
+}
+
+#[track_caller]
+fn check_patterns(from: Pixel, to: Pixel, pixels: &[Pixel], patterns: &[Pattern]) {
+    let line = format!("double_step_line({from}, {to})");
+    if pixels.is_empty() {
+        assert_eq!(patterns, [], "{line} drew nothing but reported patterns");
+        return;
+    }
+    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
+    let x_major = dx.abs() >= dy.abs();
+    let (long, short) = if x_major {
+        (dx.abs(), dy.abs())
+    } else {
+        (dy.abs(), dx.abs())
+    };
+    assert_eq!(
+        patterns.len() as i64,
+        long / 2,
+        "{line}: {} patterns reported for {} double steps (call `step` once per double step)",
+        patterns.len(),
+        long / 2
+    );
+    if pixels.len() as i64 == long + 1 {
+        // Rows along the minor axis, counted away from `from`.
+        let row = |p: Pixel| {
+            let minor = if x_major { p.y - from.y } else { p.x - from.x };
+            i64::from(minor).abs()
+        };
+        for (k, pattern) in patterns.iter().enumerate() {
+            let base = row(pixels[2 * k]);
+            let rows = [row(pixels[2 * k + 1]) - base, row(pixels[2 * k + 2]) - base];
+            assert_eq!(
+                rows,
+                pattern.rows(),
+                "{line}: double step {k} reported {pattern:?}, but its pixels {} and {} lie on rows {rows:?}",
+                pixels[2 * k + 1],
+                pixels[2 * k + 2]
+            );
+        }
+    }
+    if 2 * short <= long {
+        assert!(
+            !patterns.contains(&Pattern::Steep),
+            "{line}: pattern 4 at a slope ≤ ½"
+        );
+    }
+    if 2 * short >= long {
+        assert!(
+            !patterns.contains(&Pattern::Flat),
+            "{line}: pattern 1 at a slope ≥ ½"
+        );
+    }
+}
+
+/// The patterns `double_step_line` reports while drawing `from → to`.
+fn patterns(from: Pixel, to: Pixel) -> Vec<Pattern> {
+    let mut patterns = Vec::new();
+    double_step_line(from, to, |_| {}, |p| patterns.push(p));
+    patterns
 }
 
 #[testkit::test]
 fn each_pattern_appears_where_the_slope_allows_it() {
-    // Slope 1/4 from (0,0): patterns 1 (flat) and 2 (step on the second
-    // pixel) only. Ties at x = 2 and x = 6 go to the lower row.
+    use Pattern::{Flat, Steep, StepFirst, StepSecond};
+    let origin = Pixel::new(0, 0);
+    // Slope 1/4 from (0,0): patterns 1 (flat) and 3 (first pixel up). Ties
+    // at x = 2 and x = 6 go to the lower row.
     //   2 |.......##   double steps from x = 0, 2, 4, 6:
-    //   1 |...####..   (1) flat, (2) second up, (1) flat, (2) second up
+    //   1 |...####..   (1) flat, (3) first up, (1) flat, (3) first up
     //   0 |###......
-    let flat = double_step(Pixel::new(0, 0), Pixel::new(8, 2));
+    let flat = double_step(origin, Pixel::new(8, 2));
     let expected = [
         (0, 0),
         (1, 0),
@@ -32,7 +101,33 @@ fn each_pattern_appears_where_the_slope_allows_it() {
         (8, 2),
     ];
     assert_eq!(flat, expected.map(|(x, y)| Pixel::new(x, y)));
-    // Slope 3/4: patterns 2, 3 and 4; ties at x = 2 and x = 6.
+    assert_eq!(
+        patterns(origin, Pixel::new(8, 2)),
+        [Flat, StepFirst, Flat, StepFirst]
+    );
+    // Slope 3/8: pattern 2 (second pixel up) first; a tie at x = 4.
+    //   3 |.......##   double steps from x = 0, 2, 4, 6:
+    //   2 |.....##..   (2) second up, (1) flat, (3) first up, (3) first up
+    //   1 |..###....
+    //   0 |##.......
+    let gentle = double_step(origin, Pixel::new(8, 3));
+    let expected = [
+        (0, 0),
+        (1, 0),
+        (2, 1),
+        (3, 1),
+        (4, 1),
+        (5, 2),
+        (6, 2),
+        (7, 3),
+        (8, 3),
+    ];
+    assert_eq!(gentle, expected.map(|(x, y)| Pixel::new(x, y)));
+    assert_eq!(
+        patterns(origin, Pixel::new(8, 3)),
+        [StepSecond, Flat, StepFirst, StepFirst]
+    );
+    // Slope 3/4: patterns 3 and 4; ties at x = 2 and x = 6.
     //   6 |........#   double steps from x = 0, 2, 4, 6:
     //   5 |.......#.   (3) first up, (4) both up, (3) first up, (4) both up
     //   4 |.....##..
@@ -40,7 +135,7 @@ fn each_pattern_appears_where_the_slope_allows_it() {
     //   2 |...#.....
     //   1 |.##......
     //   0 |#........
-    let steep = double_step(Pixel::new(0, 0), Pixel::new(8, 6));
+    let steep = double_step(origin, Pixel::new(8, 6));
     let expected = [
         (0, 0),
         (1, 1),
@@ -53,6 +148,10 @@ fn each_pattern_appears_where_the_slope_allows_it() {
         (8, 6),
     ];
     assert_eq!(steep, expected.map(|(x, y)| Pixel::new(x, y)));
+    assert_eq!(
+        patterns(origin, Pixel::new(8, 6)),
+        [StepFirst, Steep, StepFirst, Steep]
+    );
 }
 
 #[testkit::test]
@@ -80,7 +179,11 @@ fn ties_inside_a_double_step_follow_the_direction_rule() {
 
 #[testkit::test]
 fn lines_in_all_octants() {
-    let sheet = octant_sheet(|from, to, canvas| double_step_line(from, to, |p| canvas.set(p, INK)));
+    let sheet = octant_sheet(|from, to, canvas| {
+        for p in double_step(from, to) {
+            canvas.set(p, INK);
+        }
+    });
     testkit::insta::assert_snapshot!("lines_in_all_octants", sheet);
 }
 

@@ -46,7 +46,11 @@ impl Pattern {
 
 /// Rasterizes the line from `from` to `to` two pixels per step and calls
 /// `plot` once per pixel, in order from `from` to `to`; the pixels are
-/// exactly those of the midpoint line.
+/// exactly those of the midpoint line. Each double step first reports the
+/// pattern it chose to `step` (in first-octant terms: the rows of its two
+/// pixels counted along the minor axis, away from `from`), then plots its
+/// two pixels; the single last pixel of an odd number of steps reports no
+/// pattern.
 ///
 /// In the first octant (`0 ≤ Δy ≤ Δx`) the decision variable looks at the
 /// midpoints of the two columns ahead. For `m ≤ ½` the slides' variable
@@ -59,8 +63,13 @@ impl Pattern {
 /// line has an odd number of steps, the last pixel is its endpoint.
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
-pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
-    // BEGIN SOLUTION double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code); the pixels must equal the midpoint line's
+pub fn double_step_line(
+    from: Pixel,
+    to: Pixel,
+    mut plot: impl FnMut(Pixel),
+    mut step: impl FnMut(Pattern),
+) {
+    // BEGIN SOLUTION double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code), report it to `step`, plot its two pixels; the pixels must equal the midpoint line's
     if [from.x, from.y, to.x, to.y]
         .iter()
         .any(|c| c.unsigned_abs() > MAX_COORD as u32)
@@ -115,6 +124,7 @@ pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
                     Pattern::StepSecond
                 }
             };
+            step(pattern);
             let [r1, r2] = pattern.rows();
             plot(pixel(i + 1, j + r1));
             plot(pixel(i + 2, j + r2));
@@ -137,6 +147,7 @@ pub fn double_step_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
                     Pattern::StepSecond
                 }
             };
+            step(pattern);
             let [r1, r2] = pattern.rows();
             plot(pixel(i + 1, j + r1));
             plot(pixel(i + 2, j + r2));
