@@ -12,8 +12,26 @@
 #[allow(unused_imports)]
 use canvas::{MAX_COORD, Pixel};
 
+/// The decision variables at one pixel of the walk through the second
+/// octant, as [`integer_circle`] reports them before the step from it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Decision {
+    /// The pixel's column, relative to the centre.
+    pub x: i32,
+    /// The pixel's row, relative to the centre.
+    pub y: i32,
+    /// `h = d − ¼`: negative chooses E, otherwise SE.
+    pub h: i64,
+    /// What `h` grows by when the step goes E: `ΔE = 2x + 3`.
+    pub delta_e: i64,
+    /// What `h` grows by when the step goes SE: `ΔSE = 2(x − y) + 5`.
+    pub delta_se: i64,
+}
+
 /// Rasterizes the circle of `radius` around `centre` with integers only
-/// and calls `plot` once per pixel, in no particular order.
+/// and calls `plot` once per pixel, in no particular order; reports the
+/// decision variables at every pixel of the walk to `step` before it
+/// steps on (see [`Decision`]).
 ///
 /// Two steps turn the slides' float algorithm into an integer one:
 ///
@@ -39,8 +57,15 @@ use canvas::{MAX_COORD, Pixel};
 /// symmetry yourself, or copy your `circle_points`: each task is graded on
 /// its own). Radius 0 plots the centre; a negative radius, or a circle
 /// reaching beyond ±[`MAX_COORD`], plots nothing.
-pub fn integer_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
+pub fn integer_circle(
+    centre: Pixel,
+    radius: i32,
+    mut plot: impl FnMut(Pixel),
+    mut step: impl FnMut(Decision),
+) {
     // Unused until you write the body:
-    let _ = (&centre, &radius, &mut plot);
-    todo!("integer_circle: the same walk with h = 1 − R, ΔE = 3 and ΔSE = 5 − 2R; adds only")
+    let _ = (&centre, &radius, &mut plot, &mut step);
+    todo!(
+        "integer_circle: the same walk with h = 1 − R, ΔE = 3 and ΔSE = 5 − 2R, adding only; report each pixel's Decision to `step` before stepping on"
+    )
 }

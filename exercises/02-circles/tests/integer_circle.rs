@@ -3,7 +3,7 @@
 mod common;
 
 use canvas::{MAX_COORD, Pixel};
-use circles::integer_circle::integer_circle;
+use circles::integer_circle::{Decision, integer_circle};
 use common::{
     HAND_CIRCLES, INK, circle_pixels, circle_row, closed_loop, collect, count, first_duplicate,
     grid_pixels, missing_mirror_image, radius_sheet, within_limits,
@@ -12,8 +12,97 @@ use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 use testkit::strategies::{hostile_pixel, pixel};
 
+/// Checks the decisions `integer_circle` reports, as they come, against
+/// their definitions: one at every pixel of the walk from `(0, R)` while
+/// `y > x`, with `h = d − ¼ = (x + 1)² + y² − y − R²`, `ΔE = 2x + 3`,
+/// `ΔSE = 2(x − y) + 5`; none for a circle that draws nothing.
+struct DecisionCheck {
+    radius: i64,
+    x: i64,
+    y: i64,
+    count: u64,
+    walks: bool,
+    error: Option<String>,
+}
+
+impl DecisionCheck {
+    fn new(centre: Pixel, radius: i32) -> Self {
+        let walks = within_limits(centre, radius, radius);
+        let r = i64::from(radius);
+        Self {
+            radius: r,
+            x: 0,
+            y: r,
+            count: 0,
+            walks,
+            error: None,
+        }
+    }
+
+    fn expected(&self) -> Option<Decision> {
+        let (x, y, r) = (self.x, self.y, self.radius);
+        (self.walks && y > x).then(|| Decision {
+            x: x as i32,
+            y: y as i32,
+            h: (x + 1) * (x + 1) + y * y - y - r * r,
+            delta_e: 2 * x + 3,
+            delta_se: 2 * (x - y) + 5,
+        })
+    }
+
+    fn see(&mut self, decision: Decision) {
+        if self.error.is_some() {
+            return;
+        }
+        match self.expected() {
+            None => {
+                self.error = Some(format!(
+                    "reported {decision:?} after the walk ended (after {} decisions)",
+                    self.count
+                ));
+            }
+            Some(expected) if expected != decision => {
+                self.error = Some(format!(
+                    "decision {} is {decision:?}, by the definitions it is {expected:?}",
+                    self.count
+                ));
+            }
+            Some(expected) => {
+                self.x += 1;
+                if expected.h >= 0 {
+                    self.y -= 1;
+                }
+                self.count += 1;
+            }
+        }
+    }
+
+    #[track_caller]
+    fn finish(self, call: &str) {
+        if let Some(error) = &self.error {
+            panic!("{call}: {error}");
+        }
+        if let Some(missing) = self.expected() {
+            panic!(
+                "{call}: {} decisions reported, the walk goes on at {missing:?} (report one at every pixel with y > x to `step`)",
+                self.count
+            );
+        }
+    }
+}
+
+/// Runs `integer_circle`, checking every decision it reports (see
+/// [`DecisionCheck`]): every test grades the integer walk, not only its
+/// pixels.
+#[track_caller]
+fn draw(centre: Pixel, radius: i32, plot: impl FnMut(Pixel)) {
+    let mut check = DecisionCheck::new(centre, radius);
+    integer_circle(centre, radius, plot, |d| check.see(d));
+    check.finish(&format!("integer_circle({centre}, {radius})"));
+}
+
 fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
-    collect(|plot| integer_circle(centre, radius, plot))
+    collect(|plot| draw(centre, radius, plot))
 }
 
 #[testkit::test]
@@ -54,6 +143,24 @@ fn radius_8_follows_the_differences_step_by_step() {
         &octant,
         "the second octant of integer_circle((0, 0), 8)",
     );
+    let mut decisions = Vec::new();
+    integer_circle(Pixel::new(0, 0), 8, |_| {}, |d| decisions.push(d));
+    let table: Vec<_> = decisions
+        .iter()
+        .map(|d| (d.x, d.y, d.h, d.delta_e, d.delta_se))
+        .collect();
+    assert_eq!(
+        table,
+        [
+            (0, 8, -7, 3, -11),
+            (1, 8, -4, 5, -9),
+            (2, 8, 1, 7, -7),
+            (3, 7, -6, 9, -3),
+            (4, 7, 3, 11, -1),
+            (5, 6, 2, 13, 3),
+        ],
+        "(x, y, h, ΔE, ΔSE) at each pixel of the walk"
+    );
 }
 
 #[testkit::test]
@@ -77,7 +184,7 @@ fn every_radius_up_to_300_matches_the_midpoint_definition() {
 #[testkit::test]
 fn circles_of_small_radii() {
     let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
-        integer_circle(c, r, |p| canvas.set(p, INK))
+        draw(c, r, |p| canvas.set(p, INK));
     });
     testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
 }
@@ -96,13 +203,19 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
     ] {
         assert_eq!(
-            count(|plot| integer_circle(centre, radius, plot)),
+            count(|plot| draw(centre, radius, plot)),
             0,
             "integer_circle({centre}, {radius})"
         );
     }
     let edge = Pixel::new(-MAX_COORD, MAX_COORD);
     assert_eq!(circle(edge, 0), [edge]);
+    // Refusing one is no reason to refuse the next.
+    assert_pixels_eq(
+        &circle_pixels(origin, 3),
+        &circle(origin, 3),
+        "integer_circle((0, 0), 3)",
+    );
 }
 
 #[testkit::test]
@@ -114,7 +227,7 @@ fn huge_radius_is_exact() {
     let radius = 3_000_000;
     let centre = Pixel::new(1, 0);
     let mut yours = Vec::new();
-    integer_circle(centre, radius, |p| {
+    draw(centre, radius, |p| {
         let dx = p.x - centre.x;
         if (0..COLUMNS).contains(&dx) && dx <= p.y {
             yours.push(p);
@@ -159,9 +272,9 @@ proptest! {
         if within_limits(centre, radius, radius) && radius < 1000 {
             assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("integer_circle({centre}, {radius})"));
         } else if !within_limits(centre, radius, radius) {
-            prop_assert_eq!(count(|plot| integer_circle(centre, radius, plot)), 0, "integer_circle({}, {}) must draw nothing", centre, radius);
+            prop_assert_eq!(count(|plot| draw(centre, radius, plot)), 0, "integer_circle({}, {}) must draw nothing", centre, radius);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| integer_circle(Pixel::new(0, 0), 3, plot)) > 0, "integer_circle((0, 0), 3) drew nothing");
+        prop_assert!(count(|plot| draw(Pixel::new(0, 0), 3, plot)) > 0, "integer_circle((0, 0), 3) drew nothing");
     }
 }

@@ -67,7 +67,7 @@ fn hollow(c: &mut Criterion) {
     group.bench_function("reference integer_circle", |b| {
         b.iter(|| {
             for c in &circles {
-                integer_circle(c.centre, c.radius, |p| canvas.set(p, Rgba::WHITE));
+                integer_circle(c.centre, c.radius, |p| canvas.set(p, Rgba::WHITE), |_| {});
             }
             black_box(&canvas);
         });
