@@ -31,9 +31,33 @@ pub fn snap(v: f32) -> Option<i64> {
     Some((f64::from(v) * ONE as f64).round() as i64)
 }
 
+/// How a block's corners classify it, before any pixel of it is tested.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Coverage {
+    /// Some edge has `O_i + bias_i > 0` at all four corners: skipped.
+    Outside,
+    /// Every edge has `O_i + bias_i ≤ 0` at all four corners: filled whole.
+    Inside,
+    /// Some edge straddles 0: its pixels are tested in lanes.
+    Partial,
+}
+
+/// One block of the clipped bounding box: pixels `min` to `max`, corners
+/// included (8 × 8, less at the box's right and top ends).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Block {
+    /// The lower left pixel.
+    pub min: Pixel,
+    /// The upper right pixel.
+    pub max: Pixel,
+    /// What its corners say.
+    pub coverage: Coverage,
+}
+
 /// Rasterizes the triangle through `positions` and calls `plot` once per
 /// covered pixel inside `viewport`: the same pixels as task 5, found block
-/// by block.
+/// by block. Each block is reported to `block`, with its [`Coverage`],
+/// before its pixels are plotted.
 ///
 /// **Blocks.** Cover the clipped bounding box with 8 × 8 blocks. An edge
 /// function is linear, so over a block it takes its extremes at the four
@@ -60,8 +84,9 @@ pub fn fill_triangle_blocked(
     positions: [Vec2; 3],
     viewport: Viewport,
     mut plot: impl FnMut(Pixel),
+    mut block: impl FnMut(Block),
 ) {
-    // BEGIN SOLUTION blocked: set up as in task 5; per 8×8 block reject/accept by corners, else test 8 lanes
+    // BEGIN SOLUTION blocked: set up as in task 5; per 8×8 block reject/accept by corners and report it to `block`, else test 8 lanes
     let mut p = [[0_i64; 2]; 3];
     for (k, v) in positions.iter().enumerate() {
         match (snap(v.x), snap(v.y)) {
@@ -128,6 +153,19 @@ pub fn fill_triangle_blocked(
                     *slot = Some(base);
                 }
             }
+            let coverage = if empty {
+                Coverage::Outside
+            } else if partial.iter().all(Option::is_none) {
+                Coverage::Inside
+            } else {
+                Coverage::Partial
+            };
+            #[allow(clippy::cast_possible_truncation)] // in the viewport
+            block(Block {
+                min: Pixel::new(bx as i32, bty as i32),
+                max: Pixel::new(right as i32, top as i32),
+                coverage,
+            });
             if !empty {
                 for y in bty..=top {
                     // Lane k is pixel bx + k; lanes past `right` are masked.
