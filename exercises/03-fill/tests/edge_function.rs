@@ -2,7 +2,7 @@
 
 mod common;
 
-use canvas::{Canvas, Fragment, Pixel, Rgba, Vec2, Vertex, Viewport};
+use canvas::{Canvas, Fragment, MAX_COORD, Pixel, Rgba, Vec2, Vertex, Viewport};
 use common::{canvas_with, collect_fragments, counts, grid_pixels, triangle_pixels};
 use fill::edge_function::fill_triangle;
 use proptest::prelude::*;
@@ -310,4 +310,18 @@ proptest! {
         let ordinary = [at(-3.5, -3.5), at(3.5, -3.5), at(0.0, 3.5)];
         assert_pixels_eq(&triangle_pixels(positions(ordinary), small), &pixels(ordinary, small), "an ordinary triangle after a hostile one");
     }
+}
+
+#[testkit::test]
+fn work_is_the_bounding_box_not_the_viewport() {
+    // A viewport of 2²⁵ × 2²⁵ pixels: a fill that tests every pixel of the
+    // viewport instead of the triangle's bounding box never finishes.
+    let huge = Viewport::new(-MAX_COORD, -MAX_COORD, MAX_COORD, MAX_COORD);
+    let tri = [at(0.0, 0.0), at(6.0, 1.0), at(2.0, 5.0)];
+    let around = Viewport::new(-2, -2, 8, 8);
+    assert_pixels_eq(
+        &triangle_pixels(positions(tri), around),
+        &pixels(tri, huge),
+        "a small triangle in a huge viewport",
+    );
 }

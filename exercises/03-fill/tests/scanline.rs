@@ -189,3 +189,58 @@ proptest! {
         prop_assert_eq!(polygon(&v(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]), small).len(), 36);
     }
 }
+
+/// A band one pixel wide along the diagonal, between two staircases of
+/// unit steps: `4n` edges, `n` rows, two crossings per row. After the
+/// shift by −½ the band holds the pixels `(j, j)`, `j = 0..n`.
+fn diagonal_band(n: i32) -> Vec<Vec2> {
+    let shift = |x: i32, y: i32| Vec2::new(x as f32 - 0.5, y as f32 - 0.5);
+    let mut vertices = Vec::new();
+    // Right staircase up: (0,0) → (1,0) → (1,1) → (2,1) → … → (n, n).
+    for k in 0..n {
+        vertices.push(shift(k, k));
+        vertices.push(shift(k + 1, k));
+    }
+    vertices.push(shift(n, n));
+    // Left staircase down: (n−1, n) → (n−1, n−1) → (n−2, n−1) → … → (0, 1),
+    // closed by the edge back to (0, 0).
+    for k in (0..n).rev() {
+        vertices.push(shift(k, k + 1));
+        if k > 0 {
+            vertices.push(shift(k, k));
+        }
+    }
+    vertices
+}
+
+#[testkit::test]
+fn work_grows_with_the_active_edges_not_with_all_of_them() {
+    // A small band, checked against the definition.
+    let small = diagonal_band(20);
+    let viewport = Viewport::new(-2, -2, 22, 22);
+    let expected: Vec<Pixel> = (0..20).map(|j| Pixel::new(j, j)).collect();
+    assert_pixels_eq(
+        &even_odd_pixels(&small, viewport),
+        &expected,
+        "the definition",
+    );
+    assert_pixels_eq(&expected, &polygon(&small, viewport), "a band of 20 rows");
+    // 200 000 edges over 50 000 rows: with an edge table each row looks at
+    // its two active edges; testing every edge in every row is 10¹⁰ tests,
+    // far beyond the time limit.
+    let n = 50_000;
+    let band = diagonal_band(n);
+    let mut spans = 0;
+    let mut wrong = None;
+    fill_spans(&band, Viewport::new(-1, -1, n, n), |span| {
+        spans += 1;
+        if (span.x_start, span.x_end) != (span.y, span.y) {
+            wrong.get_or_insert(span);
+        }
+    });
+    assert_eq!(
+        wrong, None,
+        "in row y the band holds the pixel (y, y) alone"
+    );
+    assert_eq!(spans, n, "one span per row");
+}

@@ -34,6 +34,71 @@ fn seed_figure_6_at_one_half() {
     assert_eq!(cp.derivative, p2(4.5, 0.0));
 }
 
+/// A 1-D control point that counts the multiplications done on points:
+/// de Casteljau's triangle of degree `n` has `n(n + 1)/2` interpolations
+/// of neighbours, each at least one; the Bernstein form scales each of the
+/// `n + 1` points once (its polynomials are plain `f64` work).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Counted(f64);
+
+thread_local! {
+    static POINT_MULTIPLICATIONS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+impl std::ops::Add for Counted {
+    type Output = Self;
+    fn add(self, other: Self) -> Self {
+        Self(self.0 + other.0)
+    }
+}
+
+impl std::ops::Sub for Counted {
+    type Output = Self;
+    fn sub(self, other: Self) -> Self {
+        Self(self.0 - other.0)
+    }
+}
+
+impl std::ops::Mul<f64> for Counted {
+    type Output = Self;
+    fn mul(self, s: f64) -> Self {
+        POINT_MULTIPLICATIONS.with(|n| n.set(n.get() + 1));
+        Self(self.0 * s)
+    }
+}
+
+impl bezier::ControlPoint for Counted {
+    const ZERO: Self = Self(0.0);
+    fn is_finite_point(self) -> bool {
+        self.0.is_finite()
+    }
+}
+
+#[testkit::test]
+fn evaluation_interpolates_neighbours_level_by_level() {
+    for degree in 1..=8_usize {
+        let points: Vec<Counted> = (0..=degree)
+            .map(|i| Counted(i as f64 * 0.7 - (i * i) as f64 * 0.1))
+            .collect();
+        let plain: Vec<f64> = points.iter().map(|p| p.0).collect();
+        POINT_MULTIPLICATIONS.with(|n| n.set(0));
+        let point = de_casteljau(&points, 0.3).unwrap();
+        let multiplications = POINT_MULTIPLICATIONS.with(std::cell::Cell::get);
+        let interpolations = degree * (degree + 1) / 2;
+        assert!(
+            multiplications >= interpolations,
+            "degree {degree}: {multiplications} multiplications of points, but de Casteljau's \
+             triangle has {interpolations} interpolations of neighbours (is this the Bernstein sum?)"
+        );
+        let expected = de_casteljau(&plain, 0.3).unwrap();
+        assert!(
+            (point.0 - expected).abs() < 1e-12,
+            "degree {degree}: {} vs {expected}",
+            point.0
+        );
+    }
+}
+
 #[testkit::test]
 fn ends_and_end_tangents_are_exact() {
     let p = [
