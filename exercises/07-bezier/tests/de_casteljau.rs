@@ -59,10 +59,15 @@ impl std::ops::Sub for Counted {
     }
 }
 
+/// Counts one multiplication of a point.
+fn count_multiplication() {
+    POINT_MULTIPLICATIONS.with(|n| n.set(n.get() + 1));
+}
+
 impl std::ops::Mul<f64> for Counted {
     type Output = Self;
     fn mul(self, s: f64) -> Self {
-        POINT_MULTIPLICATIONS.with(|n| n.set(n.get() + 1));
+        count_multiplication();
         Self(self.0 * s)
     }
 }
