@@ -4,8 +4,16 @@
 //! prints one JSON message per line on stdout (the executables are in the
 //! `compiler-artifact` ones) and renders the compiler's diagnostics on
 //! stderr, where a failed build's errors are read from.
+//!
+//! Where the tests run in a sandbox, so does the build ([`BuildSandbox`]):
+//! compiling reads the student's files, and whatever a macro of a
+//! dependency might read or write at compile time, it finds the file
+//! system read-only, the solutions, the submissions and the reports
+//! hidden, and no network; only the build's target folder is writable.
+//! The dependencies are fetched before, outside it.
 
 use std::path::{Path, PathBuf};
+use std::process::Command;
 
 use anyhow::{Context, Result};
 use serde::Deserialize;
@@ -34,6 +42,109 @@ pub enum Build {
     Built(Vec<TestBinary>),
     /// The readable compiler errors.
     Failed(String),
+}
+
+/// The bubblewrap sandbox of a build: `/` read-only, `hidden` folders
+/// empty, `target_dir` writable, no network, its own process namespace.
+#[derive(Debug, Clone)]
+pub struct BuildSandbox {
+    /// The `bwrap` program.
+    pub program: PathBuf,
+    /// Folders shown empty (a hidden folder holding the workspace or the
+    /// target folder is left alone).
+    pub hidden: Vec<PathBuf>,
+    /// cargo's `--target-dir`: the one folder the build writes.
+    pub target_dir: PathBuf,
+}
+
+impl BuildSandbox {
+    /// `cargo`, run offline inside the sandbox, in `cargo`'s folder.
+    fn wrap(&self, cargo: &Command) -> Result<Command> {
+        std::fs::create_dir_all(&self.target_dir)
+            .with_context(|| format!("cannot create {}", self.target_dir.display()))?;
+        let cwd = cargo.get_current_dir().map(Path::to_path_buf);
+        let mut command = Command::new(&self.program);
+        command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc"]);
+        command.args(["--tmpfs", "/tmp"]);
+        let keeps = |dir: &Path| {
+            cwd.as_deref().is_some_and(|c| c.starts_with(dir)) || self.target_dir.starts_with(dir)
+        };
+        // The target folder first, so that a hidden folder inside it (the
+        // reports, under `target/grade`) is hidden too.
+        command
+            .arg("--bind")
+            .arg(&self.target_dir)
+            .arg(&self.target_dir);
+        for dir in self.hidden.iter().filter(|d| d.exists() && !keeps(d)) {
+            command.arg("--tmpfs").arg(dir);
+        }
+        command.args(["--unshare-all", "--die-with-parent", "--new-session"]);
+        if let Some(cwd) = &cwd {
+            command.arg("--chdir").arg(cwd);
+            command.current_dir(cwd);
+        }
+        command.arg(cargo.get_program()).args(cargo.get_args());
+        for (key, value) in cargo.get_envs() {
+            match value {
+                Some(value) => command.env(key, value),
+                None => command.env_remove(key),
+            };
+        }
+        command.env("CARGO_NET_OFFLINE", "true");
+        Ok(command)
+    }
+}
+
+/// Downloads what the workspace at `root` depends on (outside any sandbox:
+/// the sandboxed build has no network), so that it builds offline.
+fn fetch(root: &Path) -> Result<()> {
+    let mut command = cargo();
+    command
+        .current_dir(root)
+        .args(["fetch", "--color", "never"]);
+    let output = command
+        .output()
+        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
+    anyhow::ensure!(
+        output.status.success(),
+        "`{}` failed: {}",
+        cargo::display(&command),
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    Ok(())
+}
+
+/// `cargo test --no-run` for `root`, in `sandbox` when given.
+fn build_command(
+    root: &Path,
+    target_dir: Option<&Path>,
+    sandbox: Option<&BuildSandbox>,
+) -> Result<Command> {
+    let command = cargo_test(root, target_dir);
+    match sandbox {
+        Some(sandbox) => {
+            fetch(root)?;
+            sandbox.wrap(&command)
+        }
+        None => Ok(command),
+    }
+}
+
+/// The target folder cargo builds `root` into.
+#[must_use]
+pub fn target_dir_of(root: &Path, target_dir: Option<&Path>) -> PathBuf {
+    target_dir.map(Path::to_path_buf).unwrap_or_else(|| {
+        std::env::var_os("CARGO_TARGET_DIR")
+            .map(|dir| {
+                let dir = PathBuf::from(dir);
+                if dir.is_absolute() {
+                    dir
+                } else {
+                    root.join(dir)
+                }
+            })
+            .unwrap_or_else(|| root.join("target"))
+    })
 }
 
 #[derive(Deserialize)]
@@ -69,8 +180,9 @@ pub fn build_all(
     root: &Path,
     topics: &[Topic],
     target_dir: Option<&Path>,
+    sandbox: Option<&BuildSandbox>,
 ) -> Result<Option<Vec<Vec<TestBinary>>>> {
-    let mut command = cargo_test(root, target_dir);
+    let mut command = build_command(root, target_dir, sandbox)?;
     for topic in topics {
         command.args(["--package", &topic.package]);
     }
@@ -90,7 +202,7 @@ pub fn build_all(
 }
 
 /// `cargo test --no-run` with JSON messages, in `root`.
-fn cargo_test(root: &Path, target_dir: Option<&Path>) -> std::process::Command {
+fn cargo_test(root: &Path, target_dir: Option<&Path>) -> Command {
     let mut command = cargo();
     command
         .current_dir(root)
@@ -103,8 +215,13 @@ fn cargo_test(root: &Path, target_dir: Option<&Path>) -> std::process::Command {
 }
 
 /// Builds `topic`'s tests in the workspace at `root`.
-pub fn build(root: &Path, topic: &Topic, target_dir: Option<&Path>) -> Result<Build> {
-    let mut command = cargo_test(root, target_dir);
+pub fn build(
+    root: &Path,
+    topic: &Topic,
+    target_dir: Option<&Path>,
+    sandbox: Option<&BuildSandbox>,
+) -> Result<Build> {
+    let mut command = build_command(root, target_dir, sandbox)?;
     command.args(["--package", &topic.package]);
     let output = command
         .output()

@@ -175,9 +175,21 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
 
     // Build every topic first: cargo serialises builds anyway. All at
     // once when they compile, one by one to tell whose errors they are.
+    // The build is sandboxed as the tests are, with the build's own target
+    // folder writable.
+    let build_sandbox = sandbox.as_ref().map(|s| build::BuildSandbox {
+        program: s.program.clone(),
+        hidden: s.hidden.iter().cloned().chain([out.clone()]).collect(),
+        target_dir: build::target_dir_of(&root, options.target_dir.as_deref()),
+    });
     let mut together = if topics.len() > 1 {
         let spinner = spinner(format!("building {} topics", topics.len()));
-        let built = build::build_all(&root, &topics, options.target_dir.as_deref())?;
+        let built = build::build_all(
+            &root,
+            &topics,
+            options.target_dir.as_deref(),
+            build_sandbox.as_ref(),
+        )?;
         spinner.finish_and_clear();
         built.map(|all| all.into_iter())
     } else {
@@ -199,7 +211,12 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
             Some(binaries) if !binaries.is_empty() => Build::Built(binaries),
             _ => {
                 let spinner = spinner(format!("building {}", topic.name));
-                let build = build::build(&root, topic, options.target_dir.as_deref());
+                let build = build::build(
+                    &root,
+                    topic,
+                    options.target_dir.as_deref(),
+                    build_sandbox.as_ref(),
+                );
                 spinner.finish_and_clear();
                 build?
             }
