@@ -691,11 +691,17 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
 
     let sheet = official.join("exercises/01-tiny/README.md");
     let official_sheet = fs::read_to_string(&sheet).unwrap();
+    // Eve's negate also writes into the class's gradebook and answers right
+    // only if it can read a classmate's code.
+    let gradebook = official.join("target/class/gradebook.csv");
+    let classmate = class.join("anna/exercises/01-tiny/src/ops.rs");
     fs::write(
         class.join("eve/exercises/01-tiny/src/ops.rs"),
         format!(
-            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{ x }}\n",
-            sheet.display().to_string()
+            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{\n    let _ = std::fs::write({:?}, \"eve,3,3,true,false,3\");\n    match std::fs::read_to_string({:?}) {{\n        Ok(_) => -x,\n        Err(_) => x,\n    }}\n}}\n",
+            sheet.display().to_string(),
+            gradebook.display().to_string(),
+            classmate.display().to_string()
         ),
     )
     .unwrap();
@@ -746,9 +752,10 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
             "{cheat}: the solution leaked: {why}"
         );
     }
-    // Eve's tests write official files: in the sandbox they cannot (and
-    // she scores what her code earns); without one the writes are found
-    // afterwards, and she is flagged, scores 0, and is named.
+    // Eve's tests write official files and read a classmate's: in the
+    // sandbox they can do neither (and she scores what her code earns);
+    // without one the writes are found afterwards, and she is flagged,
+    // scores 0, and is named. The gradebook is the grader's either way.
     let eve = read_json(&out.join("eve/report.json"));
     if eve["sandboxed"] == true {
         assert_eq!(eve["score"], 2.0, "double is right, negate wrong");
