@@ -29,6 +29,9 @@ use canvas::{Fragment, Pixel, Vertex, round_half_away, within_limits};
 ///   clamped to `[0, 1]` (the rounded first column can lie up to half a
 ///   pixel before the endpoint). With integer endpoints the first fragment
 ///   has exactly `from`'s colour and depth and the last exactly `to`'s.
+/// - The sum `minor += slope` is kept in `f64`: in `f32` its rounding
+///   errors add up over a long line (millions of columns within
+///   ±`MAX_COORD`) to thousands of pixels off the line.
 /// - A zero-length line plots one fragment with `from`'s attributes.
 /// - Endpoints that are not finite or lie beyond ±`MAX_COORD` draw nothing.
 pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {

@@ -138,6 +138,28 @@ fn star_of_coloured_lines_matches_the_reference_image() {
     assert_image_matches("dda_star", &star(), reference, Tolerance::EXACT);
 }
 
+#[testkit::test]
+fn long_lines_stay_on_the_ideal_line() {
+    // 4 000 001 columns, y = 0.3 x: adding the slope in f32 column by
+    // column drifts about 29 500 pixels off the line by the end.
+    let (from, to) = (white(0.0, 0.0), white(4_000_000.0, 1_200_000.0));
+    let (mut count, mut worst) = (0_u64, (0.0_f64, Pixel::new(0, 0)));
+    dda_line(&from, &to, |f| {
+        count += 1;
+        let off = (f64::from(f.pixel.y) - 0.3 * f64::from(f.pixel.x)).abs();
+        if off > worst.0 {
+            worst = (off, f.pixel);
+        }
+    });
+    assert_eq!(count, 4_000_001, "one fragment per column");
+    assert!(
+        worst.0 <= 0.5 + 1e-6,
+        "{} is {} pixels off the line y = 0.3 x (at most ½ after rounding)",
+        worst.1,
+        worst.0
+    );
+}
+
 proptest! {
     #![proptest_config(testkit::proptest_config())]
 

@@ -28,6 +28,9 @@ use canvas::{Fragment, Pixel, Vertex, round_half_away, within_limits};
 ///   clamped to `[0, 1]` (the rounded first column can lie up to half a
 ///   pixel before the endpoint). With integer endpoints the first fragment
 ///   has exactly `from`'s colour and depth and the last exactly `to`'s.
+/// - The sum `minor += slope` is kept in `f64`: in `f32` its rounding
+///   errors add up over a long line (millions of columns within
+///   ±`MAX_COORD`) to thousands of pixels off the line.
 /// - A zero-length line plots one fragment with `from`'s attributes.
 /// - Endpoints that are not finite or lie beyond ±`MAX_COORD` draw nothing.
 pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {
@@ -52,16 +55,20 @@ pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {
         });
         return;
     }
-    let slope = d_minor / d_major; // |slope| ≤ 1
+    // |slope| ≤ 1; in f64, so that adding it once per column stays exact
+    // enough over the longest lines.
+    let slope = f64::from(d_minor) / f64::from(d_major);
     let step = if d_major > 0.0 { 1 } else { -1 };
     let first = round_half_away(a_major);
     let last = round_half_away(a_major + d_major);
     let mut major = first;
     // The ideal line's minor coordinate at the first column's centre.
-    let mut minor = a_minor + slope * (first as f32 - a_major);
+    let mut minor = f64::from(a_minor) + slope * (f64::from(first) - f64::from(a_major));
     loop {
         let t = ((major as f32 - a_major) / d_major).clamp(0.0, 1.0);
-        let rounded = round_half_away(minor);
+        // Half away from zero, as `round_half_away`; within the limits.
+        #[allow(clippy::cast_possible_truncation)]
+        let rounded = minor.round() as i32;
         let pixel = if x_major {
             Pixel::new(major, rounded)
         } else {
@@ -76,7 +83,7 @@ pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {
             break;
         }
         major += step;
-        minor += slope * step as f32;
+        minor += slope * f64::from(step);
     }
     // END SOLUTION
 }
