@@ -275,10 +275,12 @@ impl NestedNewtonTrim {
 }
 
 impl Trim for NestedNewtonTrim {
-    /// `x₁ > 0 ∧ x₂ < 0 ∧ ¬(x₃ > 0 ∧ x₄ < 0)` per half, as Listing 12 —
-    /// with the `t ∈ [0, 1]` test applied to the inner curves as well
-    /// (Listing 12 omits it there, so where Newton finds no inner root
-    /// the ring came out wrong).
+    /// Per half: between the outer curve's crossings and not between the
+    /// inner curve's, each "between" as [`between_crossings`] decides it —
+    /// both sign cases, with the `t ∈ [0, 1]` test. Listing 12 writes
+    /// `x₁ > 0 ∧ x₂ < 0 ∧ ¬(x₃ > 0 ∧ x₄ < 0)`: one sign case only (curves
+    /// running left to right), and no `t` test for the inner curves, so
+    /// that where Newton finds no inner root the ring came out wrong.
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: per half, between the outer curve's crossings and not between the inner curve's
         let s = self.outer.settings;
