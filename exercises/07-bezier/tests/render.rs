@@ -130,7 +130,8 @@ fn figure_lit_hill_with_a_hole_and_wireframe() {
 
 #[testkit::test]
 fn figure_lit_hill_seen_from_below() {
-    // The second light at (0, −10, 0) lights the underside.
+    // The second light at (0, −10, 0) is below the hill; the normals are
+    // the surface's own, not flipped (one-sided lighting).
     let [w, h] = common::FIGURE_SIZE;
     let mut canvas = Canvas::new(w, h);
     let below = RenderSettings {
