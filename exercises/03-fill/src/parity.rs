@@ -20,7 +20,9 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 }
 
 /// Fills the closed polygon through `vertices` by outline parity and calls
-/// `plot` once per pixel inside `viewport`, row by row.
+/// `plot` once per pixel inside `viewport`, row by row; reports every
+/// toggle of a mark to `toggle` (the pixel whose mark flips), all of them
+/// before the first pixel is plotted.
 ///
 /// **Marking.** Edge by edge (in any order, no sorting), for every row `y`
 /// the edge crosses (`min(a.y, b.y) ≤ y < max(a.y, b.y)`, as in
@@ -47,8 +49,15 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// parity of every pixel right of it changes all the same). Fewer than
 /// three vertices, a NaN or infinite coordinate, or a buffer of more than
 /// [`Canvas::MAX_PIXELS`] pixels (no canvas is that large) fill nothing.
-pub fn parity_fill(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
+pub fn parity_fill(
+    vertices: &[Vec2],
+    viewport: Viewport,
+    mut plot: impl FnMut(Pixel),
+    mut toggle: impl FnMut(Pixel),
+) {
     // Unused until you write the body:
-    let _ = (&vertices, &viewport, &mut plot);
-    todo!("parity: toggle a mark at ⌈s⌉ per crossing, then flip inside/outside along each row")
+    let _ = (&vertices, &viewport, &mut plot, &mut toggle);
+    todo!(
+        "parity: toggle a mark at ⌈s⌉ per crossing (report it to `toggle`), then flip inside/outside along each row"
+    )
 }

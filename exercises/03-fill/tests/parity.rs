@@ -4,15 +4,91 @@ mod common;
 
 use canvas::{Pixel, Vec2, Viewport};
 use common::{
-    POLYGON_VIEWPORT, any_polygon, collect, even_odd_pixels, first_duplicate, grid_pixels,
-    hostile_polygon, star_polygon,
+    POLYGON_VIEWPORT, any_polygon, collect, crossing, even_odd_pixels, first_duplicate,
+    grid_pixels, hostile_polygon, star_polygon,
 };
 use fill::parity::parity_fill;
 use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 
+/// The pixels of `parity_fill`, after checking the marks it reported (see
+/// [`expected_toggles`]): every test grades the marking, not only the
+/// pixels.
+#[track_caller]
 fn polygon(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
-    collect(|plot| parity_fill(vertices, viewport, plot))
+    let mut toggles = Vec::new();
+    let mut toggled_after_plot = None;
+    let pixels = collect(|plot| {
+        let plotted = std::cell::Cell::new(false);
+        parity_fill(
+            vertices,
+            viewport,
+            |p| {
+                plotted.set(true);
+                plot(p);
+            },
+            |m| {
+                if plotted.get() {
+                    toggled_after_plot.get_or_insert(m);
+                }
+                toggles.push(m);
+            },
+        );
+    });
+    let call = format!("parity_fill({vertices:?}, {viewport:?})");
+    assert_eq!(
+        toggled_after_plot, None,
+        "{call}: a mark toggled after the first pixel was plotted (mark every crossing first, then fill)"
+    );
+    let mut expected = expected_toggles(vertices, viewport);
+    toggles.sort();
+    expected.sort();
+    assert!(
+        toggles == expected,
+        "{call}: the marks toggled (sorted) are {toggles:?}, by the sheet's rule they are {expected:?}"
+    );
+    pixels
+}
+
+/// The marks the sheet's rule toggles: for every edge and every row it
+/// crosses (`min y ≤ y < max y`) within the box, the pixel `⌈s⌉` (a
+/// crossing left of the box toggles its first column, one right of it
+/// nothing). The box: columns `⌈min x⌉ ..= ⌈max x⌉ − 1` and rows
+/// `⌈min y⌉ ..= ⌈max y⌉ − 1` of the vertices, clipped to the viewport.
+/// Nothing for a polygon that fills nothing or a box larger than any
+/// canvas.
+fn expected_toggles(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
+    if vertices.len() < 3 || viewport.is_empty() || !vertices.iter().all(|v| v.is_finite()) {
+        return Vec::new();
+    }
+    let lo = vertices.iter().copied().fold(Vec2::INFINITY, Vec2::min);
+    let hi = vertices.iter().copied().fold(Vec2::NEG_INFINITY, Vec2::max);
+    let first = |v: f32, bound: i32| f64::from(v).ceil().max(f64::from(bound));
+    let last = |v: f32, bound: i32| (f64::from(v).ceil() - 1.0).min(f64::from(bound));
+    let (x0, x1) = (first(lo.x, viewport.x_min), last(hi.x, viewport.x_max));
+    let (y0, y1) = (first(lo.y, viewport.y_min), last(hi.y, viewport.y_max));
+    if x0 > x1 || y0 > y1 || (x1 - x0 + 1.0) * (y1 - y0 + 1.0) > canvas::Canvas::MAX_PIXELS as f64 {
+        return Vec::new();
+    }
+    let mut toggles = Vec::new();
+    let n = vertices.len();
+    for i in 0..n {
+        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
+        let (from, to) = (
+            first(a.y.min(b.y), y0 as i32),
+            last(a.y.max(b.y), y1 as i32),
+        );
+        if from > to {
+            continue;
+        }
+        for y in from as i32..=to as i32 {
+            let column = crossing(a, b, y).ceil().max(x0);
+            if column <= x1 {
+                toggles.push(Pixel::new(column as i32, y));
+            }
+        }
+    }
+    toggles
 }
 
 fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
