@@ -186,12 +186,15 @@ pub struct TestReport {
 }
 
 impl TaskReport {
-    /// The first failing test, if any.
+    /// The failing test that tells the most, if any: one that ran before
+    /// one not run (after a timeout), a literal, named test before a
+    /// property's shrunk random case; otherwise in the order of the tests.
     #[must_use]
     pub fn first_failure(&self) -> Option<&TestReport> {
         self.tests
             .iter()
-            .find(|test| test.status == TestStatus::Failed)
+            .filter(|test| test.status == TestStatus::Failed)
+            .min_by_key(|test| (test.exit.not_run, test.minimal_input.is_some()))
     }
 
     /// The full points, or 0 for a bonus task (for maxima).
@@ -214,5 +217,62 @@ pub fn points(x: f64) -> String {
         format!("{x:.0}")
     } else {
         format!("{x}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn test(name: &str, status: TestStatus) -> TestReport {
+        TestReport {
+            name: name.to_owned(),
+            status,
+            reason: Some(format!("{name} failed")),
+            panic_location: None,
+            minimal_input: None,
+            raster_diff: None,
+            snapshot_diff: None,
+            duration_s: 0.0,
+            exit: Exit::default(),
+            output: None,
+            log: None,
+            images_dir: None,
+            images: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn the_first_failure_shown_is_a_named_test_that_ran() {
+        let mut shrunk = test("a_property", TestStatus::Failed);
+        shrunk.minimal_input = Some("x = 3".to_owned());
+        let mut skipped = test("b_not_run", TestStatus::Failed);
+        skipped.exit.not_run = true;
+        let named = test("c_literal", TestStatus::Failed);
+        let later = test("d_literal", TestStatus::Failed);
+        let mut task = TaskReport {
+            tests: vec![
+                shrunk,
+                skipped,
+                test("passed", TestStatus::Passed),
+                named,
+                later,
+            ],
+            id: "task".to_owned(),
+            title: "A task".to_owned(),
+            points: 1.0,
+            bonus: false,
+            score: 0.0,
+            status: TaskStatus::Fail,
+            error: None,
+            passed: 1,
+            failed: 4,
+            ignored: 0,
+        };
+        assert_eq!(task.first_failure().unwrap().name, "c_literal");
+        task.tests.retain(|t| t.name != "c_literal" && t.name != "d_literal");
+        assert_eq!(task.first_failure().unwrap().name, "a_property");
+        task.tests.retain(|t| t.name != "a_property");
+        assert_eq!(task.first_failure().unwrap().name, "b_not_run");
     }
 }
