@@ -173,9 +173,12 @@ fn apt_install(packages: &[&str], what: &str, why: &str) -> bool {
     installed
 }
 
+/// Whether `command` runs and succeeds; it prints nothing (`apt-get
+/// --version` would print its banner first thing in a grade).
 fn succeeds(command: &mut Command) -> bool {
     command
         .stdin(Stdio::null())
+        .stdout(Stdio::null())
         .stderr(Stdio::null())
         .status()
         .is_ok_and(|status| status.success())
