@@ -12,6 +12,7 @@ mod stage;
 mod stubs;
 mod test;
 mod topics;
+mod watch;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -34,6 +35,11 @@ struct Cli {
 enum Command {
     /// Grade the exercises: points per task, the first failing case, a diff.
     Grade(GradeArgs),
+    /// Grade a topic, and again whenever one of its files changes: one screen each time.
+    Watch {
+        /// The topic (as for `grade`) [default: the first with a `todo!()` left].
+        topic: Option<String>,
+    },
     /// Write exercises/*/src from the solutions in reference/*/src.
     Stubs {
         /// Write nothing; fail if any student file is not what would be generated.
@@ -130,6 +136,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Grade(args) => grade(root, args),
+        Command::Watch { topic } => watch::run(&root, topic.as_deref()),
         Command::Stubs { check } => stubs::run(&root, check),
         Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),

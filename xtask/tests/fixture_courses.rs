@@ -821,3 +821,69 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     assert!(!class.join("ben/target").exists());
     assert!(!class.join("cy/target").exists());
 }
+
+#[test]
+fn watch_grades_again_when_a_file_is_saved() {
+    use std::io::{BufRead as _, BufReader};
+    use std::sync::mpsc;
+
+    let root = fixture("tiny", "watch");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_xtask"))
+        .arg("--root")
+        .arg(&root)
+        .args(["watch", "tiny"])
+        .env_remove("CARGO_TARGET_DIR")
+        .env("NO_COLOR", "1")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("xtask watch starts");
+    let (lines, output) = mpsc::channel();
+    let stdout = child.stdout.take().unwrap();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+            if lines.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    // Reads lines until one holds `wanted`, and returns what it read.
+    let until = |wanted: &str| -> String {
+        let mut seen = String::new();
+        loop {
+            match output.recv_timeout(Duration::from_secs(300)) {
+                Ok(line) => {
+                    seen.push_str(&line);
+                    seen.push('\n');
+                    if line.contains(wanted) {
+                        return seen;
+                    }
+                }
+                Err(_) => panic!("no line with {wanted:?} after:\n{seen}"),
+            }
+        }
+    };
+    let first = until("watching");
+    assert!(first.contains("0.0 / 3"), "{first}");
+    assert!(
+        first.contains("not implemented yet"),
+        "the first failing case is shown: {first}"
+    );
+    // Solve `double`: saving the file grades again.
+    let ops = root.join("exercises/01-tiny/src/ops.rs");
+    let text = fs::read_to_string(&ops).unwrap();
+    fs::write(
+        &ops,
+        text.replace("todo!(\"double: return twice x\")", "x * 2"),
+    )
+    .unwrap();
+    let second = until("watching");
+    let _ = child.kill();
+    let _ = child.wait();
+    assert!(second.contains("2.0 / 3"), "{second}");
+    assert_eq!(
+        second.matches(" / ").count(),
+        first.matches(" / ").count(),
+        "one screen per grade: {second}"
+    );
+}

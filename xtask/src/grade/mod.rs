@@ -287,7 +287,12 @@ pub fn run(options: &GradeOptions) -> Result<Report> {
     let report = grade(options)?;
     print!(
         "{}",
-        table::render(&report, &options.out, table::Style::detect(), true)
+        table::render(
+            &report,
+            &options.out,
+            table::Style::detect(),
+            table::Details::EveryTask
+        )
     );
     Ok(report)
 }
@@ -295,10 +300,27 @@ pub fn run(options: &GradeOptions) -> Result<Report> {
 /// Prints the table of a report (for `cargo xtask test`), with each
 /// failing task's first failure when `details` is set.
 pub fn print_summary(report: &Report, out: &Path, details: bool) {
+    let details = if details {
+        table::Details::EveryTask
+    } else {
+        table::Details::None
+    };
     print!(
         "{}",
         table::render(report, out, table::Style::detect(), details)
     );
+}
+
+/// One screen for `cargo xtask watch`: the table and the first failing
+/// task's first failure.
+#[must_use]
+pub fn one_screen(report: &Report, out: &Path) -> String {
+    table::render(
+        report,
+        out,
+        table::Style::detect(),
+        table::Details::FirstTask,
+    )
 }
 
 /// A topic ready to run: its tests, or why there are none.

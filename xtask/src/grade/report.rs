@@ -270,7 +270,8 @@ mod tests {
             ignored: 0,
         };
         assert_eq!(task.first_failure().unwrap().name, "c_literal");
-        task.tests.retain(|t| t.name != "c_literal" && t.name != "d_literal");
+        task.tests
+            .retain(|t| t.name != "c_literal" && t.name != "d_literal");
         assert_eq!(task.first_failure().unwrap().name, "a_property");
         task.tests.retain(|t| t.name != "a_property");
         assert_eq!(task.first_failure().unwrap().name, "b_not_run");

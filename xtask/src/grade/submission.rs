@@ -282,7 +282,12 @@ pub fn grade_one(official: &Path, submission: &Path, options: &GradeOptions) -> 
     super::export::write_all(&report, &options.out)?;
     print!(
         "{}",
-        table::render(&report, &options.out, table::Style::detect(), true)
+        table::render(
+            &report,
+            &options.out,
+            table::Style::detect(),
+            table::Details::EveryTask
+        )
     );
     Ok(report)
 }

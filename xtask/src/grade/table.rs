@@ -127,10 +127,20 @@ pub fn shown(text: &str) -> String {
     out
 }
 
-/// The whole terminal output for a report; `details` adds the first
-/// failure of every failing task.
-#[must_use]
-pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> String {
+/// Which failures the terminal output shows below the table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Details {
+    /// The table alone.
+    None,
+    /// The first failure of every failing task.
+    EveryTask,
+    /// The first failure of the first failing task only: one screen.
+    FirstTask,
+}
+
+/// The whole terminal output for a report: the table, then the failures
+/// `details` asks for.
+pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> String {
     let mut text = String::new();
     // Columns: topic, task id, title, points (right-aligned), status.
     let mut rows: Vec<[String; 5]> =
@@ -195,6 +205,7 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
         let _ = writeln!(text, "{}", line.trim_end());
     }
 
+    let mut shown_one = false;
     for topic in &report.topics {
         if let Some(errors) = &topic.compile_error {
             let _ = writeln!(text);
@@ -237,8 +248,14 @@ pub fn render(report: &Report, out: &Path, style: Style, details: bool) -> Strin
                     style.warn(&format!("{} / {}: {}", topic.name, task.id, shown(error)))
                 );
             }
-            if details && task.status == TaskStatus::Fail {
+            let wanted = match details {
+                Details::None => false,
+                Details::EveryTask => true,
+                Details::FirstTask => !shown_one,
+            };
+            if wanted && task.status == TaskStatus::Fail {
                 failure(&mut text, out, &topic.name, task, style);
+                shown_one = true;
             }
         }
     }
