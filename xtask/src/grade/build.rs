@@ -45,7 +45,10 @@ pub enum Build {
 }
 
 /// The bubblewrap sandbox of a build: `/` read-only, `hidden` folders
-/// empty, `target_dir` writable, no network, its own process namespace.
+/// empty, `target_dir` writable (the compiler's temporary files go to a
+/// folder in it: `/tmp` stays read-only, and no tmpfs covers it, since the
+/// course itself may live under `/tmp`), no network, its own process
+/// namespace.
 #[derive(Debug, Clone)]
 pub struct BuildSandbox {
     /// The `bwrap` program.
@@ -62,10 +65,12 @@ impl BuildSandbox {
     fn wrap(&self, cargo: &Command) -> Result<Command> {
         std::fs::create_dir_all(&self.target_dir)
             .with_context(|| format!("cannot create {}", self.target_dir.display()))?;
+        let temporary = self.target_dir.join("tmp-build");
+        std::fs::create_dir_all(&temporary)
+            .with_context(|| format!("cannot create {}", temporary.display()))?;
         let cwd = cargo.get_current_dir().map(Path::to_path_buf);
         let mut command = Command::new(&self.program);
         command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc"]);
-        command.args(["--tmpfs", "/tmp"]);
         let keeps = |dir: &Path| {
             cwd.as_deref().is_some_and(|c| c.starts_with(dir)) || self.target_dir.starts_with(dir)
         };
@@ -91,6 +96,7 @@ impl BuildSandbox {
             };
         }
         command.env("CARGO_NET_OFFLINE", "true");
+        command.env("TMPDIR", &temporary);
         Ok(command)
     }
 }
