@@ -827,8 +827,17 @@ fn watch_grades_again_when_a_file_is_saved() {
     use std::io::{BufRead as _, BufReader};
     use std::sync::mpsc;
 
+    /// Stops the watch however the test ends (it would run on forever).
+    struct Stop(std::process::Child);
+    impl Drop for Stop {
+        fn drop(&mut self) {
+            let _ = self.0.kill();
+            let _ = self.0.wait();
+        }
+    }
+
     let root = fixture("tiny", "watch");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_xtask"))
+    let child = Command::new(env!("CARGO_BIN_EXE_xtask"))
         .arg("--root")
         .arg(&root)
         .args(["watch", "tiny"])
@@ -838,8 +847,9 @@ fn watch_grades_again_when_a_file_is_saved() {
         .stderr(std::process::Stdio::null())
         .spawn()
         .expect("xtask watch starts");
+    let mut watch = Stop(child);
     let (lines, output) = mpsc::channel();
-    let stdout = child.stdout.take().unwrap();
+    let stdout = watch.0.stdout.take().unwrap();
     std::thread::spawn(move || {
         for line in BufReader::new(stdout).lines().map_while(Result::ok) {
             if lines.send(line).is_err() {
@@ -878,8 +888,7 @@ fn watch_grades_again_when_a_file_is_saved() {
     )
     .unwrap();
     let second = until("watching");
-    let _ = child.kill();
-    let _ = child.wait();
+    drop(watch);
     assert!(second.contains("2.0 / 3"), "{second}");
     assert_eq!(
         second.matches(" / ").count(),
