@@ -276,7 +276,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     let sandboxed = report["sandboxed"] == true;
     let score = if sandboxed { 3.75 } else { 4.75 };
     assert_eq!(report["score"], score);
-    assert_eq!(report["max_score"], 21.5);
+    assert_eq!(report["max_score"], 22.5);
 
     // The terminal: a table, a total, the first failure of each task.
     let text = stdout(&output);
@@ -291,9 +291,9 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     assert!(text.contains("total"), "{text}");
     assert!(
         text.contains(if sandboxed {
-            "3.8 / 21.5"
+            "3.8 / 22.5"
         } else {
-            "4.8 / 21.5"
+            "4.8 / 22.5"
         }),
         "{text}"
     );
@@ -316,7 +316,7 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
     let results = read_json(&root.join("target/grade/results.json"));
     assert_eq!(results["score"], score);
     let tests = results["tests"].as_array().unwrap();
-    assert_eq!(tests.len(), 18);
+    assert_eq!(tests.len(), 19);
     assert_eq!(tests[0]["name"], "01-hostile / ok: Works");
     assert_eq!(tests[0]["status"], "passed");
     assert_eq!(tests[1]["status"], "failed");
@@ -341,8 +341,8 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
         "quotes are escaped in text too"
     );
     // 16 tests in 01, one compile error in 02, in 03 a stray binary, a test,
-    // a task without tests, 7 tests in 04.
-    assert_eq!(junit.matches("<testcase ").count(), 27, "{junit}");
+    // a task without tests, 8 tests in 04.
+    assert_eq!(junit.matches("<testcase ").count(), 28, "{junit}");
     assert_eq!(
         junit.matches("<testcase ").count(),
         junit.matches("</testcase>").count()
@@ -384,6 +384,18 @@ fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
         assert_eq!(task(&report, "04-tricks", "peeks")["score"], 0.0);
     }
     assert!(report["topics"].is_array(), "report.json is the grader's");
+
+    // A test that rewrites what it is compared with (directly, and by
+    // re-running itself with the bless variables) changes nothing in the
+    // sandbox, where the course is read-only.
+    if report["sandboxed"] == true {
+        let blesses = task(&report, "04-tricks", "blesses");
+        assert_eq!(blesses["score"], 0.0, "{blesses}");
+        assert_eq!(
+            fs::read_to_string(root.join("exercises/04-tricks/tests/expected/nine.txt")).unwrap(),
+            "9\n"
+        );
+    }
 
     // A forged summary and `exit(0)` before the assertion is no pass, in or
     // out of the sandbox: the test took its token before the code ran.
@@ -691,16 +703,19 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
 
     let sheet = official.join("exercises/01-tiny/README.md");
     let official_sheet = fs::read_to_string(&sheet).unwrap();
-    // Eve's negate also writes into the class's gradebook and answers right
-    // only if it can read a classmate's code.
+    // Eve's negate also writes into the class's gradebook and the course's
+    // tooling, and answers right only if it can read a classmate's code.
     let gradebook = official.join("target/class/gradebook.csv");
+    let tooling = official.join("xtask/src/main.rs");
     let classmate = class.join("anna/exercises/01-tiny/src/ops.rs");
     fs::write(
         class.join("eve/exercises/01-tiny/src/ops.rs"),
         format!(
-            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{\n    let _ = std::fs::write({:?}, \"eve,3,3,true,false,3\");\n    match std::fs::read_to_string({:?}) {{\n        Ok(_) => -x,\n        Err(_) => x,\n    }}\n}}\n",
+            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{\n    let _ = std::fs::write({:?}, \"eve,3,3,true,false,3\");\n    let _ = std::fs::create_dir_all(std::path::Path::new({:?}).parent().unwrap());\n    let _ = std::fs::write({:?}, \"fn main() {{}}\");\n    match std::fs::read_to_string({:?}) {{\n        Ok(_) => -x,\n        Err(_) => x,\n    }}\n}}\n",
             sheet.display().to_string(),
             gradebook.display().to_string(),
+            tooling.display().to_string(),
+            tooling.display().to_string(),
             classmate.display().to_string()
         ),
     )
@@ -761,6 +776,7 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         assert_eq!(eve["score"], 2.0, "double is right, negate wrong");
         assert_eq!(eve["integrity"]["tampered"], serde_json::json!([]));
         assert_eq!(fs::read_to_string(&sheet).unwrap(), official_sheet);
+        assert!(!tooling.exists(), "eve wrote into the course's tooling");
     } else {
         assert_eq!(eve["score"], 0.0, "double passed, but eve scores nothing");
         assert_eq!(
