@@ -178,7 +178,28 @@ impl Finished {
     }
 }
 
+/// The largest file a test may write, in the 512-byte blocks of
+/// `ulimit -f`: 1 GiB, far above any picture, far below a full disk.
+const FILE_SIZE_LIMIT_BLOCKS: u64 = 2 << 20;
+
 impl TestCommand {
+    /// The `sh` script that sets the limits and `exec`s the test: `ulimit
+    /// -v` takes KiB; `-c 0` keeps aborts from writing core files; `-f`
+    /// caps file sizes. A shell without one of them (macOS has no `-v`)
+    /// runs the test without that cap. (No `ulimit -u`: it counts every
+    /// thread of the user's, the browser's too, so a test would fail for
+    /// what else runs; the process namespace and the time limit end a fork
+    /// bomb instead.)
+    fn limits_script(&self) -> String {
+        let mut script = String::from("ulimit -c 0 2>/dev/null; ");
+        if self.memory_limit_mib > 0 {
+            script += &format!("ulimit -v {} 2>/dev/null; ", self.memory_limit_mib * 1024);
+        }
+        script += &format!("ulimit -f {FILE_SIZE_LIMIT_BLOCKS} 2>/dev/null; ");
+        script += "exec \"$0\" \"$@\"";
+        script
+    }
+
     fn command(&self) -> Command {
         let args = [
             OsString::from("--exact"),
@@ -187,12 +208,8 @@ impl TestCommand {
             OsString::from("--test-threads=1"),
         ];
         let mut command = if let Some(sandbox) = &self.sandbox {
-            let mut script = String::from("ulimit -c 0 2>/dev/null; ");
-            if self.memory_limit_mib > 0 {
-                script += &format!("ulimit -v {} 2>/dev/null; ", self.memory_limit_mib * 1024);
-            }
-            script += "exec \"$0\" \"$@\"";
             let mut command = sandbox.command(&self.cwd);
+            let script = self.limits_script();
             command
                 .args(["sh", "-c"])
                 .arg(script)
@@ -200,13 +217,7 @@ impl TestCommand {
                 .args(args);
             command
         } else if cfg!(unix) {
-            // `ulimit -v` takes KiB; `-c 0` keeps aborts from writing core files.
-            // Shells without `ulimit -v` (macOS) run the test without the cap.
-            let mut script = String::from("ulimit -c 0 2>/dev/null; ");
-            if self.memory_limit_mib > 0 {
-                script += &format!("ulimit -v {} 2>/dev/null; ", self.memory_limit_mib * 1024);
-            }
-            script += "exec \"$0\" \"$@\"";
+            let script = self.limits_script();
             let mut command = Command::new("sh");
             command
                 .arg("-c")
