@@ -35,9 +35,9 @@ pub mod quiet;
 pub use do_nothing::do_nothing;
 
 /// Opens a solution region; may be followed by `<task>: <instruction>`.
-const BEGIN_MARKER: &str = "// BEGIN SOLUTION";
+pub const BEGIN_MARKER: &str = "// BEGIN SOLUTION";
 /// Closes a solution region.
-const END_MARKER: &str = "// END SOLUTION";
+pub const END_MARKER: &str = "// END SOLUTION";
 /// The hand-written crate root of every exercise crate.
 const CRATE_ROOT: &str = "lib.rs";
 

@@ -20,6 +20,7 @@
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
 
+use std::fs;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -29,6 +30,10 @@ use crate::cargo;
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
 use crate::stage::{self, DoNothingKeep, Overlay};
 use crate::{release, setup, stubs, topics};
+
+/// The shortcuts planted into the solutions, each of which must lose its
+/// points (see [`shortcuts_lose_their_points`]).
+const SHORTCUTS: &str = "xtask/tests/shortcuts.toml";
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
@@ -70,6 +75,10 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
         (
             "a do-nothing edition scores 0 on every task",
             Box::new(|| do_nothing_scores_zero(root)),
+        ),
+        (
+            "planted shortcuts lose their points",
+            Box::new(|| shortcuts_lose_their_points(root)),
         ),
         (
             "the student edition builds, fails only at todo!() and grades",
@@ -359,6 +368,163 @@ fn do_nothing_scores_zero(root: &Path) -> Result<String> {
     ))
 }
 
+/// The planted shortcuts (see [`SHORTCUTS`]).
+#[derive(serde::Deserialize)]
+struct Shortcuts {
+    #[serde(default)]
+    shortcut: Vec<Shortcut>,
+}
+
+/// One shortcut: where it goes, how it is made, what it must cost.
+#[derive(serde::Deserialize)]
+struct Shortcut {
+    what: String,
+    topic: String,
+    file: String,
+    task: String,
+    function: Option<String>,
+    body: Option<String>,
+    #[serde(default)]
+    replace: Vec<[String; 2]>,
+    #[serde(default)]
+    zero: bool,
+    #[serde(default)]
+    failing: Vec<String>,
+}
+
+impl Shortcut {
+    /// The solution file `source` with this shortcut planted.
+    fn plant(&self, source: &str) -> Result<String> {
+        let mut text = source.to_owned();
+        if let (Some(function), Some(body)) = (&self.function, &self.body) {
+            let at = [format!("fn {function}("), format!("fn {function}<")]
+                .iter()
+                .filter_map(|f| text.find(f.as_str()))
+                .min()
+                .with_context(|| format!("no `fn {function}` in {}", self.file))?;
+            let begin = text[at..]
+                .find(stubs::BEGIN_MARKER)
+                .map(|n| at + n)
+                .with_context(|| format!("`fn {function}` has no solution region"))?;
+            let body_start = begin + text[begin..].find('\n').context("a marker line")? + 1;
+            let end = text[body_start..]
+                .find(stubs::END_MARKER)
+                .map(|n| body_start + n)
+                .context("a solution region without an end")?;
+            let end_line = text[..end].rfind('\n').map_or(end, |n| n + 1);
+            text.replace_range(body_start..end_line, body);
+        }
+        for [old, new] in &self.replace {
+            let count = text.matches(old.as_str()).count();
+            ensure!(
+                count == 1,
+                "`{old}` occurs {count} times in {}, not once",
+                self.file
+            );
+            text = text.replacen(old.as_str(), new, 1);
+        }
+        Ok(text)
+    }
+}
+
+/// Each shortcut of [`SHORTCUTS`] planted into its topic's solutions loses
+/// what it must: all points of its task, or the tests named.
+fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
+    let path = root.join(SHORTCUTS);
+    let Ok(text) = fs::read_to_string(&path) else {
+        return Ok(format!(
+            "no shortcuts to plant ({SHORTCUTS} does not exist)"
+        ));
+    };
+    let shortcuts: Shortcuts =
+        toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+    // One submission-like folder holds every planted file.
+    let planted = root.join("target").join("xtask").join("shortcuts");
+    if planted.exists() {
+        fs::remove_dir_all(&planted)
+            .with_context(|| format!("cannot clear {}", planted.display()))?;
+    }
+    let mut files: std::collections::BTreeMap<PathBuf, String> = Default::default();
+    for shortcut in &shortcuts.shortcut {
+        let staged = Path::new("exercises")
+            .join(&shortcut.topic)
+            .join("src")
+            .join(&shortcut.file);
+        let source = match files.get(&staged) {
+            Some(text) => text.clone(),
+            None => {
+                let solution = root
+                    .join("reference")
+                    .join(&shortcut.topic)
+                    .join("src")
+                    .join(&shortcut.file);
+                fs::read_to_string(&solution)
+                    .with_context(|| format!("cannot read {}", solution.display()))?
+            }
+        };
+        let text = shortcut
+            .plant(&source)
+            .with_context(|| format!("cannot plant {}", shortcut.what))?;
+        files.insert(staged, text);
+    }
+    for (file, text) in &files {
+        stage::write_file(&planted.join(file), text)?;
+    }
+    let mut options = GradeOptions::new(root.to_path_buf());
+    options.out = root.join("target").join("grade").join("shortcuts");
+    options.topics = shortcuts.shortcut.iter().map(|s| s.topic.clone()).collect();
+    options.topics.dedup();
+    let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;
+    grade::print_summary(&report, &options.out, false);
+    let mut problems = Vec::new();
+    for shortcut in &shortcuts.shortcut {
+        let task = report
+            .topics
+            .iter()
+            .filter(|t| t.name == shortcut.topic)
+            .flat_map(|t| &t.tasks)
+            .find(|t| t.id == shortcut.task);
+        let Some(task) = task else {
+            problems.push(format!(
+                "{}: no task {} / {}",
+                shortcut.what, shortcut.topic, shortcut.task
+            ));
+            continue;
+        };
+        if shortcut.zero && task.score > 0.0 {
+            problems.push(format!(
+                "{} scores {} of {} points on {} / {}",
+                shortcut.what, task.score, task.points, shortcut.topic, shortcut.task
+            ));
+        }
+        for name in &shortcut.failing {
+            let failed = task
+                .tests
+                .iter()
+                .any(|t| &t.name == name && t.status == TestStatus::Failed);
+            if !failed {
+                problems.push(format!(
+                    "{}: `{name}` of {} / {} does not fail",
+                    shortcut.what, shortcut.topic, shortcut.task
+                ));
+            }
+        }
+    }
+    if !problems.is_empty() {
+        bail!(
+            "{} planted shortcut(s) keep points they should lose:\n  {}",
+            problems.len(),
+            problems.join("\n  ")
+        );
+    }
+    Ok(format!(
+        "{} shortcuts planted in {} topics, each loses what it must ({:.1} s)",
+        shortcuts.shortcut.len(),
+        options.topics.len(),
+        report.duration_s
+    ))
+}
+
 /// `(file, line)` of each error in cargo's `--message-format short`
 /// output that lies in a task file (`exercises/…`).
 fn error_lines(output: &str) -> Vec<(PathBuf, usize)> {
@@ -517,6 +683,65 @@ fn tail(text: &str, lines: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn shortcut(function: Option<&str>, body: Option<&str>, replace: &[[&str; 2]]) -> Shortcut {
+        Shortcut {
+            what: "a shortcut".to_owned(),
+            topic: "01-x".to_owned(),
+            file: "x.rs".to_owned(),
+            task: "x".to_owned(),
+            function: function.map(str::to_owned),
+            body: body.map(str::to_owned),
+            replace: replace.iter().map(|p| p.map(str::to_owned)).collect(),
+            zero: true,
+            failing: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_shortcut_replaces_its_functions_region_or_substitutes_once() {
+        let source = "\
+pub fn a() -> u32 {
+    // BEGIN SOLUTION x: one
+    1
+    // END SOLUTION
+}
+
+pub fn b<T>() -> u32 {
+    // BEGIN SOLUTION x: two
+    let two = 2;
+    two
+    // END SOLUTION
+}
+";
+        let planted = shortcut(Some("b"), Some("    3\n"), &[])
+            .plant(source)
+            .unwrap();
+        assert!(
+            planted.contains("// BEGIN SOLUTION x: two\n    3\n    // END SOLUTION"),
+            "{planted}"
+        );
+        assert!(
+            planted.contains("    1\n"),
+            "only b's region changes: {planted}"
+        );
+        let planted = shortcut(None, None, &[["let two = 2;", "let two = 4;"]])
+            .plant(source)
+            .unwrap();
+        assert!(planted.contains("let two = 4;"), "{planted}");
+        // What is not there, or there twice, is an error, not a silent no-op.
+        assert!(
+            shortcut(None, None, &[["three", "3"]])
+                .plant(source)
+                .is_err()
+        );
+        assert!(
+            shortcut(None, None, &[["SOLUTION", "x"]])
+                .plant(source)
+                .is_err()
+        );
+        assert!(shortcut(Some("c"), Some("0"), &[]).plant(source).is_err());
+    }
 
     #[test]
     fn failures_at_a_todo_are_told_from_other_failures() {

@@ -594,16 +594,17 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/8]",
-        "==> [2/8]",
-        "==> [3/8] reference solutions are clippy-clean",
-        "==> [4/8]",
-        "==> [5/8]",
-        "==> [6/8] the stubs are clippy-clean",
-        "==> [7/8] a do-nothing edition scores 0 on every task",
-        "==> [8/8] the student edition",
+        "==> [1/9]",
+        "==> [2/9]",
+        "==> [3/9] reference solutions are clippy-clean",
+        "==> [4/9]",
+        "==> [5/9]",
+        "==> [6/9] the stubs are clippy-clean",
+        "==> [7/9] a do-nothing edition scores 0 on every task",
+        "==> [8/9] planted shortcuts lose their points",
+        "==> [9/9] the student edition",
         "==> summary",
-        "all 8 steps passed",
+        "all 9 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
@@ -616,7 +617,7 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "no solutions in the edition"
     );
 
-    // A "stub" that already solves its task breaks steps 1, 5, 7 and 8
+    // A "stub" that already solves its task breaks steps 1, 5, 7 and 9
     // (the edition students get would pay for it too, and so would a
     // student who does nothing).
     let stub = root.join("exercises/01-tiny/src/ops.rs");
@@ -645,8 +646,8 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "{text}"
     );
     assert!(
-        text.contains("4 of 8 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("4 of 8 steps failed"),
+        text.contains("4 of 9 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("4 of 9 steps failed"),
         "{text}"
     );
 }
