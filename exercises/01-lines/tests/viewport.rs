@@ -2,7 +2,7 @@
 
 mod common;
 
-use canvas::{Canvas, Pixel, Rgba, Viewport};
+use canvas::{Canvas, MAX_COORD, Pixel, Rgba, Viewport};
 use common::{collect, nearest_pixels};
 use lines::viewport::clipped_midpoint_line;
 use proptest::prelude::*;
@@ -111,5 +111,11 @@ proptest! {
     ) {
         let expected = nearest_pixels(from, to, Some(viewport));
         assert_pixels_eq(&expected, &clipped(from, to, viewport), &format!("clipped_midpoint_line({from}, {to}, {viewport:?})"));
+        // Random extremes mostly miss a small viewport; this one crosses it.
+        let (a, b) = (Pixel::new(-MAX_COORD, 3 - MAX_COORD), Pixel::new(MAX_COORD, MAX_COORD - 1));
+        let small = Viewport::new(-5, -5, 5, 5);
+        let through = nearest_pixels(a, b, Some(small));
+        prop_assert!(!through.is_empty(), "the line from {} to {} crosses {:?}", a, b, small);
+        assert_pixels_eq(&through, &clipped(a, b, small), &format!("clipped_midpoint_line({a}, {b}, {small:?})"));
     }
 }
