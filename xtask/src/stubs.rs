@@ -31,6 +31,7 @@ use crate::topics::{self, Topic};
 
 mod do_nothing;
 pub mod quiet;
+pub mod stand_ins;
 
 pub use do_nothing::do_nothing;
 

@@ -594,17 +594,18 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/9]",
-        "==> [2/9]",
-        "==> [3/9] reference solutions are clippy-clean",
-        "==> [4/9]",
-        "==> [5/9]",
-        "==> [6/9] the stubs are clippy-clean",
-        "==> [7/9] a do-nothing edition scores 0 on every task",
-        "==> [8/9] planted shortcuts lose their points",
-        "==> [9/9] the student edition",
+        "==> [1/10]",
+        "==> [2/10]",
+        "==> [3/10] reference solutions are clippy-clean",
+        "==> [4/10]",
+        "==> [5/10]",
+        "==> [6/10] the stubs are clippy-clean",
+        "==> [7/10] a do-nothing edition scores 0 on every task",
+        "==> [8/10] planted shortcuts lose their points",
+        "==> [9/10] given code stands in for no task",
+        "==> [10/10] the student edition",
         "==> summary",
-        "all 9 steps passed",
+        "all 10 steps passed",
     ] {
         assert!(text.contains(heading), "{heading} in {text}");
     }
@@ -622,6 +623,7 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     // student who does nothing).
     let stub = root.join("exercises/01-tiny/src/ops.rs");
     let text = fs::read_to_string(&stub).unwrap();
+    let text_before = text.clone();
     fs::write(
         &stub,
         text.replace("todo!(\"negate: return minus x\")", "-x"),
@@ -646,8 +648,30 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         "{text}"
     );
     assert!(
-        text.contains("4 of 9 steps failed")
-            || String::from_utf8_lossy(&output.stderr).contains("4 of 9 steps failed"),
+        text.contains("4 of 10 steps failed")
+            || String::from_utf8_lossy(&output.stderr).contains("4 of 10 steps failed"),
+        "{text}"
+    );
+
+    // Given code that solves a task: a library function with the task's
+    // signature fails the step that plants it into the stub.
+    fs::write(&stub, &text_before).unwrap();
+    fs::write(
+        root.join("exercises/01-tiny/src/helpers.rs"),
+        "//! Given helpers.\n\n/// Minus `x`.\npub fn minus(x: i32) -> i32 {\n    -x\n}\n",
+    )
+    .unwrap();
+    let lib = root.join("exercises/01-tiny/src/lib.rs");
+    let mut crate_root = fs::read_to_string(&lib).unwrap();
+    crate_root.push_str("pub mod helpers;\n");
+    fs::write(&lib, crate_root).unwrap();
+    let output = xtask(&root, &["test", "--step", "9"]);
+    let text = stdout(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(
+        text.contains(
+            "exercises/01-tiny/src/helpers.rs: minus scores 1 of 1 points in place of 01-tiny / negate"
+        ),
         "{text}"
     );
 }

@@ -19,6 +19,17 @@ pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed-point units, `2^SUBPIXEL_BITS`.
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
+/// The edge functions at a covered pixel's centre as exact integers, in
+/// snapped units (1/256 pixel, so one pixel² is `2¹⁶`): `weights[k]` is the
+/// edge function of the edge opposite vertex `k`, signed so that it is
+/// `≥ 0` inside, i.e. vertex `k`'s barycentric weight times twice the
+/// triangle's area. Vertex `k` is the `k`-th of the vertices as given; the
+/// three always sum to twice the snapped triangle's area.
+///
+/// The tests compare these with the snapped edge functions at every pixel:
+/// they are how a fill shows that it snaps and decides in integers.
+pub type EdgeWeights = [i128; 3];
+
 /// Snaps a coordinate to the fixed-point grid: `round(v · 2^SUBPIXEL_BITS)`
 /// (ties away from zero). `None` for NaN, infinities and `|v| > MAX_COORD`.
 #[must_use]
@@ -31,7 +42,8 @@ pub fn snap(v: f32) -> Option<i64> {
 }
 
 /// Rasterizes the triangle and calls `plot` once per covered pixel inside
-/// `viewport` (inclusive bounds), with depth and colour interpolated.
+/// `viewport` (inclusive bounds), with depth and colour interpolated and
+/// the pixel's [`EdgeWeights`].
 ///
 /// **Edge functions.** With vertices `V0, V1, V2` (snapped, see
 /// [`SUBPIXEL_BITS`]), edge `i` runs from `Vi` to `V(i+1)` (indices mod 3):
@@ -64,7 +76,9 @@ pub fn snap(v: f32) -> Option<i64> {
 /// `i` (twice the signed area; negative after the winding fix). The weight
 /// of vertex `V(i+2)` at `P` is `λ(i+2) = O_i(P) / D`, with `1/D` computed
 /// once. The three weights sum to 1, are all in `[0, 1]` inside, and are
-/// 1 at their own vertex; depth and colour are `Σ λ_k · value_k`.
+/// 1 at their own vertex; depth and colour are `Σ λ_k · value_k`. `plot`
+/// also gets the exact numerators: `weights[k] = λ_k · |D|`, in the
+/// vertices' order as given (before the winding fix).
 ///
 /// **Work.** The bounding box of the snapped vertices, clipped to
 /// `viewport`; within a row `O_i` grows by `A_i` per pixel, within a column
@@ -72,10 +86,14 @@ pub fn snap(v: f32) -> Option<i64> {
 ///
 /// A triangle of zero area (after snapping), or with a position that is
 /// NaN, infinite or beyond ±[`MAX_COORD`], plots nothing.
-pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl FnMut(Fragment)) {
+pub fn fill_triangle(
+    vertices: [Vertex; 3],
+    viewport: Viewport,
+    mut plot: impl FnMut(Fragment, EdgeWeights),
+) {
     // Unused until you write the body:
     let _ = (&vertices, &viewport, &mut plot);
     todo!(
-        "edge_function: set up A, B, C per edge; walk the clipped box; top-left rule; interpolate"
+        "edge_function: set up A, B, C per edge; walk the clipped box; top-left rule; interpolate; pass the exact weights on"
     )
 }

@@ -4,7 +4,7 @@ mod common;
 
 use canvas::{Canvas, Fragment, MAX_COORD, Pixel, Rgba, Vec2, Vertex, Viewport};
 use common::{canvas_with, collect_fragments, counts, grid_pixels, triangle_pixels};
-use fill::edge_function::fill_triangle;
+use fill::edge_function::{EdgeWeights, SUBPIXEL_BITS, fill_triangle, snap};
 use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 use testkit::strategies::{half_pixel_point, hostile_point, point, vertex};
@@ -20,8 +20,51 @@ fn at(x: f32, y: f32) -> Vertex {
     Vertex::new(Vec2::new(x, y), 0.5, Rgba::WHITE)
 }
 
+/// The edge weights of the sheet's integer edge functions at `pixel`'s
+/// centre: vertex `k`'s is the edge function of the edge opposite it, on
+/// the snapped vertices, signed to be `≥ 0` inside. `None` where a vertex
+/// does not snap.
+fn snapped_weights(vertices: [Vertex; 3], pixel: Pixel) -> Option<EdgeWeights> {
+    let mut p = [[0_i64; 2]; 3];
+    for (k, v) in vertices.iter().enumerate() {
+        p[k] = [snap(v.position.x)?, snap(v.position.y)?];
+    }
+    let orient = |a: [i64; 2], b: [i64; 2], c: [i64; 2]| {
+        i128::from(b[0] - a[0]) * i128::from(c[1] - a[1])
+            - i128::from(b[1] - a[1]) * i128::from(c[0] - a[0])
+    };
+    let one = 1_i64 << SUBPIXEL_BITS;
+    let centre = [i64::from(pixel.x) * one, i64::from(pixel.y) * one];
+    let sign = orient(p[0], p[1], p[2]).signum();
+    Some(std::array::from_fn(|k| {
+        sign * orient(p[(k + 1) % 3], p[(k + 2) % 3], centre)
+    }))
+}
+
+/// Your fragments, after checking the edge weights of every one against
+/// the snapped edge functions (the instrument of this task: only a fill
+/// that snaps and evaluates its edge functions in integers reports them).
 fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
-    collect_fragments(|plot| fill_triangle(vertices, viewport, plot))
+    let mut wrong = None;
+    let got = collect_fragments(|plot| {
+        fill_triangle(vertices, viewport, |f, weights| {
+            let expected = snapped_weights(vertices, f.pixel);
+            if wrong.is_none() && Some(weights) != expected {
+                wrong = Some((f.pixel, weights, expected));
+            }
+            plot(f);
+        });
+    });
+    if let Some((pixel, yours, expected)) = wrong {
+        panic!(
+            "fill_triangle({:?}, {viewport:?}) plots {pixel} with edge weights {yours:?}; \
+             the edge functions of the snapped vertices give {expected:?} there \
+             (exact integers in 1/256-pixel units, weights[k] for vertex k as given: \
+             see the sheet, task 5)",
+            positions(vertices)
+        );
+    }
+    got
 }
 
 fn pixels(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Pixel> {
@@ -167,7 +210,7 @@ fn star() -> Canvas {
         )
     };
     for k in 0..24 {
-        fill_triangle([centre, tip(k), tip(k + 1)], viewport, |f| canvas.plot(f));
+        fill_triangle([centre, tip(k), tip(k + 1)], viewport, |f, _| canvas.plot(f));
     }
     canvas
 }

@@ -1,5 +1,5 @@
-//! Bézier curves and tensor-product Bézier patches, evaluated by de
-//! Casteljau (seed 001 §1.1, Definitions 1.1.1 and 1.1.4 with all weights
+//! Bézier curves and tensor-product Bézier patches, evaluated through their
+//! power form (seed 001 §1.1, Definitions 1.1.1 and 1.1.4 with all weights
 //! `w_ij = 1`; the surface normal is the seed's equation (1.18)).
 //!
 //! A patch of degree `p × q` has `(p + 1)(q + 1)` control points `P_ij`,
@@ -16,7 +16,7 @@ use glam::{DVec2, DVec3};
 
 use crate::error::TessError;
 
-/// The largest degree a curve or patch may have (de Casteljau costs `n²`).
+/// The largest degree a curve or patch may have.
 pub const MAX_DEGREE: usize = 16;
 
 /// The largest number of cells or segments per direction any function of
@@ -45,42 +45,53 @@ pub struct SurfacePoint {
     pub normal: DVec3,
 }
 
-/// De Casteljau's algorithm for a Bézier curve of degree `n = points.len() − 1`:
-/// returns `C(t)` and the derivative `C'(t)`, which is `n` times the
-/// difference of the two points of the penultimate step. The curve
-/// interpolates its end points: `C(0) = P_0`, `C(1) = P_n` (the seed's
-/// Example 1.1.2 writes `P_1 = C(1)` for its quadratic; it is `P_2`).
+/// The power form of a Bézier curve of degree `n = points.len() − 1`: the
+/// coefficients `a_k` of `C(t) = Σ_k a_k tᵏ`, which are the forward
+/// differences of the control points, `a_k = C(n, k) · Δᵏ P_0`
+/// (`Δ P_i = P_(i+1) − P_i`). Converting once and evaluating with Horner's
+/// rule ([`horner`]) is cheap for a curve or patch evaluated at many
+/// points. It is not de Casteljau's algorithm, which topic 07 teaches and
+/// which is the stabler of the two at high degrees; here the degree is at
+/// most [`MAX_DEGREE`], and `f64` keeps the error far below what any
+/// tessellation shows.
+fn power_form(points: &[DVec3]) -> Vec<DVec3> {
+    let mut differences = points.to_vec();
+    let mut coefficients = Vec::with_capacity(points.len());
+    let n = points.len().saturating_sub(1);
+    let mut choose = 1.0; // C(n, k)
+    for k in 0..points.len() {
+        coefficients.push(differences[0] * choose);
+        // Δᵏ⁺¹ P_i = Δᵏ P_(i+1) − Δᵏ P_i.
+        for i in 0..differences.len() - 1 {
+            differences[i] = differences[i + 1] - differences[i];
+        }
+        differences.pop();
+        choose = choose * (n - k) as f64 / (k + 1) as f64;
+    }
+    coefficients
+}
+
+/// `(p(t), p'(t))` of the polynomial `p(t) = Σ_k a_k tᵏ` by Horner's rule;
+/// zeros for no coefficients.
+fn horner(coefficients: &[DVec3], t: f64) -> (DVec3, DVec3) {
+    let mut value = DVec3::ZERO;
+    let mut derivative = DVec3::ZERO;
+    for &a in coefficients.iter().rev() {
+        derivative = derivative * t + value;
+        value = value * t + a;
+    }
+    (value, derivative)
+}
+
+/// A Bézier curve of degree `n = points.len() − 1` at `t`: `C(t)` and the
+/// derivative `C'(t)`, through its [`power_form`]. The curve interpolates
+/// its end points: `C(0) = P_0`, `C(1) = P_n` (the seed's Example 1.1.2
+/// writes `P_1 = C(1)` for its quadratic; it is `P_2`).
 ///
 /// An empty slice gives zeros; a single point is a constant curve.
 #[must_use]
-pub fn de_casteljau(points: &[DVec3], t: f64) -> (DVec3, DVec3) {
-    let n = points.len();
-    if n <= MAX_DEGREE + 1 {
-        // The common case works in a buffer on the stack: no allocation.
-        let mut work = [DVec3::ZERO; MAX_DEGREE + 1];
-        work[..n].copy_from_slice(points);
-        de_casteljau_in_place(&mut work[..n], t)
-    } else {
-        de_casteljau_in_place(&mut points.to_vec(), t)
-    }
-}
-
-/// [`de_casteljau`] on a scratch copy of the control points.
-fn de_casteljau_in_place(work: &mut [DVec3], t: f64) -> (DVec3, DVec3) {
-    let n = work.len();
-    match n {
-        0 => return (DVec3::ZERO, DVec3::ZERO),
-        1 => return (work[0], DVec3::ZERO),
-        _ => {}
-    }
-    // Levels 1 ..= n − 2 leave two points: the penultimate step.
-    for level in 1..n - 1 {
-        for k in 0..n - level {
-            work[k] = work[k].lerp(work[k + 1], t);
-        }
-    }
-    let derivative = (n - 1) as f64 * (work[1] - work[0]);
-    (work[0].lerp(work[1], t), derivative)
+pub fn curve(points: &[DVec3], t: f64) -> (DVec3, DVec3) {
+    horner(&power_form(points), t)
 }
 
 /// A tensor-product Bézier patch (non-rational: all weights 1).
@@ -89,6 +100,9 @@ pub struct BezierPatch {
     degree_u: usize,
     degree_v: usize,
     points: Vec<DVec3>,
+    /// The power form `S(u, v) = Σ_k Σ_l c_kl uᵏ vˡ`, row by row like the
+    /// control points (see [`BezierPatch::derivatives`]).
+    coefficients: Vec<DVec3>,
 }
 
 impl BezierPatch {
@@ -123,11 +137,7 @@ impl BezierPatch {
                 what: "a control point",
             });
         }
-        Ok(Self {
-            degree_u,
-            degree_v,
-            points,
-        })
+        Ok(Self::from_points(degree_u, degree_v, points))
     }
 
     /// The seed's example surface (seed 001, Example 1.1.5): 4 × 3 control
@@ -151,10 +161,26 @@ impl BezierPatch {
             p(9.0, 9.0, 0.0),
             p(9.0, 11.0, 5.0),
         ];
+        Self::from_points(3, 2, points)
+    }
+
+    /// The patch of checked control points, with its power form: each row
+    /// converted in `v`, then each column of the results in `u`.
+    fn from_points(degree_u: usize, degree_v: usize, points: Vec<DVec3>) -> Self {
+        let row = degree_v + 1;
+        let rows: Vec<Vec<DVec3>> = points.chunks(row).map(power_form).collect();
+        let mut coefficients = vec![DVec3::ZERO; points.len()];
+        for l in 0..row {
+            let column: Vec<DVec3> = rows.iter().map(|r| r[l]).collect();
+            for (k, c) in power_form(&column).into_iter().enumerate() {
+                coefficients[k * row + l] = c;
+            }
+        }
         Self {
-            degree_u: 3,
-            degree_v: 2,
+            degree_u,
+            degree_v,
             points,
+            coefficients,
         }
     }
 
@@ -205,22 +231,21 @@ impl BezierPatch {
             .collect()
     }
 
-    /// `S(u, v)` and the tangents `S_u`, `S_v`: de Casteljau in `v` along
-    /// every row, then in `u` across the results (and their `v`-derivatives).
+    /// `S(u, v)` and the tangents `S_u`, `S_v`, from the power form: each
+    /// row `k` of coefficients is a polynomial `r_k(v)` (Horner's rule gives
+    /// it and `r_k'(v)`); then `S = Σ r_k uᵏ`, `S_u` its `u`-derivative and
+    /// `S_v = Σ r_k' uᵏ`, Horner's rule again.
     #[must_use]
     pub fn derivatives(&self, uv: DVec2) -> [DVec3; 3] {
         let mut across = [DVec3::ZERO; MAX_DEGREE + 1];
         let mut across_dv = [DVec3::ZERO; MAX_DEGREE + 1];
         let row = self.degree_v + 1;
-        for i in 0..=self.degree_u {
-            let start = i * row;
-            let (point, dv) = de_casteljau(&self.points[start..start + row], uv.y);
-            across[i] = point;
-            across_dv[i] = dv;
+        for (k, coefficients) in self.coefficients.chunks(row).enumerate() {
+            (across[k], across_dv[k]) = horner(coefficients, uv.y);
         }
         let columns = self.degree_u + 1;
-        let (position, du) = de_casteljau(&across[..columns], uv.x);
-        let (dv, _) = de_casteljau(&across_dv[..columns], uv.x);
+        let (position, du) = horner(&across[..columns], uv.x);
+        let (dv, _) = horner(&across_dv[..columns], uv.x);
         [position, du, dv]
     }
 
@@ -260,5 +285,56 @@ impl BezierPatch {
             position,
             normal: self.normal_from(uv, du, dv),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use testkit::oracles::bernstein;
+
+    /// `C(t)` by the definition, `Σ B_i,n(t) P_i`.
+    fn by_definition(points: &[DVec3], t: f64) -> DVec3 {
+        let n = points.len() - 1;
+        (0..=n).map(|i| points[i] * bernstein(i, n, t)).sum()
+    }
+
+    #[test]
+    fn the_power_form_is_the_bernstein_form_up_to_the_largest_degree() {
+        for n in 0..=MAX_DEGREE {
+            // A wiggly control polygon of size about 10.
+            let points: Vec<DVec3> = (0..=n)
+                .map(|i| {
+                    let i = i as f64;
+                    DVec3::new(i, 10.0 * (1.7 * i).sin(), 5.0 * (0.9 * i).cos())
+                })
+                .collect();
+            for step in 0..=20 {
+                let t = f64::from(step) / 20.0;
+                let (point, derivative) = curve(&points, t);
+                let error = (point - by_definition(&points, t)).length();
+                assert!(error < 1e-9, "degree {n} at t = {t}: off by {error}");
+                // The derivative against a central difference.
+                let h = 1e-6;
+                let (before, after) = (by_definition(&points, t - h), by_definition(&points, t + h));
+                let difference = (after - before) / (2.0 * h);
+                let off = (derivative - difference).length() / difference.length().max(1.0);
+                assert!(off < 1e-5, "degree {n} at t = {t}: derivative off by {off}");
+            }
+        }
+        assert_eq!(curve(&[], 0.5), (DVec3::ZERO, DVec3::ZERO));
+    }
+
+    #[test]
+    fn a_patch_is_curves_of_curves() {
+        let patch = BezierPatch::seed_surface();
+        for (u, v) in [(0.0, 0.0), (0.3, 0.8), (1.0, 0.5), (0.5, 1.0)] {
+            let across: Vec<DVec3> = (0..=3).map(|i| by_definition(&patch.row(i), v)).collect();
+            let expected = by_definition(&across, u);
+            let got = patch.position(DVec2::new(u, v));
+            assert!((got - expected).length() < 1e-12, "at ({u}, {v}): {got} vs {expected}");
+        }
+        assert_eq!(patch.position(DVec2::ZERO), patch.control_point(0, 0));
+        assert_eq!(patch.position(DVec2::ONE), patch.control_point(3, 2));
     }
 }

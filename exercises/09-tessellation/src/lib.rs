@@ -14,7 +14,7 @@ pub use glam::{DVec2, DVec3};
 /// Given: the error type of every fallible function of this crate.
 pub mod error;
 
-/// Given: Bézier curves and tensor-product Bézier patches, evaluated by de Casteljau.
+/// Given: Bézier curves and tensor-product Bézier patches, evaluated through their power form.
 pub mod bezier;
 
 /// Given: a surface of several Bézier patches that meet along shared boundary curves.

@@ -5,7 +5,7 @@ mod common;
 use common::{assert_picture, lattice_domain};
 use proptest::prelude::*;
 use tessellation::DVec3;
-use tessellation::bezier::de_casteljau;
+use tessellation::bezier::curve;
 use tessellation::bezier_triangle::{CubicBezierTriangle, evaluate, pn_triangle, tessellate_pn};
 use tessellation::error::TessError;
 use tessellation::mesh::Mesh;
@@ -62,17 +62,17 @@ fn edges_are_cubic_bezier_curves() {
     // b030, b120, b210, b300 at parameter u; likewise the other edges.
     let t = lumpy();
     for s in [0.0, 0.2, 0.5, 0.9] {
-        let w0 = de_casteljau(&[t.b030, t.b120, t.b210, t.b300], s).0;
+        let w0 = curve(&[t.b030, t.b120, t.b210, t.b300], s).0;
         assert!(
             evaluate(&t, [s, 1.0 - s, 0.0]).distance(w0) < EXACT,
             "w = 0 at u = {s}"
         );
-        let u0 = de_casteljau(&[t.b003, t.b012, t.b021, t.b030], s).0;
+        let u0 = curve(&[t.b003, t.b012, t.b021, t.b030], s).0;
         assert!(
             evaluate(&t, [0.0, s, 1.0 - s]).distance(u0) < EXACT,
             "u = 0 at v = {s}"
         );
-        let v0 = de_casteljau(&[t.b300, t.b201, t.b102, t.b003], s).0;
+        let v0 = curve(&[t.b300, t.b201, t.b102, t.b003], s).0;
         assert!(
             evaluate(&t, [1.0 - s, 0.0, s]).distance(v0) < EXACT,
             "v = 0 at w = {s}"

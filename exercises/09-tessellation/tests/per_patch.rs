@@ -6,7 +6,7 @@ use common::{
     POSITION_TOLERANCE, assert_picture, assert_tiles_rectangle, bernstein_surface, patch_from,
 };
 use proptest::prelude::*;
-use tessellation::bezier::{BezierPatch, de_casteljau};
+use tessellation::bezier::{BezierPatch, curve};
 use tessellation::error::TessError;
 use tessellation::patch_grid::PatchGrid;
 use tessellation::per_patch::{
@@ -64,10 +64,10 @@ fn polyline_of_a_cubic_stays_within_the_tolerance() {
         let mut worst: f64 = 0.0;
         for s in 0..k {
             let (a, b) = (s as f64 / k as f64, (s + 1) as f64 / k as f64);
-            let (pa, pb) = (de_casteljau(&cubic, a).0, de_casteljau(&cubic, b).0);
+            let (pa, pb) = (curve(&cubic, a).0, curve(&cubic, b).0);
             for m in 1..20 {
                 let t = m as f64 / 20.0;
-                let on_curve = de_casteljau(&cubic, a + (b - a) * t).0;
+                let on_curve = curve(&cubic, a + (b - a) * t).0;
                 worst = worst.max(on_curve.distance(pa.lerp(pb, t)));
             }
         }

@@ -18,6 +18,17 @@ pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed-point units, `2^SUBPIXEL_BITS`.
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
+/// The edge functions at a covered pixel's centre as exact integers, in
+/// snapped units (1/256 pixel, so one pixel² is `2¹⁶`): `weights[k]` is the
+/// edge function of the edge opposite vertex `k`, signed so that it is
+/// `≥ 0` inside, i.e. vertex `k`'s barycentric weight times twice the
+/// triangle's area. Vertex `k` is the `k`-th of the vertices as given; the
+/// three always sum to twice the snapped triangle's area.
+///
+/// The tests compare these with the snapped edge functions at every pixel:
+/// they are how a fill shows that it snaps and decides in integers.
+pub type EdgeWeights = [i128; 3];
+
 /// Snaps a coordinate to the fixed-point grid: `round(v · 2^SUBPIXEL_BITS)`
 /// (ties away from zero). `None` for NaN, infinities and `|v| > MAX_COORD`.
 #[must_use]
@@ -30,7 +41,8 @@ pub fn snap(v: f32) -> Option<i64> {
 }
 
 /// Rasterizes the triangle and calls `plot` once per covered pixel inside
-/// `viewport` (inclusive bounds), with depth and colour interpolated.
+/// `viewport` (inclusive bounds), with depth and colour interpolated and
+/// the pixel's [`EdgeWeights`].
 ///
 /// **Edge functions.** With vertices `V0, V1, V2` (snapped, see
 /// [`SUBPIXEL_BITS`]), edge `i` runs from `Vi` to `V(i+1)` (indices mod 3):
@@ -63,7 +75,9 @@ pub fn snap(v: f32) -> Option<i64> {
 /// `i` (twice the signed area; negative after the winding fix). The weight
 /// of vertex `V(i+2)` at `P` is `λ(i+2) = O_i(P) / D`, with `1/D` computed
 /// once. The three weights sum to 1, are all in `[0, 1]` inside, and are
-/// 1 at their own vertex; depth and colour are `Σ λ_k · value_k`.
+/// 1 at their own vertex; depth and colour are `Σ λ_k · value_k`. `plot`
+/// also gets the exact numerators: `weights[k] = λ_k · |D|`, in the
+/// vertices' order as given (before the winding fix).
 ///
 /// **Work.** The bounding box of the snapped vertices, clipped to
 /// `viewport`; within a row `O_i` grows by `A_i` per pixel, within a column
@@ -71,8 +85,12 @@ pub fn snap(v: f32) -> Option<i64> {
 ///
 /// A triangle of zero area (after snapping), or with a position that is
 /// NaN, infinite or beyond ±[`MAX_COORD`], plots nothing.
-pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl FnMut(Fragment)) {
-    // BEGIN SOLUTION edge_function: set up A, B, C per edge; walk the clipped box; top-left rule; interpolate
+pub fn fill_triangle(
+    vertices: [Vertex; 3],
+    viewport: Viewport,
+    mut plot: impl FnMut(Fragment, EdgeWeights),
+) {
+    // BEGIN SOLUTION edge_function: set up A, B, C per edge; walk the clipped box; top-left rule; interpolate; pass the exact weights on
     let mut v = vertices;
     let mut p = [[0_i64; 2]; 3];
     for (k, vertex) in v.iter().enumerate() {
@@ -89,10 +107,13 @@ pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl F
     if area == 0 || viewport.is_empty() {
         return;
     }
+    // Which given vertex each of v[0], v[1], v[2] is.
+    let mut given = [0, 1, 2];
     if area > 0 {
         // Counter-clockwise: make it clockwise so that inside is O ≤ 0.
         v.swap(1, 2);
         p.swap(1, 2);
+        given.swap(1, 2);
         area = -area;
     }
     // Per edge: A, B, C and the fill-rule bias (0 where a centre on the
@@ -138,11 +159,17 @@ pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut plot: impl F
                 let (l2, l0, l1) = (w(0), w(1), w(2));
                 #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
                 let pixel = Pixel::new(x as i32, y as i32);
-                plot(Fragment {
+                // O_i ≤ 0 inside: −O_i is V(i+2)'s weight times |D|.
+                let mut exact = [0; 3];
+                for i in 0..3 {
+                    exact[given[(i + 2) % 3]] = -o[i];
+                }
+                let fragment = Fragment {
                     pixel,
                     depth: l0 * v[0].depth + l1 * v[1].depth + l2 * v[2].depth,
                     colour: v[0].colour * l0 + v[1].colour * l1 + v[2].colour * l2,
-                });
+                };
+                plot(fragment, exact);
             }
             for i in 0..3 {
                 o[i] += a[i] * i128::from(ONE);

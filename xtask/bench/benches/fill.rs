@@ -121,7 +121,7 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
         |b| {
             b.iter(|| {
                 for tri in &vertices {
-                    fill_triangle(*tri, viewport, |f| canvas.plot(f));
+                    fill_triangle(*tri, viewport, |f, _| canvas.plot(f));
                 }
                 black_box(&canvas);
             });

@@ -168,7 +168,7 @@ pub(super) fn closing(text: &str, open: usize, angles: bool) -> Option<usize> {
 }
 
 /// Splits at the commas that are not inside any bracket.
-fn split_top_level(text: &str) -> Vec<&str> {
+pub(super) fn split_top_level(text: &str) -> Vec<&str> {
     let bytes = text.as_bytes();
     let mut parts = Vec::new();
     let mut depth = 0i32;
