@@ -3,19 +3,26 @@
 //!
 //! 1. the student stubs are exactly what `reference/` generates;
 //! 2. every workspace test passes against the reference solutions;
-//! 3. the course is clippy-clean (`-D warnings`, all targets and features,
-//!    the benchmarks too): with the reference solutions, and with the
-//!    stubs (checked after step 5, where the stage holds them);
+//! 3. the reference solutions are clippy-clean (`-D warnings`, all targets,
+//!    the benchmarks too);
 //! 4. graded with `--reference`, every task gets full points;
 //! 5. graded as shipped (the stubs), the course scores 0, compiles and the
 //!    grader finishes;
-//! 7. the student edition that `cargo xtask release` writes builds on its
-//!    own: `cargo test` there fails only at `todo!()`, `cargo clippy
-//!    --all-targets` is clean, `cargo xtask grade` works.
+//! 6. the stubs are clippy-clean;
+//! 7. a do-nothing edition (each `todo!()` replaced by the cheapest body
+//!    that compiles) scores 0 on every task;
+//! 8. each planted shortcut (`xtask/tests/shortcuts.toml`: a simpler or
+//!    copied algorithm in place of the one a task teaches) loses its
+//!    points;
+//! 9. no given function with a task's signature scores in that task's
+//!    place (DESIGN.md, property 9);
+//! 10. the student edition that `cargo xtask release` writes builds on its
+//!     own: `cargo test` there fails only at `todo!()`, `cargo clippy
+//!     --all-targets` is clean, `cargo xtask grade` works.
 //!
-//! Steps 2 to 7 build in the stage (see `stage`), one build cache for the
-//! reference, the stubs and the edition: switching between them rebuilds
-//! only the crates whose files differ.
+//! Steps 2 to 10 build in the stage (see `stage`), one build cache for the
+//! reference, the stubs, the planted editions and the student edition:
+//! switching between them rebuilds only the crates whose files differ.
 //!
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
@@ -407,7 +414,10 @@ impl Shortcut {
             .flat_map(|t| &t.tasks)
             .find(|t| t.id == self.task);
         let Some(task) = task else {
-            return vec![format!("{}: no task {} / {}", self.what, self.topic, self.task)];
+            return vec![format!(
+                "{}: no task {} / {}",
+                self.what, self.topic, self.task
+            )];
         };
         let mut problems = Vec::new();
         if self.zero && task.score > 0.0 {
@@ -476,12 +486,16 @@ fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     };
     let shortcuts: Shortcuts =
         toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
-    // A round is one submission-like folder; shortcuts of one file go into
-    // different rounds, so that none overwrites another.
+    // A round is one submission-like folder: the solutions of its topics
+    // with one shortcut planted in each, so that every shortcut is graded
+    // alone, against the solutions of the other tasks.
     let mut rounds: Vec<Vec<&Shortcut>> = Vec::new();
     for shortcut in &shortcuts.shortcut {
-        let same_file = |s: &&Shortcut| s.topic == shortcut.topic && s.file == shortcut.file;
-        match rounds.iter_mut().find(|round| !round.iter().any(same_file)) {
+        let same_topic = |s: &&Shortcut| s.topic == shortcut.topic;
+        match rounds
+            .iter_mut()
+            .find(|round| !round.iter().any(same_topic))
+        {
             Some(round) => round.push(shortcut),
             None => rounds.push(vec![shortcut]),
         }
@@ -496,6 +510,13 @@ fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
                 .with_context(|| format!("cannot clear {}", planted.display()))?;
         }
         for shortcut in round {
+            let solutions = root.join("reference").join(&shortcut.topic);
+            for file in stage::files_under(&solutions)? {
+                let to = Path::new("exercises").join(&shortcut.topic).join(&file);
+                let text = fs::read(solutions.join(&file))
+                    .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?;
+                stage::write_file(&planted.join(to), text)?;
+            }
             let file = Path::new("exercises")
                 .join(&shortcut.topic)
                 .join("src")
@@ -722,13 +743,22 @@ fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)> {
                     if function.shape != task_fn.shape {
                         continue;
                     }
-                    let module = module_path(&given_file.strip_prefix(dir.join("src")).unwrap_or(given_file));
+                    let module = module_path(
+                        given_file
+                            .strip_prefix(dir.join("src"))
+                            .unwrap_or(given_file),
+                    );
                     let reachable = *dir == crate_dir
                         || (depends_on(package) && public_chain(root, dir, &module));
                     let path = if *dir == crate_dir {
                         format!("crate{}::{}", prefixed(&module), function.name)
                     } else if reachable {
-                        format!("{}{}::{}", package.replace('-', "_"), prefixed(&module), function.name)
+                        format!(
+                            "{}{}::{}",
+                            package.replace('-', "_"),
+                            prefixed(&module),
+                            function.name
+                        )
                     } else {
                         format!("stand_in::{}", function.name)
                     };

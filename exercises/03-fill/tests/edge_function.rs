@@ -210,7 +210,9 @@ fn star() -> Canvas {
         )
     };
     for k in 0..24 {
-        fill_triangle([centre, tip(k), tip(k + 1)], viewport, |f, _| canvas.plot(f));
+        fill_triangle([centre, tip(k), tip(k + 1)], viewport, |f, _| {
+            canvas.plot(f)
+        });
     }
     canvas
 }

@@ -174,6 +174,34 @@ fn plane_of_the_known_triangle() {
     assert_eq!(incremental_depths(&plane, 1, 1, 0), Vec::<f64>::new());
 }
 
+/// The instrument of the incremental walk: each depth must be exactly the
+/// previous one minus `A/C` (one subtraction per pixel), bit for bit. A
+/// walk that evaluates the plane at every pixel, or computes
+/// `z_0 − k · A/C`, rounds differently on a long row with a step that
+/// `f64` cannot hold exactly, and fails here.
+#[testkit::test]
+fn each_depth_is_the_previous_one_minus_the_step() {
+    // z = 0.1 x + 0.3 y + 0.7: A/C = −0.1 is not a binary fraction.
+    let triangle = [(0.0, 0.0), (1000.0, 10.0), (3.0, 400.0)]
+        .map(|(x, y)| DVec3::new(x, y, 0.1 * x + 0.3 * y + 0.7));
+    let plane = DepthPlane::try_from_triangle(triangle).unwrap();
+    let (y, first, count) = (7, -3, 1000);
+    let yours = incremental_depths(&plane, y, first, count);
+    assert_eq!(yours.len(), count);
+    let mut z = plane.depth_at(DVec2::new(f64::from(first), f64::from(y)));
+    let step = plane.step_x();
+    for (k, &got) in yours.iter().enumerate() {
+        assert!(
+            got.to_bits() == z.to_bits(),
+            "pixel {k} of the row: {got:e}, but z_{k} = z_{} − A/C = {z:e}: the walk \
+             starts with the plane equation at the first pixel and then subtracts A/C \
+             once per pixel (the seed's acceleration), not evaluating the plane anew",
+            k.saturating_sub(1)
+        );
+        z -= step;
+    }
+}
+
 #[testkit::test]
 fn triangles_without_a_depth_plane_are_errors() {
     let edge_on = [

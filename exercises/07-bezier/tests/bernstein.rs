@@ -5,6 +5,7 @@ mod common;
 
 use bezier::bernstein::{bernstein, bernstein_basis, bernstein_curve, binomial};
 use bezier::{BezierError, MAX_DEGREE};
+use common::Counted;
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 
@@ -92,6 +93,52 @@ fn scalar_curves_work_too() {
         let t = f64::from(k) / 10.0;
         let p = bernstein_curve(&points, t).unwrap();
         assert!((p - t).abs() < 1e-14, "t = {t}: {p}");
+    }
+}
+
+#[testkit::test]
+fn the_curve_scales_each_control_point_once_by_its_polynomial() {
+    for degree in 1..=8_usize {
+        let points: Vec<Counted> = (0..=degree)
+            .map(|i| Counted(1.0 + i as f64 * 0.7 - (i * i) as f64 * 0.1))
+            .collect();
+        let t = 0.3;
+        let (point, scalings) = common::scalings(|| bernstein_curve(&points, t).unwrap());
+        let described: Vec<String> = scalings
+            .iter()
+            .map(|(p, s)| format!("{p:.3} · {s:.5}"))
+            .collect();
+        assert_eq!(
+            scalings.len(),
+            degree + 1,
+            "degree {degree}: the Bernstein form Σ B_i,n(t) · P_i multiplies each of the {} \
+             control points once, yours multiplies points {} times ({}): is this de \
+             Casteljau or another evaluation?",
+            degree + 1,
+            scalings.len(),
+            described.join(", ")
+        );
+        for (i, p) in points.iter().enumerate() {
+            let expected = common::bernstein_def(i, degree, t);
+            let found = scalings
+                .iter()
+                .any(|&(q, s)| q == p.0 && (s - expected).abs() < 1e-12);
+            assert!(
+                found,
+                "degree {degree}: P_{i} = {} is never multiplied by B_{i},{degree}({t}) = {expected} \
+                 (your multiplications: {})",
+                p.0,
+                described.join(", ")
+            );
+        }
+        let expected: f64 = (0..=degree)
+            .map(|i| points[i].0 * common::bernstein_def(i, degree, t))
+            .sum();
+        assert!(
+            (point.0 - expected).abs() < 1e-12,
+            "degree {degree}: {} vs {expected}",
+            point.0
+        );
     }
 }
 

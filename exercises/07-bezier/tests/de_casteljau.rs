@@ -5,6 +5,7 @@ mod common;
 
 use bezier::de_casteljau::{de_casteljau, point_and_derivative, split};
 use bezier::{BezierError, MAX_DEGREE};
+use common::Counted;
 use glam::{DMat2, DVec2, DVec3};
 use proptest::prelude::*;
 
@@ -34,51 +35,6 @@ fn seed_figure_6_at_one_half() {
     assert_eq!(cp.derivative, p2(4.5, 0.0));
 }
 
-/// A 1-D control point that counts the multiplications done on points:
-/// de Casteljau's triangle of degree `n` has `n(n + 1)/2` interpolations
-/// of neighbours, each at least one; the Bernstein form scales each of the
-/// `n + 1` points once (its polynomials are plain `f64` work).
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Counted(f64);
-
-thread_local! {
-    static POINT_MULTIPLICATIONS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
-}
-
-impl std::ops::Add for Counted {
-    type Output = Self;
-    fn add(self, other: Self) -> Self {
-        Self(self.0 + other.0)
-    }
-}
-
-impl std::ops::Sub for Counted {
-    type Output = Self;
-    fn sub(self, other: Self) -> Self {
-        Self(self.0 - other.0)
-    }
-}
-
-/// Counts one multiplication of a point.
-fn count_multiplication() {
-    POINT_MULTIPLICATIONS.with(|n| n.set(n.get() + 1));
-}
-
-impl std::ops::Mul<f64> for Counted {
-    type Output = Self;
-    fn mul(self, s: f64) -> Self {
-        count_multiplication();
-        Self(self.0 * s)
-    }
-}
-
-impl bezier::ControlPoint for Counted {
-    const ZERO: Self = Self(0.0);
-    fn is_finite_point(self) -> bool {
-        self.0.is_finite()
-    }
-}
-
 #[testkit::test]
 fn evaluation_interpolates_neighbours_level_by_level() {
     for degree in 1..=8_usize {
@@ -86,9 +42,8 @@ fn evaluation_interpolates_neighbours_level_by_level() {
             .map(|i| Counted(i as f64 * 0.7 - (i * i) as f64 * 0.1))
             .collect();
         let plain: Vec<f64> = points.iter().map(|p| p.0).collect();
-        POINT_MULTIPLICATIONS.with(|n| n.set(0));
-        let point = de_casteljau(&points, 0.3).unwrap();
-        let multiplications = POINT_MULTIPLICATIONS.with(std::cell::Cell::get);
+        let (point, scalings) = common::scalings(|| de_casteljau(&points, 0.3).unwrap());
+        let multiplications = scalings.len();
         let interpolations = degree * (degree + 1) / 2;
         assert!(
             multiplications >= interpolations,

@@ -316,7 +316,8 @@ mod tests {
                 assert!(error < 1e-9, "degree {n} at t = {t}: off by {error}");
                 // The derivative against a central difference.
                 let h = 1e-6;
-                let (before, after) = (by_definition(&points, t - h), by_definition(&points, t + h));
+                let (before, after) =
+                    (by_definition(&points, t - h), by_definition(&points, t + h));
                 let difference = (after - before) / (2.0 * h);
                 let off = (derivative - difference).length() / difference.length().max(1.0);
                 assert!(off < 1e-5, "degree {n} at t = {t}: derivative off by {off}");
@@ -332,7 +333,10 @@ mod tests {
             let across: Vec<DVec3> = (0..=3).map(|i| by_definition(&patch.row(i), v)).collect();
             let expected = by_definition(&across, u);
             let got = patch.position(DVec2::new(u, v));
-            assert!((got - expected).length() < 1e-12, "at ({u}, {v}): {got} vs {expected}");
+            assert!(
+                (got - expected).length() < 1e-12,
+                "at ({u}, {v}): {got} vs {expected}"
+            );
         }
         assert_eq!(patch.position(DVec2::ZERO), patch.control_point(0, 0));
         assert_eq!(patch.position(DVec2::ONE), patch.control_point(3, 2));

@@ -102,9 +102,7 @@ fn parse(masked: &str, at: usize) -> Option<Function> {
 fn split_parameter(parameter: &str) -> Option<(&str, &str)> {
     let bytes = parameter.as_bytes();
     let colon = (0..bytes.len()).find(|&i| {
-        bytes[i] == b':'
-            && bytes.get(i + 1) != Some(&b':')
-            && (i == 0 || bytes[i - 1] != b':')
+        bytes[i] == b':' && bytes.get(i + 1) != Some(&b':') && (i == 0 || bytes[i - 1] != b':')
     })?;
     Some((&parameter[..colon], &parameter[colon + 1..]))
 }
@@ -263,9 +261,18 @@ mod nested {
             planted.contains("Pixel)) {\n    crate::given::line(from, to, plot)\n}"),
             "{planted}"
         );
-        let copied = plant(SOURCE, &found[1], "stand_in::cube", Some("pub fn cube() {}")).unwrap();
+        let copied = plant(
+            SOURCE,
+            &found[1],
+            "stand_in::cube",
+            Some("pub fn cube() {}"),
+        )
+        .unwrap();
         assert!(copied.contains("stand_in::cube([u, v], s)"), "{copied}");
-        assert!(copied.ends_with("mod stand_in {\npub fn cube() {}\n}\n"), "{copied}");
+        assert!(
+            copied.ends_with("mod stand_in {\npub fn cube() {}\n}\n"),
+            "{copied}"
+        );
     }
 
     #[test]

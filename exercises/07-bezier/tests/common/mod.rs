@@ -201,3 +201,53 @@ pub fn ascii_trim(size: usize, trimmed: impl Fn(DVec2) -> bool) -> String {
 pub fn image_path(name: &str) -> String {
     format!("{}/tests/images/{name}.png", env!("CARGO_MANIFEST_DIR"))
 }
+
+/// A 1-D control point that records every multiplication of a point by a
+/// scalar (the point's value and the factor), so that a test can tell how
+/// an evaluation combines the control points: de Casteljau's triangle of
+/// degree `n` has `n(n + 1)/2` interpolations of neighbours, each at least
+/// one multiplication; the Bernstein form scales each of the `n + 1`
+/// control points once, by its polynomial (plain `f64` work).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Counted(pub f64);
+
+thread_local! {
+    static SCALINGS: std::cell::RefCell<Vec<(f64, f64)>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+impl std::ops::Add for Counted {
+    type Output = Self;
+    fn add(self, other: Self) -> Self {
+        Self(self.0 + other.0)
+    }
+}
+
+impl std::ops::Sub for Counted {
+    type Output = Self;
+    fn sub(self, other: Self) -> Self {
+        Self(self.0 - other.0)
+    }
+}
+
+impl std::ops::Mul<f64> for Counted {
+    type Output = Self;
+    fn mul(self, s: f64) -> Self {
+        SCALINGS.with(|all| all.borrow_mut().push((self.0, s)));
+        Self(self.0 * s)
+    }
+}
+
+impl bezier::ControlPoint for Counted {
+    const ZERO: Self = Self(0.0);
+    fn is_finite_point(self) -> bool {
+        self.0.is_finite()
+    }
+}
+
+/// What `evaluate` returns, and the `(point, factor)` of every
+/// multiplication of a [`Counted`] point it did, in order.
+pub fn scalings<T>(evaluate: impl FnOnce() -> T) -> (T, Vec<(f64, f64)>) {
+    SCALINGS.with(|all| all.borrow_mut().clear());
+    let value = evaluate();
+    (value, SCALINGS.with(|all| all.borrow_mut().split_off(0)))
+}
