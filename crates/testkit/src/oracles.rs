@@ -29,6 +29,89 @@ pub fn bernstein(i: usize, n: usize, t: f64) -> f64 {
     binomial(n, i as usize) as f64 * t.powi(i) * (1.0 - t).powi(rest)
 }
 
+/// `d/dt B_{i,n}(t) = n · (B_{i−1,n−1}(t) − B_{i,n−1}(t))`, by the
+/// definition's derivative; `0` for `n = 0` or `i > n`.
+#[must_use]
+pub fn bernstein_derivative(i: usize, n: usize, t: f64) -> f64 {
+    if n == 0 || i > n {
+        return 0.0;
+    }
+    let below = if i == 0 {
+        0.0
+    } else {
+        bernstein(i - 1, n - 1, t)
+    };
+    n as f64 * (below - bernstein(i, n - 1, t))
+}
+
+/// A tensor-product Bézier surface of degree `p × q` by its definition,
+/// the double Bernstein sum, with its partial derivatives:
+///
+/// ```text
+///   S(u, v) = Σ_i Σ_j B_i,p(u) B_j,q(v) P_ij      S_u = Σ_i Σ_j B'_i,p(u) B_j,q(v) P_ij
+/// ```
+///
+/// Returns `[S, S_u, S_v]`; `point(i, j)` is `P_ij` (`i ≤ p` along `u`,
+/// `j ≤ q` along `v`), so that any storage order can be used.
+#[must_use]
+pub fn tensor_bezier(
+    p: usize,
+    q: usize,
+    point: impl Fn(usize, usize) -> glam::DVec3,
+    [u, v]: [f64; 2],
+) -> [glam::DVec3; 3] {
+    let mut out = [glam::DVec3::ZERO; 3];
+    for i in 0..=p {
+        for j in 0..=q {
+            let pij = point(i, j);
+            out[0] += pij * (bernstein(i, p, u) * bernstein(j, q, v));
+            out[1] += pij * (bernstein_derivative(i, p, u) * bernstein(j, q, v));
+            out[2] += pij * (bernstein(i, p, u) * bernstein_derivative(j, q, v));
+        }
+    }
+    out
+}
+
+/// A triangular Bézier patch of degree `n` by its definition, with its
+/// partial derivatives as a polynomial in `u`, `v` and `w`:
+///
+/// ```text
+///   B(u, v, w) = Σ_{i+j+k=n} n!/(i! j! k!) · uⁱ vʲ wᵏ · P_ijk
+/// ```
+///
+/// Returns `[B, ∂B/∂u, ∂B/∂v, ∂B/∂w]`; `point(i, j, k)` is `P_ijk`. On
+/// the plane `u + v + w = 1` the surface's tangents are `∂B/∂v − ∂B/∂u`
+/// and `∂B/∂w − ∂B/∂u`.
+#[must_use]
+pub fn triangle_bezier(
+    n: usize,
+    point: impl Fn(usize, usize, usize) -> glam::DVec3,
+    [u, v, w]: [f64; 3],
+) -> [glam::DVec3; 4] {
+    // xᵉ, and its derivative e · xᵉ⁻¹ (0 for e = 0).
+    let power = |x: f64, e: usize| x.powi(i32::try_from(e).expect("a small degree"));
+    let slope = |x: f64, e: usize| {
+        if e == 0 {
+            0.0
+        } else {
+            e as f64 * power(x, e - 1)
+        }
+    };
+    let mut out = [glam::DVec3::ZERO; 4];
+    for i in 0..=n {
+        for j in 0..=n - i {
+            let k = n - i - j;
+            let c = (binomial(n, i) * binomial(n - i, j)) as f64;
+            let pijk = point(i, j, k) * c;
+            out[0] += pijk * (power(u, i) * power(v, j) * power(w, k));
+            out[1] += pijk * (slope(u, i) * power(v, j) * power(w, k));
+            out[2] += pijk * (power(u, i) * slope(v, j) * power(w, k));
+            out[3] += pijk * (power(u, i) * power(v, j) * slope(w, k));
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -50,5 +133,33 @@ mod tests {
         assert_eq!(bernstein(3, 3, 1.0), 1.0);
         assert_eq!(bernstein(4, 3, 0.3), 0.0);
         assert!((bernstein(1, 3, 0.25) - 3.0 * 0.25 * 0.75 * 0.75).abs() < 1e-15);
+    }
+
+    #[test]
+    fn surfaces_by_definition_reproduce_linear_functions() {
+        use glam::DVec3;
+        // Control points on a plane (evenly spaced) give the plane itself.
+        let linear = |x: f64, y: f64| DVec3::new(x, y, 2.0 * x - y);
+        let [s, su, sv] = tensor_bezier(
+            3,
+            2,
+            |i, j| linear(i as f64 / 3.0, j as f64 / 2.0),
+            [0.3, 0.6],
+        );
+        assert!((s - linear(0.3, 0.6)).length() < 1e-14, "{s}");
+        assert!((su - DVec3::new(1.0, 0.0, 2.0)).length() < 1e-13, "{su}");
+        assert!((sv - DVec3::new(0.0, 1.0, -1.0)).length() < 1e-13, "{sv}");
+        let [b, bu, bv, bw] = triangle_bezier(
+            3,
+            |i, j, _| linear(i as f64 / 3.0, j as f64 / 3.0),
+            [0.2, 0.5, 0.3],
+        );
+        assert!((b - linear(0.2, 0.5)).length() < 1e-14, "{b}");
+        // Tangents in the plane u + v + w = 1: moving weight from u to v
+        // moves the point by (−1, 1) in (x, y).
+        assert!((bv - bu - DVec3::new(-1.0, 1.0, -3.0)).length() < 1e-13);
+        assert!((bw - bu - DVec3::new(-1.0, 0.0, -2.0)).length() < 1e-13);
+        assert_eq!(bernstein_derivative(0, 0, 0.5), 0.0);
+        assert!((bernstein_derivative(1, 2, 0.25) - 2.0 * (0.75 - 0.25)).abs() < 1e-15);
     }
 }

@@ -21,7 +21,7 @@
 pub mod domain;
 /// Given: the compute passes around tasks 1 and 3.
 pub mod passes;
-/// Given: Bézier patches and triangles, evaluated on the CPU in `f64`.
+/// Given: Bézier patches and triangles, their control points as the GPU reads them.
 pub mod patch;
 /// Given: the render pass around tasks 4 and 5.
 pub mod render;

@@ -88,7 +88,7 @@ fn check(
 /// ∂P/∂u × ∂P/∂v by central differences, independent of de Casteljau.
 fn patch_cross(patch: &BezierPatch, uv: DVec2) -> DVec3 {
     const H: f64 = 1e-4;
-    let p = |u: f64, v: f64| patch.evaluate(DVec2::new(u, v)).position;
+    let p = |u: f64, v: f64| common::patch_point(patch, DVec2::new(u, v)).position;
     let du = (p(uv.x + H, uv.y) - p(uv.x - H, uv.y)) / (2.0 * H);
     let dv = (p(uv.x, uv.y + H) - p(uv.x, uv.y - H)) / (2.0 * H);
     du.cross(dv)
@@ -101,7 +101,7 @@ fn patch_cross_length(patch: &BezierPatch, uv: DVec2) -> f64 {
 
 fn triangle_cross_length(t: &BezierTriangle, uvw: DVec3) -> f64 {
     const H: f64 = 1e-4;
-    let p = |d: DVec3| t.evaluate(d).position;
+    let p = |d: DVec3| common::triangle_point(t, d).position;
     // Directions within the plane u + v + w = 1.
     let dv = (p(uvw + DVec3::new(-H, H, 0.0)) - p(uvw - DVec3::new(-H, H, 0.0))) / (2.0 * H);
     let dw = (p(uvw + DVec3::new(-H, 0.0, H)) - p(uvw - DVec3::new(-H, 0.0, H))) / (2.0 * H);
@@ -222,7 +222,7 @@ proptest! {
         for (patch, domain) in patches.iter().zip(&domains) {
             for d in &domain.points {
                 let uv = d.truncate().as_dvec2();
-                check(&got[k], patch.evaluate(uv), patch_cross_length(patch, uv), &format!("patch at {uv}"))?;
+                check(&got[k], common::patch_point(patch, uv), patch_cross_length(patch, uv), &format!("patch at {uv}"))?;
                 k += 1;
             }
         }
@@ -246,7 +246,7 @@ proptest! {
         for (triangle, domain) in triangles.iter().zip(&domains) {
             for d in &domain.points {
                 let uvw = d.as_dvec3();
-                check(&got[k], triangle.evaluate(uvw), triangle_cross_length(triangle, uvw), &format!("triangle at {uvw}"))?;
+                check(&got[k], common::triangle_point(triangle, uvw), triangle_cross_length(triangle, uvw), &format!("triangle at {uvw}"))?;
                 k += 1;
             }
         }
@@ -267,7 +267,24 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
         Vec3::new(0.3, 0.0, 1.0),
         Vec3::new(0.0, 0.3, 1.0),
     ];
-    let triangle = BezierTriangle::pn_triangle(vertices, normals);
+    // The PN triangle of these vertices and normals (seed 001 §4.1: edge
+    // points are the thirds of the edges moved into the nearest vertex's
+    // tangent plane, the centre is E + (E − V)/2), its ten points written
+    // out in storage order.
+    let triangle = BezierTriangle {
+        points: [
+            Vec3::new(0.0000000, 0.0000000, 0.0000000),  // P300
+            Vec3::new(0.3333333, 0.0000000, 0.0666667),  // P210
+            Vec3::new(-0.0061728, 0.3271605, 0.0641975), // P201
+            Vec3::new(0.7125382, 0.0000000, 0.2862385),  // P120
+            Vec3::new(0.3524323, 0.3455516, 0.2223949),  // P111
+            Vec3::new(0.0000000, 0.7033639, 0.1889908),  // P102
+            Vec3::new(1.0000000, 0.0000000, 0.2000000),  // P030
+            Vec3::new(0.7033639, 0.3333333, 0.2889908),  // P021
+            Vec3::new(0.3333333, 0.6850153, 0.1944954),  // P012
+            Vec3::new(0.0000000, 1.0000000, 0.1000000),  // P003
+        ],
+    };
     let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
     let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {

@@ -6,10 +6,11 @@ mod common;
 use std::collections::BTreeSet;
 
 use canvas::{Canvas, Pixel, Rgba};
+use common::tessellate_patch;
 use glam::{DVec2, Vec2, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
-use gpu_tessellation::patch::{BezierPatch, tessellate_patch};
+use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, brick_texture, render, vertex_buffer};
 use gpu_tessellation::shading::{shading_wgsl, wireframe_edges};
 use proptest::prelude::*;
@@ -85,7 +86,7 @@ fn cpu_render(patches: &[(BezierPatch, Vec2, Vec2)]) -> Canvas {
             .filter_map(|(patch, lo, hi)| {
                 let uv = (xy - lo.as_dvec2()) / (hi.as_dvec2() - lo.as_dvec2());
                 let inside = uv.cmpge(DVec2::ZERO).all() && uv.cmple(DVec2::ONE).all();
-                inside.then(|| (patch.evaluate(uv), uv))
+                inside.then(|| (common::patch_point(patch, uv), uv))
             })
             .max_by(|a, b| a.0.position.z.total_cmp(&b.0.position.z));
         match nearest {

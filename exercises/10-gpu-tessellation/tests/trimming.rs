@@ -7,10 +7,10 @@
 mod common;
 
 use canvas::{Canvas, Rgba};
+use common::tessellate_patch;
 use glam::{DVec2, Mat4, Vec2};
 use gpu::Gpu;
 use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
-use gpu_tessellation::patch::tessellate_patch;
 use gpu_tessellation::render::{
     DrawMesh, Scene, Shaders, TrimCurve, TrimShape, Trimming, render, vertex_buffer,
 };

@@ -1,6 +1,7 @@
 //! Bicubic patch tessellation: the GPU path of topic 10 (the evaluation
-//! compute pass with de Casteljau in WGSL, read back) against the CPU
-//! evaluation of the same domain points (`tessellate_patch`, f64).
+//! compute pass with de Casteljau in WGSL, read back) against a CPU
+//! evaluation of the same domain points (de Casteljau in f64, below: the
+//! course gives students no CPU evaluation, so the benchmark has its own).
 //!
 //! The adapter is printed first: on a machine without a GPU it is a
 //! software rasterizer (lavapipe, device type `Cpu`), and its figures are
@@ -14,12 +15,56 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use glam::Vec3;
+use glam::{DVec3, Vec3, Vec4};
 use gpu::Gpu;
 use gpu_tessellation::domain::{Domain, QuadLevels, Spacing, quad_domain};
 use gpu_tessellation::evaluation::evaluation_wgsl;
 use gpu_tessellation::passes::{Patches, run_evaluation};
-use gpu_tessellation::patch::{BezierPatch, tessellate_patch};
+use gpu_tessellation::patch::{BezierPatch, GpuVertex};
+
+/// De Casteljau on a cubic: the point and the two points of the last step
+/// but one, whose difference is a third of the derivative.
+fn de_casteljau_cubic(mut p: [DVec3; 4], t: f64) -> (DVec3, DVec3, DVec3) {
+    for level in (1..4).rev() {
+        for k in 0..level {
+            p[k] = p[k] * (1.0 - t) + p[k + 1] * t;
+        }
+        if level == 2 {
+            return (p[0] * (1.0 - t) + p[1] * t, p[0], p[1]);
+        }
+    }
+    unreachable!("a cubic has three levels")
+}
+
+/// The patch at every domain point on the CPU, in f64: de Casteljau along
+/// u on every row, then along v (and the u-tangent's points along v too).
+fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> {
+    let p = |k: usize| patch.points[k].as_dvec3();
+    points
+        .iter()
+        .map(|d| {
+            let (u, v) = (f64::from(d.x), f64::from(d.y));
+            let (mut rows, mut row_a, mut row_b) =
+                ([DVec3::ZERO; 4], [DVec3::ZERO; 4], [DVec3::ZERO; 4]);
+            for j in 0..4 {
+                (rows[j], row_a[j], row_b[j]) =
+                    de_casteljau_cubic([p(4 * j), p(4 * j + 1), p(4 * j + 2), p(4 * j + 3)], u);
+            }
+            let (position, va, vb) = de_casteljau_cubic(rows, v);
+            let (ua, ..) = de_casteljau_cubic(row_a, v);
+            let (ub, ..) = de_casteljau_cubic(row_b, v);
+            GpuVertex {
+                position: position.as_vec3().extend(1.0),
+                normal: (ub - ua)
+                    .cross(vb - va)
+                    .normalize_or_zero()
+                    .as_vec3()
+                    .extend(0.0),
+                param: Vec4::new(d.x, d.y, 0.0, 0.0),
+            }
+        })
+        .collect()
+}
 
 /// Patches per run.
 const PATCHES: usize = 256;

@@ -7,15 +7,71 @@ use std::path::PathBuf;
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use gpu::Gpu;
-use gpu_tessellation::patch::{BezierPatch, BezierTriangle};
+use gpu_tessellation::patch::{
+    BezierPatch, BezierTriangle, GpuVertex, NORMAL_EPSILON, SurfacePoint,
+};
 use proptest::prelude::*;
 use testkit::image::{Tolerance, assert_image_matches};
+use testkit::oracles::{tensor_bezier, triangle_bezier};
 
 /// The device, or `None` after a skip line (see `gpu::Gpu::for_tests`).
 /// Call the function under test *before* this, so that an unfinished task
 /// fails even where there is no adapter.
 pub fn gpu() -> Option<Gpu> {
     Gpu::for_tests()
+}
+
+/// `n` normalised, or zero where it is shorter than [`NORMAL_EPSILON`].
+fn unit_or_zero(n: DVec3) -> DVec3 {
+    let len = n.length();
+    if len > NORMAL_EPSILON && len.is_finite() {
+        n / len
+    } else {
+        DVec3::ZERO
+    }
+}
+
+/// The patch at `uv` by its definition (the double Bernstein sum), with the
+/// normal of the sheet: the cross product of the differences of the last
+/// step but one, `(∂P/∂u / 3) × (∂P/∂v / 3)`, normalised.
+pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfacePoint {
+    let control = |i: usize, j: usize| patch.points[4 * j + i].as_dvec3();
+    let [position, du, dv] = tensor_bezier(3, 3, control, [uv.x, uv.y]);
+    SurfacePoint {
+        position,
+        normal: unit_or_zero((du / 3.0).cross(dv / 3.0)),
+    }
+}
+
+/// The Bézier triangle at `uvw` by its definition, with the normal of the
+/// sheet: `(Q010 − Q100) × (Q001 − Q100)`, where `Q100 = ∂B/∂u / 3` and so
+/// on (the three points of the last step but one), normalised.
+pub fn triangle_point(triangle: &BezierTriangle, uvw: DVec3) -> SurfacePoint {
+    let control =
+        |i: usize, j: usize, _k: usize| triangle.points[BezierTriangle::index(i, j)].as_dvec3();
+    let [position, bu, bv, bw] = triangle_bezier(3, control, uvw.to_array());
+    let (qu, qv, qw) = (bu / 3.0, bv / 3.0, bw / 3.0);
+    SurfacePoint {
+        position,
+        normal: unit_or_zero((qv - qu).cross(qw - qu)),
+    }
+}
+
+/// The patch evaluated on the CPU at every domain point (`f64`, stored as
+/// `f32`): the mesh the render and trimming tests draw, independent of
+/// your evaluation stage.
+pub fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> {
+    points
+        .iter()
+        .map(|d| {
+            let s = patch_point(patch, DVec2::new(f64::from(d.x), f64::from(d.y)));
+            GpuVertex {
+                position: s.position.as_vec3().extend(1.0),
+                normal: s.normal.as_vec3().extend(0.0),
+                param: d.extend(0.0),
+            }
+        })
+        .collect()
 }
 
 /// Control points in `[-1, 1]³`.
