@@ -12,6 +12,7 @@ mod stage;
 mod stubs;
 mod test;
 mod topics;
+mod view;
 mod watch;
 
 use std::path::PathBuf;
@@ -74,6 +75,21 @@ enum Command {
     /// stage), passing ARGS through.
     Bench {
         /// Arguments for `cargo bench` (e.g. `-- dda`).
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+    /// Opens the course viewer: your own pipeline (clipping, lines, fill,
+    /// depth test) drawing the shipped meshes or any PLY file. Topics that
+    /// do not compile are left out and named.
+    ///
+    /// `ARGS` go to the viewer: `--screenshot FILE` writes one picture
+    /// without a window; `--mesh`, `--mode`, `--no-clip`, `--no-depth`,
+    /// `--size` choose it (`cargo xtask view -- --help` lists them).
+    View {
+        /// Draw with the reference solutions (for tutors).
+        #[arg(long)]
+        reference: bool,
+        /// Passed to the viewer.
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
@@ -140,6 +156,7 @@ fn main() -> ExitCode {
         Command::Stubs { check } => stubs::run(&root, check),
         Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),
+        Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
         Command::Release { dir, topics } => release::run(&root, &dir, &topics),
     };

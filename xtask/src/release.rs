@@ -30,7 +30,14 @@ use crate::topics::{self, Topic};
 
 /// Paths (relative to the course root) that only the course's authors
 /// need: never released.
-const COURSE_ONLY: [&str; 4] = [".ci", "BENCHMARKS.md", "xtask/bench", "xtask/tests"];
+const COURSE_ONLY: [&str; 5] = [
+    ".ci",
+    "BENCHMARKS.md",
+    "xtask/bench",
+    "xtask/tests",
+    // The viewer's own tests draw with the solutions.
+    "xtask/viewer/tests",
+];
 
 /// What a release holds.
 #[derive(Debug)]
@@ -145,6 +152,7 @@ fn needed_crates(root: &Path, topics: &[Topic]) -> Result<Vec<String>> {
     let library = root.join("crates");
     let mut todo: Vec<PathBuf> = topics.iter().map(|t| t.dir.clone()).collect();
     todo.push(root.join("xtask"));
+    todo.push(root.join(VIEWER_MANIFEST).with_file_name(""));
     let mut seen = BTreeSet::new();
     let mut crates = BTreeSet::new();
     while let Some(dir) = todo.pop() {
@@ -230,6 +238,38 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
         .collect()
 }
 
+/// The viewer's manifest: its features and dependencies name the topics
+/// whose stages it draws.
+const VIEWER_MANIFEST: &str = "xtask/viewer/Cargo.toml";
+
+/// The viewer's manifest for an edition of `topics`. A line marked
+/// `# course only` goes; a line marked `# topic NN-name` goes when that
+/// topic is not released, except that a feature keeps its name with
+/// nothing in it (`lines = []`), so that the viewer still builds and names
+/// the stage as missing.
+fn viewer_manifest(text: &str, topics: &[String]) -> String {
+    let mut out = String::new();
+    for line in text.lines() {
+        if line.contains("# course only") {
+            continue;
+        }
+        if let Some((code, topic)) = line.split_once("# topic ") {
+            if !topics.iter().any(|t| t == topic.trim()) {
+                match code.split_once('=') {
+                    Some((name, value)) if value.trim().starts_with('[') => {
+                        out.push_str(&format!("{} = []\n", name.trim()));
+                    }
+                    _ => {}
+                }
+                continue;
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
+
 /// The files of the edition of `topics` and the course-library crates it
 /// holds, without its lock file (which cargo trims when writing it).
 pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String>)> {
@@ -273,6 +313,9 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
             }
             Some("README.md") => {
                 Source::Text(readme(&read(&source)?, &names, &all_topics, &crates).into_bytes())
+            }
+            Some(VIEWER_MANIFEST) => {
+                Source::Text(viewer_manifest(&read(&source)?, &names).into_bytes())
             }
             _ => Source::File(source),
         };
@@ -396,6 +439,16 @@ mod tests {
         assert_eq!(
             manifest(text, &all[..1], &all),
             "canvas = { path = \"crates/canvas\" }\nglam = \"0.34\"\n"
+        );
+    }
+
+    #[test]
+    fn the_viewer_keeps_only_the_stages_of_released_topics() {
+        let text = "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = [\"dep:clipping\"] # topic 04-clipping\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\nclipping = { path = \"../../exercises/04-clipping\", optional = true } # topic 04-clipping\n\n[dev-dependencies]\negui_kittest.workspace = true # course only\n";
+        let out = viewer_manifest(text, &["01-lines".to_owned()]);
+        assert_eq!(
+            out,
+            "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = []\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\n\n[dev-dependencies]\n"
         );
     }
 

@@ -73,6 +73,25 @@ pub fn ensure_vulkan() {
     }
 }
 
+/// The Debian/Ubuntu packages of Xvfb, the virtual X server the viewer's
+/// window test runs under (`xvfb-run` needs `xauth`).
+pub const XVFB_PACKAGES: [&str; 2] = ["xvfb", "xauth"];
+
+/// Makes sure `xvfb-run` is there for the viewer's window test, installing
+/// it as for lavapipe; prints what it does and never fails.
+pub fn ensure_xvfb() {
+    let present = std::env::var_os("PATH")
+        .is_some_and(|path| std::env::split_paths(&path).any(|dir| dir.join("xvfb-run").is_file()));
+    if !cfg!(target_os = "linux") || present {
+        return;
+    }
+    apt_install(
+        &XVFB_PACKAGES,
+        "Xvfb, the virtual display the viewer's window test runs under",
+        "the viewer's window test needs Xvfb and this machine has none",
+    );
+}
+
 /// The Debian/Ubuntu package of bubblewrap, the sandbox of every test run.
 pub const SANDBOX_PACKAGE: &str = "bubblewrap";
 

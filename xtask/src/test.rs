@@ -54,6 +54,11 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
     if topics::discover(root).is_ok_and(|topics| topics.iter().any(|t| t.sheet.gpu)) {
         setup::ensure_vulkan();
     }
+    // The viewer's window test runs under a virtual display.
+    if root.join("xtask").join("viewer").is_dir() {
+        setup::ensure_vulkan();
+        setup::ensure_xvfb();
+    }
     type Step<'a> = (&'a str, Box<dyn Fn() -> Result<String> + 'a>);
     let steps: Vec<Step<'_>> = vec![
         (

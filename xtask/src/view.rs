@@ -1,0 +1,100 @@
+//! `cargo xtask view [--reference] [ARGS...]`: the course viewer
+//! (`xtask/viewer`), built with your own stages in it.
+//!
+//! The viewer draws with the stages of four topics (lines, fill, clipping,
+//! depth test). Each is checked first: a topic that does not compile is
+//! left out of the build and named in the window, and the others still
+//! show. `--reference` stages the solutions instead (for tutors). `ARGS`
+//! go to the viewer (`--screenshot FILE`, `--mesh`, `--mode`, ...; see
+//! `cargo xtask view -- --help`).
+
+use std::path::Path;
+
+use anyhow::{Context, Result, bail};
+
+use crate::cargo;
+use crate::stage::{self, Overlay};
+use crate::topics;
+
+/// The viewer's package.
+const VIEWER: &str = "course-viewer";
+
+/// The viewer's features and the topics whose stages they build in.
+const TOPICS: [(&str, &str); 4] = [
+    ("lines", "01-lines"),
+    ("fill", "03-fill"),
+    ("clipping", "04-clipping"),
+    ("buffers", "05-buffers"),
+];
+
+/// Builds the viewer with every topic that compiles and runs it with `args`.
+pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
+    if !root
+        .join("xtask")
+        .join("viewer")
+        .join("Cargo.toml")
+        .is_file()
+    {
+        bail!("this course has no viewer (xtask/viewer)");
+    }
+    let overlay = if reference {
+        Overlay::Reference
+    } else {
+        Overlay::Own
+    };
+    let course = topics::discover(root)?;
+    let staged = stage::stage(root, overlay, None)?;
+    let mut features = Vec::new();
+    let mut not_compiling = Vec::new();
+    for (feature, topic) in TOPICS {
+        let Some(found) = course.iter().find(|t| t.name == topic) else {
+            continue; // not in this edition
+        };
+        eprint!("checking {topic} … ");
+        let output = staged
+            .cargo()
+            .args(["check", "--quiet", "--lib", "--package", &found.package])
+            .args(["--message-format", "short"])
+            .output()
+            .context("cannot run cargo")?;
+        if output.status.success() {
+            eprintln!("compiles");
+            features.push(feature);
+        } else {
+            eprintln!("does not compile: left out (`cargo xtask grade {topic}` says why)");
+            not_compiling.push(topic.to_owned());
+        }
+    }
+    eprintln!(
+        "building the viewer (with its window the first time takes minutes: egui and wgpu) …"
+    );
+    // A picture without a window needs no egui: a quick build.
+    if !args
+        .iter()
+        .any(|a| a == "--screenshot" || a.starts_with("--screenshot="))
+    {
+        features.push("window");
+    }
+    let mut build = staged.cargo();
+    build.args(["build", "--package", VIEWER, "--no-default-features"]);
+    if !features.is_empty() {
+        build.args(["--features", &features.join(",")]);
+    }
+    cargo::run_visibly(&mut build)?;
+    let binary = staged.target_dir.join("debug").join(VIEWER);
+    // The stage's lock is not needed while the viewer runs: grading in
+    // another terminal may go on.
+    drop(staged);
+    let mut command = std::process::Command::new(&binary);
+    for topic in &not_compiling {
+        command.args(["--not-compiling", topic]);
+    }
+    command.args(args);
+    let status = command
+        .status()
+        .with_context(|| format!("cannot run {}", binary.display()))?;
+    if !status.success() {
+        bail!("the viewer exited with {status}");
+    }
+    Ok(())
+}

@@ -1,0 +1,180 @@
+//! The viewer's command line (run it through `cargo xtask view`, which
+//! builds it with the topics that compile).
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use anyhow::{Context, Result, bail};
+use clap::{Parser, ValueEnum};
+use course_viewer::meshes::{self, MeshEntry, shipped_meshes};
+use course_viewer::render::Settings;
+use course_viewer::stages::{self, Stages};
+use course_viewer::worker::Worker;
+
+/// How polygons are drawn.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Mode {
+    /// Outlines, with your lines.
+    Wireframe,
+    /// Filled, with your triangle fill.
+    Filled,
+}
+
+/// Your own pipeline on screen: a mesh clipped, drawn and depth-tested by
+/// your stages.
+#[derive(Parser, Debug)]
+#[command(name = "course-viewer")]
+struct Args {
+    /// The mesh: a shipped one's name (`star.ply`, `clipped_torus.ply`, ...)
+    /// or the path of a PLY file.
+    #[arg(long, default_value = "star.ply")]
+    mesh: String,
+    /// Wireframe or filled.
+    #[arg(long, value_enum, default_value_t = Mode::Wireframe)]
+    mode: Mode,
+    /// Draw without clipping.
+    #[arg(long)]
+    no_clip: bool,
+    /// Draw without the depth test.
+    #[arg(long)]
+    no_depth: bool,
+    /// The picture's size in pixels (square, 1 to 2048).
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=2048))]
+    size: u32,
+    /// Write the picture to this PNG file and exit, without a window.
+    #[arg(long, value_name = "FILE")]
+    screenshot: Option<PathBuf>,
+    /// Open the window, save a screenshot of all of it to this PNG file
+    /// once the picture shows, and close it (a smoke test of the window).
+    #[arg(long, value_name = "FILE")]
+    window_screenshot: Option<PathBuf>,
+    /// How long a picture may take before it is given up, in seconds.
+    #[arg(long, default_value_t = 30.0)]
+    time_limit: f64,
+    /// Topics left out of this build because they do not compile (set by
+    /// `cargo xtask view`).
+    #[arg(long = "not-compiling", value_name = "TOPIC")]
+    not_compiling: Vec<String>,
+}
+
+fn main() -> Result<()> {
+    let args = Args::parse();
+    stages::quiet_panics();
+    let (mut meshes, problems) = shipped_meshes();
+    for problem in problems {
+        eprintln!("warning: cannot read a shipped mesh: {problem}");
+    }
+    let index = match meshes.iter().position(|m| m.name == args.mesh) {
+        Some(index) => index,
+        None => {
+            let entry = meshes::load(Path::new(&args.mesh)).with_context(|| {
+                format!(
+                    "`{}` is neither a shipped mesh nor a PLY file that loads",
+                    args.mesh
+                )
+            })?;
+            meshes.push(entry);
+            meshes.len() - 1
+        }
+    };
+    let settings = Settings {
+        mode: match args.mode {
+            Mode::Wireframe => scene::Mode::Line,
+            Mode::Filled => scene::Mode::Fill,
+        },
+        clip: !args.no_clip,
+        depth_test: !args.no_depth,
+        width: args.size,
+        height: args.size,
+        ..Settings::default()
+    };
+    let limit = Duration::from_secs_f64(args.time_limit.max(0.1));
+    match args.screenshot {
+        Some(path) => screenshot(&meshes[index], settings, limit, &path),
+        None => window(
+            meshes,
+            index,
+            settings,
+            args.not_compiling,
+            args.window_screenshot,
+        ),
+    }
+}
+
+/// Draws one picture with your stages and writes it to `path`.
+fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path) -> Result<()> {
+    let mut worker = Worker::start(Stages::yours());
+    worker.request(std::sync::Arc::clone(&mesh.mesh), settings);
+    let Some(frame) = worker.wait(limit) else {
+        bail!(
+            "your stages did not finish the picture within {:.0} s (an endless loop?)",
+            limit.as_secs_f64()
+        );
+    };
+    for stage in &frame.stages {
+        println!(
+            "{:<10} {}  ({})",
+            stage.name,
+            stage.status.describe(),
+            stage.source
+        );
+    }
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    frame
+        .canvas
+        .save_png(path)
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// Opens the window.
+#[cfg(feature = "window")]
+fn window(
+    meshes: Vec<MeshEntry>,
+    index: usize,
+    settings: Settings,
+    not_compiling: Vec<String>,
+    window_screenshot: Option<PathBuf>,
+) -> Result<()> {
+    use eframe::egui;
+    let display = ["DISPLAY", "WAYLAND_DISPLAY"]
+        .iter()
+        .any(|v| std::env::var_os(v).is_some_and(|d| !d.is_empty()));
+    if cfg!(target_os = "linux") && !display {
+        bail!(
+            "there is no display here (neither DISPLAY nor WAYLAND_DISPLAY is set): \
+             `--screenshot FILE` draws the picture without a window, and \
+             `xvfb-run cargo xtask view` opens the window on a virtual display"
+        );
+    }
+    let name = meshes[index].name.clone();
+    let mut app = course_viewer::ViewerApp::new(meshes, Stages::yours(), not_compiling);
+    app.select_mesh(&name);
+    *app.settings_mut() = settings;
+    if let Some(path) = window_screenshot {
+        app.screenshot_window_to(path);
+    }
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Your pipeline · cargo xtask view")
+            .with_inner_size([1100.0, 760.0]),
+        ..Default::default()
+    };
+    eframe::run_native("course-viewer", options, Box::new(|_| Ok(Box::new(app))))
+        .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+}
+
+/// Without the `window` feature there is no window to open.
+#[cfg(not(feature = "window"))]
+fn window(
+    _: Vec<MeshEntry>,
+    _: usize,
+    _: Settings,
+    _: Vec<String>,
+    _: Option<PathBuf>,
+) -> Result<()> {
+    bail!("this viewer was built without its window (feature `window`): use --screenshot FILE")
+}

@@ -1,0 +1,229 @@
+//! The pipeline scene, drawn by your stages: seed 004's program (§3.1)
+//! around your code.
+//!
+//! ```text
+//!  mesh ─▶ clip space ─▶ [your clipping] ─▶ ÷ w, viewport ─▶ [your lines or fill] ─▶ [your depth test] ─▶ picture
+//!          (given)                           (given)
+//! ```
+//!
+//! The transforms and the perspective divide are the course's
+//! (`scene::Pipeline`); every stage in brackets is yours. A stage at
+//! `todo!()` or that panics draws nothing and is named in the frame's
+//! report; the other stages still run.
+
+use canvas::{Canvas, Fragment, Rgba, Vertex};
+use glam::Vec3;
+use glam::camera::rh::view;
+use scene::{ClipVertex, Mesh, Mode, Pipeline};
+
+use crate::stages::{Stage, Stages, Status, guarded};
+
+/// What the pipeline scene draws, and how.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Wireframe or filled.
+    pub mode: Mode,
+    /// Clip in clip space (with your Sutherland–Hodgman) before the divide.
+    pub clip: bool,
+    /// Run every fragment through your depth test; without it, later
+    /// fragments overwrite earlier ones (the painter's order of the faces).
+    pub depth_test: bool,
+    /// The camera's angle around the vertical axis, in degrees.
+    pub yaw: f32,
+    /// The camera's angle above the horizontal, in degrees.
+    pub pitch: f32,
+    /// The camera's distance from the origin (the course camera: 4).
+    pub distance: f32,
+    /// The picture's width in pixels.
+    pub width: u32,
+    /// The picture's height in pixels.
+    pub height: u32,
+}
+
+impl Default for Settings {
+    /// The course camera (`scene::Pipeline::for_mesh`), wireframe, clipped,
+    /// depth-tested, 400 × 400.
+    fn default() -> Self {
+        Self {
+            mode: Mode::Line,
+            clip: true,
+            depth_test: true,
+            yaw: 0.0,
+            pitch: 0.0,
+            distance: scene::pipeline::EYE.z,
+            width: 400,
+            height: 400,
+        }
+    }
+}
+
+impl Settings {
+    /// Where the eye stands: on a sphere around the origin.
+    #[must_use]
+    pub fn eye(&self) -> Vec3 {
+        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
+        self.distance
+            * Vec3::new(
+                yaw.sin() * pitch.cos(),
+                pitch.sin(),
+                yaw.cos() * pitch.cos(),
+            )
+    }
+
+    /// The course pipeline for `mesh`, with this camera.
+    #[must_use]
+    pub fn pipeline(&self, mesh: &Mesh) -> Pipeline {
+        let mut pipeline = Pipeline::for_mesh(mesh, self.width, self.height);
+        // Near the poles y is no longer "up": look with z up there instead.
+        let up = if self.pitch.abs() > 89.0 {
+            Vec3::Z
+        } else {
+            Vec3::Y
+        };
+        pipeline.view = view::look_at_mat4(self.eye(), scene::pipeline::TARGET, up);
+        pipeline
+    }
+}
+
+/// One stage's line in a frame's report.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StageReport {
+    /// The stage ("lines").
+    pub name: &'static str,
+    /// Where it comes from ("01-lines · dda::dda_line").
+    pub source: &'static str,
+    /// How it fared.
+    pub status: Status,
+}
+
+/// A picture and how each stage fared drawing it.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    /// The picture.
+    pub canvas: Canvas,
+    /// Clipping, lines, fill and depth test, in that order.
+    pub stages: Vec<StageReport>,
+    /// Polygons of the mesh, and how many reached the rasterizer.
+    pub polygons: (usize, usize),
+}
+
+impl Frame {
+    /// The stages that did not work, for a summary line.
+    #[must_use]
+    pub fn problems(&self) -> Vec<&StageReport> {
+        self.stages
+            .iter()
+            .filter(|s| !matches!(s.status, Status::Ok | Status::Unused | Status::NotReached))
+            .collect()
+    }
+}
+
+/// A stage and how it fares in the frame being drawn.
+struct Running<'a, F: ?Sized> {
+    stage: &'a Stage<F>,
+    status: Status,
+}
+
+impl<'a, F: ?Sized> Running<'a, F> {
+    fn new(stage: &'a Stage<F>, needed: bool) -> Self {
+        let status = match (&stage.run, needed) {
+            (_, false) => Status::Unused,
+            (None, true) => Status::Missing,
+            (Some(_), true) => Status::NotReached,
+        };
+        Self { stage, status }
+    }
+
+    fn report(self) -> StageReport {
+        StageReport {
+            name: self.stage.name,
+            source: self.stage.source,
+            status: self.status,
+        }
+    }
+}
+
+/// Draws `mesh` as `settings` say, with `stages`, onto a black picture.
+#[must_use]
+pub fn render(mesh: &Mesh, settings: &Settings, stages: &Stages) -> Frame {
+    let pipeline = settings.pipeline(mesh);
+    let mut canvas = Canvas::new(settings.width, settings.height);
+    canvas.clear(Rgba::BLACK);
+    let mut clip = Running::new(&stages.clip, settings.clip);
+    let mut line = Running::new(&stages.line, settings.mode == Mode::Line);
+    let mut fill = Running::new(&stages.fill, settings.mode == Mode::Fill);
+    let mut depth = Running::new(&stages.depth, settings.depth_test);
+
+    let polygons = pipeline.clip_space(mesh);
+    let total = polygons.len();
+    let polygons: Vec<Vec<ClipVertex>> = if settings.clip {
+        polygons
+            .iter()
+            .filter_map(|polygon| match &clip.stage.run {
+                None => None,
+                Some(run) => match guarded(&mut clip.status, || run(polygon))? {
+                    Ok(clipped) => Some(clipped),
+                    Err(message) => {
+                        clip.status = Status::Failed(message);
+                        None
+                    }
+                },
+            })
+            .filter(|p| !p.is_empty())
+            .collect()
+    } else {
+        polygons
+    };
+    let drawn = polygons.len();
+
+    // Every fragment goes through the depth test, or overwrites.
+    let mut write = |canvas: &mut Canvas, fragment: Fragment| {
+        if !settings.depth_test {
+            canvas.set(fragment.pixel, fragment.colour);
+            return;
+        }
+        if let Some(run) = &depth.stage.run {
+            let _ = guarded(&mut depth.status, || run(canvas, fragment));
+        }
+    };
+    let viewport = canvas.viewport();
+    for polygon in &polygons {
+        let screen: Option<Vec<Vertex>> = polygon.iter().map(|&v| pipeline.screen(v)).collect();
+        let Some(screen) = screen else { continue };
+        match settings.mode {
+            Mode::Line => {
+                let Some(run) = &line.stage.run else { continue };
+                let n = screen.len();
+                let edges = if n == 2 { 1 } else { n };
+                for i in 0..edges {
+                    let mut fragments = Vec::new();
+                    let (a, b) = (screen[i], screen[(i + 1) % n]);
+                    guarded(&mut line.status, || run(&a, &b, &mut |f| fragments.push(f)));
+                    for f in fragments {
+                        write(&mut canvas, f);
+                    }
+                }
+            }
+            Mode::Fill => {
+                let Some(run) = &fill.stage.run else { continue };
+                if let Some((&first, rest)) = screen.split_first() {
+                    for pair in rest.windows(2) {
+                        let mut fragments = Vec::new();
+                        let triangle = [first, pair[0], pair[1]];
+                        guarded(&mut fill.status, || {
+                            run(triangle, viewport, &mut |f| fragments.push(f));
+                        });
+                        for f in fragments {
+                            write(&mut canvas, f);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Frame {
+        canvas,
+        stages: vec![clip.report(), line.report(), fill.report(), depth.report()],
+        polygons: (total, drawn),
+    }
+}

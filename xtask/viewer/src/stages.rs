@@ -1,0 +1,247 @@
+//! The stages of your own pipeline that the viewer draws with, and how it
+//! runs them: each call is guarded, so that a `todo!()` or a panic is
+//! reported with its message and the rest of the frame still draws.
+//!
+//! | stage | your code |
+//! |---|---|
+//! | clipping | `04-clipping`: `sutherland_hodgman::clip_polygon` against `clip_planes::clip_planes()` |
+//! | lines | `01-lines`: `dda::dda_line` |
+//! | fill | `03-fill`: `edge_function::fill_triangle` |
+//! | depth test | `05-buffers`: `zbuffer::depth_test` with OpenGL's defaults (`LESS`, writes on) |
+//!
+//! A topic that does not compile is left out of the build (`cargo xtask
+//! view` checks each one first) and its stage is shown as missing.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::Arc;
+
+use canvas::{Canvas, Fragment, Vertex, Viewport};
+use scene::ClipVertex;
+
+/// Draws a line: `(from, to, plot)`.
+pub type LineStage = dyn Fn(&Vertex, &Vertex, &mut dyn FnMut(Fragment)) + Send + Sync;
+/// Fills a triangle: `(vertices, viewport, plot)`.
+pub type FillStage = dyn Fn([Vertex; 3], Viewport, &mut dyn FnMut(Fragment)) + Send + Sync;
+/// Clips a polygon in clip space against the view volume.
+pub type ClipStage = dyn Fn(&[ClipVertex]) -> Result<Vec<ClipVertex>, String> + Send + Sync;
+/// Runs a fragment through the depth test; whether it was written.
+pub type DepthStage = dyn Fn(&mut Canvas, Fragment) -> bool + Send + Sync;
+
+/// One stage: where it comes from, and the code if its topic is built in.
+pub struct Stage<F: ?Sized> {
+    /// What it does, for the screen: "lines".
+    pub name: &'static str,
+    /// Where it comes from: "01-lines · dda::dda_line".
+    pub source: &'static str,
+    /// The code; `None` when its topic is not part of the build.
+    pub run: Option<Arc<F>>,
+}
+
+impl<F: ?Sized> Clone for Stage<F> {
+    fn clone(&self) -> Self {
+        Self {
+            name: self.name,
+            source: self.source,
+            run: self.run.clone(),
+        }
+    }
+}
+
+/// The four stages of the pipeline scene.
+#[derive(Clone)]
+pub struct Stages {
+    /// Sutherland–Hodgman clipping.
+    pub clip: Stage<ClipStage>,
+    /// DDA lines, for the wireframe.
+    pub line: Stage<LineStage>,
+    /// Edge-function triangles, for filled polygons.
+    pub fill: Stage<FillStage>,
+    /// The z-buffer's depth test.
+    pub depth: Stage<DepthStage>,
+}
+
+/// The four stages without code: what a build without any topic shows.
+impl Default for Stages {
+    fn default() -> Self {
+        Self {
+            clip: Stage {
+                name: "clipping",
+                source: "04-clipping · clip_planes::clip_planes, sutherland_hodgman::clip_polygon",
+                run: None,
+            },
+            line: Stage {
+                name: "lines",
+                source: "01-lines · dda::dda_line",
+                run: None,
+            },
+            fill: Stage {
+                name: "fill",
+                source: "03-fill · edge_function::fill_triangle",
+                run: None,
+            },
+            depth: Stage {
+                name: "depth test",
+                source: "05-buffers · zbuffer::depth_test",
+                run: None,
+            },
+        }
+    }
+}
+
+impl Stages {
+    /// Your stages: those of every topic this build holds.
+    #[must_use]
+    pub fn yours() -> Self {
+        #[allow(unused_mut)] // without any topic, nothing is set
+        let mut stages = Self::default();
+        #[cfg(feature = "clipping")]
+        {
+            stages.clip.run = Some(Arc::new(|polygon: &[ClipVertex]| {
+                let planes = clipping::clip_planes::clip_planes();
+                clipping::sutherland_hodgman::clip_polygon(polygon, &planes)
+                    .map_err(|e| e.to_string())
+            }));
+        }
+        #[cfg(feature = "lines")]
+        {
+            stages.line.run = Some(Arc::new(
+                |from: &Vertex, to: &Vertex, plot: &mut dyn FnMut(Fragment)| {
+                    lines::dda::dda_line(from, to, plot);
+                },
+            ));
+        }
+        #[cfg(feature = "fill")]
+        {
+            stages.fill.run = Some(Arc::new(
+                |vertices: [Vertex; 3], viewport: Viewport, plot: &mut dyn FnMut(Fragment)| {
+                    fill::edge_function::fill_triangle(vertices, viewport, |f, _| plot(f));
+                },
+            ));
+        }
+        #[cfg(feature = "buffers")]
+        {
+            stages.depth.run = Some(Arc::new(|canvas: &mut Canvas, fragment: Fragment| {
+                buffers::zbuffer::depth_test(
+                    canvas,
+                    fragment,
+                    &buffers::zbuffer::DepthState::DEFAULT,
+                )
+            }));
+        }
+        stages
+    }
+}
+
+/// How a stage fared in one frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Not needed by this frame (lines in a filled picture, say).
+    Unused,
+    /// Needed, but nothing reached it: a stage before it drew nothing.
+    NotReached,
+    /// Every call returned.
+    Ok,
+    /// Its topic is not part of the build (it does not compile).
+    Missing,
+    /// It reached a `todo!()`: the message.
+    NotYet(String),
+    /// It panicked: the message.
+    Panicked(String),
+    /// It returned an error: the message.
+    Failed(String),
+}
+
+impl Status {
+    /// Whether the stage can still be called in this frame.
+    #[must_use]
+    pub fn usable(&self) -> bool {
+        matches!(self, Self::Unused | Self::NotReached | Self::Ok)
+    }
+
+    /// One line for the screen.
+    #[must_use]
+    pub fn describe(&self) -> String {
+        match self {
+            Self::Unused => "not used by this picture".to_owned(),
+            Self::NotReached => "not reached: nothing came through the stages before it".to_owned(),
+            Self::Ok => "ok".to_owned(),
+            Self::Missing => {
+                "does not compile, so it is left out (see `cargo xtask grade`)".to_owned()
+            }
+            Self::NotYet(message) => format!("not written yet: {message}"),
+            Self::Panicked(message) => format!("panicked: {message}"),
+            Self::Failed(message) => format!("returned an error: {message}"),
+        }
+    }
+}
+
+/// The text of a panic's payload.
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "(a panic without a message)".to_owned())
+}
+
+/// Runs `call` unless the stage has already failed in this frame; a panic
+/// becomes the stage's status (a `todo!()` is [`Status::NotYet`]).
+pub fn guarded<R>(status: &mut Status, call: impl FnOnce() -> R) -> Option<R> {
+    if !status.usable() {
+        return None;
+    }
+    match catch_unwind(AssertUnwindSafe(call)) {
+        Ok(value) => {
+            *status = Status::Ok;
+            Some(value)
+        }
+        Err(payload) => {
+            let message = panic_message(payload.as_ref());
+            *status = match message.strip_prefix("not yet implemented") {
+                Some(rest) => Status::NotYet(rest.strip_prefix(": ").unwrap_or(rest).to_owned()),
+                None => Status::Panicked(message),
+            };
+            None
+        }
+    }
+}
+
+/// The name worker threads carry: panics there are reported on screen, so
+/// [`quiet_panics`] keeps them off the terminal.
+pub const WORKER_THREAD: &str = "viewer-stages";
+
+/// Installs a panic hook that is silent on [`WORKER_THREAD`] threads (their
+/// panics are caught and shown) and prints as usual elsewhere.
+pub fn quiet_panics() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if std::thread::current().name() != Some(WORKER_THREAD) {
+            default(info);
+        }
+    }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_todo_is_not_yet_written_and_a_panic_is_a_panic() {
+        let mut status = Status::Unused;
+        assert_eq!(guarded(&mut status, || 3), Some(3));
+        assert_eq!(status, Status::Ok);
+        let mut status = Status::Unused;
+        let got: Option<()> = guarded(&mut status, || todo!("dda: plot one fragment per column"));
+        assert_eq!(got, None);
+        assert_eq!(
+            status,
+            Status::NotYet("dda: plot one fragment per column".to_owned())
+        );
+        // Once failed, the stage is not called again in this frame.
+        assert_eq!(guarded(&mut status, || 4), None);
+        let mut status = Status::Unused;
+        let _ = guarded(&mut status, || -> u8 { panic!("index {} out of range", 7) });
+        assert_eq!(status, Status::Panicked("index 7 out of range".to_owned()));
+        assert!(status.describe().starts_with("panicked: index 7"));
+    }
+}

@@ -1,0 +1,191 @@
+//! The pipeline scene without a window: your stages draw the shipped
+//! meshes, and a stage that is missing, at `todo!()` or panicking is named
+//! while the rest of the frame still draws.
+
+use std::sync::Arc;
+
+use canvas::{Canvas, Rgba};
+use course_viewer::render::{Settings, render};
+use course_viewer::stages::{Stages, Status};
+use scene::{Mesh, Mode};
+
+fn mesh(name: &str) -> Mesh {
+    scene::ply::load(scene::data::path(name)).expect("a shipped mesh")
+}
+
+fn statuses(stages: &[course_viewer::render::StageReport]) -> Vec<(&str, Status)> {
+    stages.iter().map(|s| (s.name, s.status.clone())).collect()
+}
+
+/// The same picture drawn by the course's own small rasterizer (DDA lines,
+/// edge functions with inclusive edges, `GL_LESS`): an independent check
+/// of what the staged solutions draw.
+fn by_the_course(mesh: &Mesh, settings: &Settings) -> Canvas {
+    let pipeline = settings.pipeline(mesh);
+    let mut polygons = pipeline.clip_space(mesh);
+    if settings.clip {
+        // Only the comparison's own stand-in: faces wholly inside.
+        polygons = scene::discard_outside(&polygons);
+    }
+    let mut canvas = Canvas::new(settings.width, settings.height);
+    canvas.clear(Rgba::BLACK);
+    pipeline.render(&polygons, settings.mode, &mut canvas);
+    canvas
+}
+
+fn differing_fraction(a: &Canvas, b: &Canvas) -> f64 {
+    let differing = a
+        .enumerate()
+        .filter(|&(p, colour)| b.get(p).is_none_or(|other| !colour.approx_eq(other, 0.02)))
+        .count();
+    differing as f64 / f64::from(a.width() * a.height())
+}
+
+fn out_dir() -> std::path::PathBuf {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("viewer");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn the_staged_stages_draw_star_and_torus_as_the_course_does() {
+    let stages = Stages::yours();
+    // A wireframe of five edges, a torus filling a good part of the picture.
+    for (name, mode, at_least) in [
+        ("star.ply", Mode::Line, 1000),
+        ("torus.ply", Mode::Fill, 20_000),
+    ] {
+        let mesh = mesh(name);
+        let settings = Settings {
+            mode,
+            ..Settings::default()
+        };
+        let frame = render(&mesh, &settings, &stages);
+        frame
+            .canvas
+            .save_png(out_dir().join(name.replace(".ply", ".png")))
+            .unwrap();
+        for stage in &frame.stages {
+            assert!(
+                matches!(stage.status, Status::Ok | Status::Unused),
+                "{name}: {} {:?}",
+                stage.name,
+                stage.status
+            );
+        }
+        let lit = frame.canvas.pixels_not(Rgba::BLACK).len();
+        assert!(lit > at_least, "{name}: only {lit} pixels drawn");
+        // These meshes lie inside the view volume: clipping changes nothing,
+        // and the pictures agree with the course's rasterizer but for the
+        // pixels on edges shared by two triangles (the fill rule).
+        let course = by_the_course(&mesh, &settings);
+        let off = differing_fraction(&frame.canvas, &course);
+        assert!(
+            off < 0.01,
+            "{name}: {:.2} % of the pixels differ",
+            off * 100.0
+        );
+        assert_eq!(
+            frame.polygons.0, frame.polygons.1,
+            "{name}: a polygon was lost"
+        );
+    }
+}
+
+#[test]
+fn clipping_cuts_the_polygons_that_cross_the_border() {
+    let mesh = mesh("clipped_torus.ply");
+    let clipped = render(&mesh, &Settings::default(), &Stages::yours());
+    let unclipped = render(
+        &mesh,
+        &Settings {
+            clip: false,
+            ..Settings::default()
+        },
+        &Stages::yours(),
+    );
+    assert_eq!(clipped.stages[0].status, Status::Ok);
+    assert_eq!(unclipped.stages[0].status, Status::Unused);
+    let (total, drawn) = clipped.polygons;
+    assert!(
+        drawn < total,
+        "{drawn} of {total}: some faces lie wholly outside"
+    );
+    assert_ne!(
+        clipped.canvas.pixels_not(Rgba::BLACK),
+        unclipped.canvas.pixels_not(Rgba::BLACK),
+        "without clipping, faces behind the eye are drawn mirrored"
+    );
+}
+
+#[test]
+fn a_stage_at_todo_is_named_and_the_others_still_run() {
+    let mut stages = Stages::yours();
+    stages.line.run = Some(Arc::new(
+        |_: &canvas::Vertex, _: &canvas::Vertex, _: &mut dyn FnMut(canvas::Fragment)| {
+            todo!("dda: plot one fragment per major-axis column")
+        },
+    ));
+    let frame = render(&mesh("star.ply"), &Settings::default(), &stages);
+    assert_eq!(
+        statuses(&frame.stages),
+        [
+            ("clipping", Status::Ok),
+            (
+                "lines",
+                Status::NotYet("dda: plot one fragment per major-axis column".to_owned())
+            ),
+            ("fill", Status::Unused),
+            ("depth test", Status::NotReached),
+        ]
+    );
+    assert!(
+        frame.canvas.pixels_not(Rgba::BLACK).is_empty(),
+        "nothing drawn, nothing made up"
+    );
+}
+
+#[test]
+fn a_panicking_depth_test_is_named_and_a_missing_topic_too() {
+    let mut stages = Stages::yours();
+    stages.depth.run = Some(Arc::new(|_: &mut Canvas, _: canvas::Fragment| -> bool {
+        panic!("index out of bounds: the len is 0 but the index is 3")
+    }));
+    stages.clip.run = None;
+    let settings = Settings {
+        mode: Mode::Fill,
+        ..Settings::default()
+    };
+    let frame = render(&mesh("torus.ply"), &settings, &stages);
+    assert_eq!(frame.stages[0].status, Status::Missing);
+    assert_eq!(
+        frame.stages[2].status,
+        Status::NotReached,
+        "nothing reaches the fill"
+    );
+    // Without clipping asked for, the fill runs and the depth test panics.
+    let frame = render(
+        &mesh("torus.ply"),
+        &Settings {
+            clip: false,
+            ..settings
+        },
+        &stages,
+    );
+    assert_eq!(frame.stages[2].status, Status::Ok);
+    assert_eq!(
+        frame.stages[3].status,
+        Status::Panicked("index out of bounds: the len is 0 but the index is 3".to_owned())
+    );
+    // A build without any topic names all four.
+    let frame = render(
+        &mesh("torus.ply"),
+        &Settings {
+            clip: true,
+            ..settings
+        },
+        &Stages::default(),
+    );
+    assert_eq!(frame.stages[0].status, Status::Missing);
+    assert!(frame.canvas.pixels_not(Rgba::BLACK).is_empty());
+}

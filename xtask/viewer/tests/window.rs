@@ -1,0 +1,116 @@
+//! The window, driven by egui_kittest (the egui project's own test
+//! harness): it shows your picture and your stages, its controls change
+//! the picture, and a stage that loops leaves it usable.
+#![cfg(feature = "window")]
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+use course_viewer::meshes::shipped_meshes;
+use course_viewer::{Stages, ViewerApp};
+use eframe::egui;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+
+const SIZE: egui::Vec2 = egui::vec2(1100.0, 760.0);
+
+fn harness(stages: Stages) -> Harness<'static, ViewerApp> {
+    // The stages' panics are shown in the window, not on the terminal.
+    course_viewer::stages::quiet_panics();
+    let (meshes, problems) = shipped_meshes();
+    assert!(problems.is_empty(), "{problems:?}");
+    let mut app = ViewerApp::new(meshes, stages, Vec::new());
+    assert!(app.select_mesh("star.ply"));
+    app.settings_mut().width = 200;
+    app.settings_mut().height = 200;
+    Harness::builder()
+        .with_size(SIZE)
+        .build_ui_state(|ui, app: &mut ViewerApp| app.show(ui), app)
+}
+
+/// Waits for the frame asked for and lets the window show it.
+fn settle(harness: &mut Harness<'static, ViewerApp>) {
+    assert!(
+        harness.state_mut().wait_for_frame(Duration::from_secs(60)),
+        "no frame within a minute"
+    );
+    harness.run_steps(3);
+}
+
+#[test]
+fn the_window_shows_your_picture_and_your_stages() {
+    let mut harness = harness(Stages::yours());
+    settle(&mut harness);
+    harness.get_by_label("clipping: ok");
+    harness.get_by_label("lines: ok");
+    harness.get_by_label("fill: not used by this picture");
+    let wireframe = harness.state().frame().unwrap().canvas.clone();
+    harness.snapshot("viewer_star_wireframe");
+
+    harness.get_by_label("Filled").click();
+    harness.run_steps(2);
+    settle(&mut harness);
+    harness.get_by_label("fill: ok");
+    harness.get_by_label("lines: not used by this picture");
+    let filled = harness.state().frame().unwrap().canvas.clone();
+    assert_ne!(
+        wireframe.to_image(),
+        filled.to_image(),
+        "the picture follows the control"
+    );
+
+    harness.get_by_label("Depth test").click();
+    harness.run_steps(2);
+    settle(&mut harness);
+    harness.get_by_label("depth test: not used by this picture");
+    harness.get_by_label("fill: ok");
+}
+
+#[test]
+fn a_stage_at_todo_is_named_on_screen() {
+    let mut stages = Stages::yours();
+    stages.line.run = Some(Arc::new(
+        |_: &canvas::Vertex, _: &canvas::Vertex, _: &mut dyn FnMut(canvas::Fragment)| {
+            todo!("dda: plot one fragment per major-axis column")
+        },
+    ));
+    let mut harness = harness(stages);
+    settle(&mut harness);
+    harness.get_by_label("lines: not written yet: dda: plot one fragment per major-axis column");
+    harness.snapshot("viewer_todo_stage");
+}
+
+#[test]
+fn a_looping_stage_leaves_the_window_usable() {
+    let release = Arc::new(AtomicBool::new(false));
+    let mut stages = Stages::yours();
+    let held = Arc::clone(&release);
+    stages.line.run = Some(Arc::new(
+        move |_: &canvas::Vertex, _: &canvas::Vertex, _: &mut dyn FnMut(canvas::Fragment)| {
+            // An endless loop, until the test lets it go.
+            while !held.load(Ordering::Relaxed) {
+                std::thread::sleep(Duration::from_millis(5));
+            }
+        },
+    ));
+    let mut harness = harness(stages);
+    harness
+        .state_mut()
+        .set_slow_after(Duration::from_millis(200));
+    let started = Instant::now();
+    harness.run_steps(2);
+    std::thread::sleep(Duration::from_millis(400));
+    harness.run_steps(2);
+    assert!(
+        started.elapsed() < Duration::from_secs(30),
+        "the window waited for the stage"
+    );
+    let warning = harness.query_by_label_contains("an endless loop?");
+    assert!(warning.is_some(), "the window says the frame is stuck");
+    // The controls still answer.
+    harness.get_by_label("Filled").click();
+    harness.run_steps(2);
+    release.store(true, Ordering::Relaxed);
+    settle(&mut harness);
+}

@@ -1,0 +1,75 @@
+//! The real window, under Xvfb (a virtual X server): it opens, shows your
+//! picture and saves a screenshot of itself. `cargo xtask test` installs
+//! Xvfb where it is missing; without it this test is skipped with a note,
+//! except under CI, which must test the window.
+#![cfg(feature = "window")]
+
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// `xvfb-run`, if it is on the `PATH`.
+fn xvfb_run() -> Option<PathBuf> {
+    std::env::split_paths(&std::env::var_os("PATH")?)
+        .map(|dir| dir.join("xvfb-run"))
+        .find(|p| p.is_file())
+}
+
+#[test]
+fn the_window_opens_under_xvfb_and_shows_the_picture() {
+    let Some(xvfb_run) = xvfb_run() else {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "xvfb-run is missing, and CI must test the real window (`cargo xtask test` installs the Debian package xvfb)"
+        );
+        eprintln!("skipped: no xvfb-run here (Debian: apt-get install xvfb xauth)");
+        return;
+    };
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("xvfb");
+    std::fs::create_dir_all(&dir).unwrap();
+    let shot = dir.join("window.png");
+    let _ = std::fs::remove_file(&shot);
+    let mut child = Command::new(xvfb_run)
+        .args(["--auto-servernum", "--server-args=-screen 0 1280x800x24"])
+        .arg(env!("CARGO_BIN_EXE_course-viewer"))
+        .args(["--mesh", "star.ply", "--size", "200", "--window-screenshot"])
+        .arg(&shot)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("xvfb-run starts");
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if started.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            panic!("the window did not save its screenshot and close within 2 minutes");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let output = child.wait_with_output().unwrap();
+    assert!(
+        status.success(),
+        "the viewer under Xvfb: {status}\n{}\n{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let picture = canvas::Canvas::load_png(&shot).expect("a screenshot of the window");
+    assert!(
+        picture.width() >= 800 && picture.height() >= 600,
+        "{} × {}",
+        picture.width(),
+        picture.height()
+    );
+    // The star's top vertex is red: the picture is in the window.
+    let reds = picture
+        .enumerate()
+        .filter(|(_, c)| c.r > 0.8 && c.g < 0.3 && c.b < 0.3)
+        .count();
+    assert!(
+        reds > 20,
+        "{reds} red pixels: the star is not in the window"
+    );
+}
