@@ -37,6 +37,9 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
     {
         bail!("this course has no viewer (xtask/viewer)");
     }
+    if reference && !root.join("reference").is_dir() {
+        bail!("--reference needs the solutions, and this edition has none (no reference/)");
+    }
     let overlay = if reference {
         Overlay::Reference
     } else {
