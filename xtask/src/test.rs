@@ -197,6 +197,24 @@ fn grade_into(root: &Path, overlay: Overlay<'_>, folder: &str) -> Result<Report>
 fn reference_scores_full(root: &Path) -> Result<String> {
     let report = grade_into(root, Overlay::Reference, "reference")?;
     let mut problems = Vec::new();
+    // The report's pipeline pictures, drawn with the solutions, are the
+    // expected ones to the byte.
+    let out = root.join("target").join("grade").join("reference");
+    for picture in &report.pipeline {
+        let same = match (&picture.yours, &picture.expected) {
+            (Some(yours), Some(expected)) => {
+                fs::read(out.join(yours)).ok() == fs::read(out.join(expected)).ok()
+            }
+            _ => false,
+        };
+        if !same {
+            problems.push(format!(
+                "the pipeline picture \"{}\" is not the expected one ({})",
+                picture.what,
+                picture.error.as_deref().unwrap_or("it differs")
+            ));
+        }
+    }
     for topic in &report.topics {
         if topic.compile_error.is_some() {
             problems.push(format!("{} does not compile", topic.name));

@@ -62,7 +62,7 @@ pub struct BuildSandbox {
 
 impl BuildSandbox {
     /// `cargo`, run offline inside the sandbox, in `cargo`'s folder.
-    fn wrap(&self, cargo: &Command) -> Result<Command> {
+    pub(crate) fn wrap(&self, cargo: &Command) -> Result<Command> {
         std::fs::create_dir_all(&self.target_dir)
             .with_context(|| format!("cannot create {}", self.target_dir.display()))?;
         let temporary = self.target_dir.join("tmp-build");

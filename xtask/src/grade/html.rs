@@ -99,8 +99,42 @@ pub fn page(report: &Report) -> String {
             task_section(&mut html, &topic.name, task);
         }
     }
+    pipeline_section(&mut html, &report.pipeline);
     html.push_str("</body></html>\n");
     html
+}
+
+/// "Your pipeline": the shipped meshes drawn by the graded stages, beside
+/// what the solutions draw, with how each stage fared.
+fn pipeline_section(html: &mut String, pictures: &[super::pipeline::PipelinePicture]) {
+    if pictures.is_empty() {
+        return;
+    }
+    html.push_str(
+        "<h2 id=\"pipeline\">Your pipeline</h2>\n<p>The shipped meshes transformed by the course, then clipped, \
+         drawn and depth-tested by your stages (no points; <code>cargo xtask view</code> shows \
+         them in a window).</p>\n",
+    );
+    for picture in pictures {
+        let _ = writeln!(html, "<div><p>{}</p>", escape(&picture.what));
+        for (path, caption) in [(&picture.yours, "yours"), (&picture.expected, "expected")] {
+            if let Some(path) = path {
+                let _ = writeln!(
+                    html,
+                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{caption}\"></a>\
+                     <figcaption>{caption}</figcaption></figure>",
+                    src = escape(&url(path)),
+                );
+            }
+        }
+        if let Some(error) = &picture.error {
+            let _ = writeln!(html, "<p class=\"error\">{}</p>", escape(error));
+        }
+        if !picture.stages.is_empty() {
+            let _ = writeln!(html, "<pre>{}</pre>", escape(&picture.stages.join("\n")));
+        }
+        html.push_str("</div>\n");
+    }
 }
 
 /// A task's heading, its first failure and its pictures.

@@ -22,6 +22,7 @@ mod export;
 mod forbidden;
 mod html;
 mod outcome;
+pub mod pipeline;
 mod report;
 mod run;
 pub mod submission;
@@ -260,6 +261,20 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
         .enumerate()
         .map(|(p, plan)| topic_report(&out, plan, |t| finished.remove(&(p, t))))
         .collect();
+    let spinner = spinner("drawing the pipeline with your stages".to_owned());
+    let pipeline = pipeline::render(
+        &pipeline::Plan {
+            root: &root,
+            out: &out,
+            target_dir: options.target_dir.as_deref(),
+            build_sandbox: build_sandbox.as_ref(),
+            sandbox: sandbox
+                .as_ref()
+                .map(|s| (s.program.as_path(), s.hidden.as_slice())),
+        },
+        &topics,
+    );
+    spinner.finish_and_clear();
     let report = Report {
         schema: report::SCHEMA,
         root,
@@ -278,6 +293,7 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
         integrity: None,
         sandboxed: sandbox.is_some(),
         topics,
+        pipeline,
     };
     Ok(report)
 }

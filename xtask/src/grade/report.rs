@@ -61,6 +61,10 @@ pub struct Report {
     pub sandboxed: bool,
     /// Per topic, in course order.
     pub topics: Vec<TopicReport>,
+    /// The shipped meshes drawn by the graded stages (see `pipeline`);
+    /// empty when no topic of the viewer was graded.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub pipeline: Vec<super::pipeline::PipelinePicture>,
 }
 
 impl Report {

@@ -89,7 +89,7 @@ pub struct Sandbox {
 
 impl Sandbox {
     /// `bwrap` and its options, up to the program it runs.
-    fn command(&self, cwd: &Path) -> Command {
+    pub(crate) fn command(&self, cwd: &Path) -> Command {
         let mut command = Command::new(&self.program);
         // No `/proc`: neither the grader nor another test is visible, and a
         // test cannot read its own memory or first environment through

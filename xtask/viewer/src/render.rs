@@ -85,6 +85,24 @@ impl Settings {
     }
 }
 
+/// The pictures of the grade report's "Your pipeline" section (`cargo
+/// xtask grade` draws them with your stages, beside `xtask/viewer/expected/`):
+/// file name, mesh, mode, clipping; 200 × 200 pixels, the course camera.
+pub const REPORT_SCENES: [(&str, &str, Mode, bool); 4] = [
+    ("star-wireframe.png", "star.ply", Mode::Line, true),
+    ("torus-filled.png", "torus.ply", Mode::Fill, true),
+    ("clipped-torus.png", "clipped_torus.ply", Mode::Fill, true),
+    (
+        "clipped-torus-unclipped.png",
+        "clipped_torus.ply",
+        Mode::Fill,
+        false,
+    ),
+];
+
+/// The pictures' size in pixels.
+pub const REPORT_SIZE: u32 = 200;
+
 /// One stage's line in a frame's report.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct StageReport {

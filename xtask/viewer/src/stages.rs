@@ -166,7 +166,8 @@ impl Status {
             Self::NotReached => "not reached: nothing came through the stages before it".to_owned(),
             Self::Ok => "ok".to_owned(),
             Self::Missing => {
-                "does not compile, so it is left out (see `cargo xtask grade`)".to_owned()
+                "left out: its topic is not in this build (it does not compile, or was not graded with it)"
+                    .to_owned()
             }
             Self::NotYet(message) => format!("not written yet: {message}"),
             Self::Panicked(message) => format!("panicked: {message}"),

@@ -189,3 +189,32 @@ fn a_panicking_depth_test_is_named_and_a_missing_topic_too() {
     assert_eq!(frame.stages[0].status, Status::Missing);
     assert!(frame.canvas.pixels_not(Rgba::BLACK).is_empty());
 }
+
+/// The report's expected pictures are what the solutions draw (this suite
+/// runs with them staged): regenerate them with `cargo xtask view
+/// --reference -- --screenshot xtask/viewer/expected/<file> --size 200 ...`
+/// when the pipeline changes, and look at them.
+#[test]
+fn the_reports_expected_pictures_are_what_the_solutions_draw() {
+    use course_viewer::render::{REPORT_SCENES, REPORT_SIZE};
+    for (file, mesh_name, mode, clip) in REPORT_SCENES {
+        let settings = Settings {
+            mode,
+            clip,
+            width: REPORT_SIZE,
+            height: REPORT_SIZE,
+            ..Settings::default()
+        };
+        let frame = render(&mesh(mesh_name), &settings, &Stages::yours());
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("expected")
+            .join(file);
+        let expected =
+            Canvas::load_png(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert_eq!(
+            frame.canvas.to_image(),
+            expected.to_image(),
+            "{file} is not what the solutions draw"
+        );
+    }
+}
