@@ -265,6 +265,21 @@ fn reference_scores_full(root: &Path) -> Result<String> {
 fn stubs_score_zero(root: &Path) -> Result<String> {
     let report = grade_into(root, Overlay::Own, "stubs")?;
     let mut problems = Vec::new();
+    // The pipeline is drawn with the stubs too: nothing drawn, and the
+    // stages at `todo!()` named, never replaced by anything.
+    for picture in &report.pipeline {
+        let names_a_todo = picture.stages.iter().any(|s| s.contains("not written yet"));
+        if picture.yours.is_none() || !names_a_todo {
+            problems.push(format!(
+                "the pipeline picture \"{}\" with the stubs: {}",
+                picture.what,
+                picture
+                    .error
+                    .clone()
+                    .unwrap_or_else(|| format!("no stage at todo!() named: {:?}", picture.stages))
+            ));
+        }
+    }
     for topic in &report.topics {
         if topic.compile_error.is_some() {
             problems.push(format!("{}: the stubs do not compile", topic.name));
