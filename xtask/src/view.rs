@@ -13,19 +13,9 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 use crate::cargo;
+use crate::grade::pipeline::{STAGES, VIEWER};
 use crate::stage::{self, Overlay};
 use crate::topics;
-
-/// The viewer's package.
-const VIEWER: &str = "course-viewer";
-
-/// The viewer's features and the topics whose stages they build in.
-const TOPICS: [(&str, &str); 4] = [
-    ("lines", "01-lines"),
-    ("fill", "03-fill"),
-    ("clipping", "04-clipping"),
-    ("buffers", "05-buffers"),
-];
 
 /// Builds the viewer with every topic that compiles and runs it with `args`.
 pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
@@ -49,7 +39,7 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
     let staged = stage::stage(root, overlay, None)?;
     let mut features = Vec::new();
     let mut not_compiling = Vec::new();
-    for (feature, topic) in TOPICS {
+    for (feature, topic) in STAGES {
         let Some(found) = course.iter().find(|t| t.name == topic) else {
             continue; // not in this edition
         };

@@ -21,10 +21,10 @@ use super::run::Sandbox;
 use crate::cargo::{self, cargo};
 
 /// The viewer's package.
-const VIEWER: &str = "course-viewer";
+pub const VIEWER: &str = "course-viewer";
 
 /// The viewer's features and the topics whose stages they build in.
-const STAGES: [(&str, &str); 4] = [
+pub const STAGES: [(&str, &str); 4] = [
     ("lines", "01-lines"),
     ("fill", "03-fill"),
     ("clipping", "04-clipping"),
