@@ -253,16 +253,16 @@ fn viewer_manifest(text: &str, topics: &[String]) -> String {
         if line.contains("# course only") {
             continue;
         }
-        if let Some((code, topic)) = line.split_once("# topic ") {
-            if !topics.iter().any(|t| t == topic.trim()) {
-                match code.split_once('=') {
-                    Some((name, value)) if value.trim().starts_with('[') => {
-                        out.push_str(&format!("{} = []\n", name.trim()));
-                    }
-                    _ => {}
-                }
-                continue;
+        if let Some((code, topic)) = line.split_once("# topic ")
+            && !topics.iter().any(|t| t == topic.trim())
+        {
+            if let Some((name, value)) = code.split_once('=')
+                && value.trim().starts_with('[')
+            {
+                out.push_str(name.trim());
+                out.push_str(" = []\n");
             }
+            continue;
         }
         out.push_str(line);
         out.push('\n');
