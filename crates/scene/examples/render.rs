@@ -20,7 +20,7 @@ use scene::{Mode, Pipeline};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum CliMode {
-    /// Wireframe (DDA lines).
+    /// Wireframe (one-pixel bands).
     Line,
     /// Filled polygons (edge functions).
     Fill,

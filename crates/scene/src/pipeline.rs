@@ -22,7 +22,7 @@ pub const FAR: f32 = 10.0;
 /// How polygons are drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
-    /// The outline of every polygon (a wireframe), with DDA lines.
+    /// The outline of every polygon (a wireframe), as one-pixel bands.
     Line,
     /// Filled polygons, as triangle fans with edge functions.
     Fill,
@@ -138,7 +138,7 @@ impl Pipeline {
     /// Divides, maps to pixels and draws every polygon onto `canvas`.
     ///
     /// - [`Mode::Line`]: each edge `v_i → v_{i+1}` and the closing edge
-    ///   `v_{n−1} → v_0` as a DDA line ([`raster::draw_line`]); a
+    ///   `v_{n−1} → v_0` as a one-pixel band ([`raster::draw_line`]); a
     ///   two-vertex polygon is one line.
     /// - [`Mode::Fill`]: a triangle fan `(v_0, v_i, v_{i+1})`
     ///   ([`raster::fill_triangle`]), exact for convex polygons (which

@@ -1,5 +1,5 @@
-//! The library rasterizer: DDA lines and edge-function triangles, checked
-//! against pixels worked out by hand from the sheet's definitions.
+//! The library rasterizer: lines as one-pixel-wide bands and
+//! edge-function triangles, checked against pixels worked out by hand.
 
 use canvas::{Canvas, Fragment, Pixel, Rgba, Vec2, Vertex};
 use proptest::prelude::*;
@@ -28,20 +28,36 @@ fn horizontal_line_includes_both_endpoints_in_either_direction() {
 }
 
 #[test]
-fn shallow_line_rounds_half_away_from_zero() {
-    // (0, 0) → (4, 2): 4 steps, y = 0, 0.5, 1, 1.5, 2 rounds to 0, 1, 1, 2, 2.
+fn a_sloped_line_covers_the_centres_within_half_a_pixel_of_it() {
+    // (0, 0) → (4, 2): a centre (x, y) is in when its distance from the
+    // line, |x − 2y| / √5, is at most ½: so (1, 0), (1, 1), (3, 1) and
+    // (3, 2) at 1/√5 ≈ 0.45 are in, (0, 1) and (4, 1) at 2/√5 are out. A
+    // DDA would draw one pixel per column; a band is not a line algorithm.
     let mut canvas = Canvas::new(6, 4);
     draw_line(&mut canvas, v(0.0, 0.0), v(4.0, 2.0));
-    let expected = pixels(&[(0, 0), (1, 1), (2, 1), (3, 2), (4, 2)]);
-    testkit::assert_pixels_eq(&expected, &lit(&canvas), "shallow line");
+    let expected = pixels(&[(0, 0), (1, 0), (1, 1), (2, 1), (3, 1), (3, 2), (4, 2)]);
+    testkit::assert_pixels_eq(&expected, &lit(&canvas), "sloped line");
 }
 
 #[test]
-fn steep_line_has_one_pixel_per_row() {
+fn a_diagonal_is_one_pixel_thick() {
+    // (k + 1, k) lies 1/√2 from the diagonal: outside the band.
+    let mut canvas = Canvas::new(6, 6);
+    draw_line(&mut canvas, v(0.0, 0.0), v(5.0, 5.0));
+    let expected = pixels(&[(0, 0), (1, 1), (2, 2), (3, 3), (4, 4), (5, 5)]);
+    testkit::assert_pixels_eq(&expected, &lit(&canvas), "diagonal");
+}
+
+#[test]
+fn steep_line_covers_each_of_its_rows_once_or_twice() {
     let mut canvas = Canvas::new(4, 8);
     draw_line(&mut canvas, v(1.0, 0.0), v(2.0, 6.0));
-    let rows: Vec<i32> = lit(&canvas).iter().map(|p| p.y).collect();
-    assert_eq!(rows, (0..=6).collect::<Vec<_>>());
+    let drawn = lit(&canvas);
+    for y in 0..=6 {
+        let n = drawn.iter().filter(|p| p.y == y).count();
+        assert!((1..=2).contains(&n), "row {y}: {n} pixels");
+    }
+    assert!(drawn.iter().all(|p| (0..=6).contains(&p.y)));
 }
 
 #[test]
@@ -57,13 +73,29 @@ fn line_interpolates_colour_and_depth() {
     let a = Vertex::new(Vec2::new(0.0, 0.0), 0.0, Rgba::BLACK);
     let b = Vertex::new(Vec2::new(4.0, 0.0), 0.8, Rgba::WHITE);
     draw_line(&mut canvas, a, b);
-    assert_eq!(canvas.get(Pixel::new(0, 0)), Some(Rgba::BLACK));
-    assert_eq!(canvas.get(Pixel::new(4, 0)), Some(Rgba::WHITE));
-    assert_eq!(
-        canvas.get(Pixel::new(2, 0)),
-        Some(Rgba::from_rgba8([128, 128, 128, 255]))
+    // Linear from a to b: the ends keep their own colours and depths.
+    let close = |p: (i32, i32), colour: Rgba, depth: f32| {
+        let p = Pixel::new(p.0, p.1);
+        canvas
+            .get(p)
+            .is_some_and(|c| c.approx_eq(colour, 1.0 / 255.0))
+            && canvas.depth(p).is_some_and(|d| (d - depth).abs() < 1e-5)
+    };
+    assert!(
+        close((0, 0), Rgba::BLACK, 0.0),
+        "{:?}",
+        canvas.get(Pixel::new(0, 0))
     );
-    assert_eq!(canvas.depth(Pixel::new(2, 0)), Some(0.4));
+    assert!(
+        close((4, 0), Rgba::WHITE, 0.8),
+        "{:?}",
+        canvas.get(Pixel::new(4, 0))
+    );
+    assert!(
+        close((2, 0), Rgba::grey(0.5), 0.4),
+        "{:?}",
+        canvas.get(Pixel::new(2, 0))
+    );
 }
 
 #[test]
@@ -188,7 +220,7 @@ proptest! {
     }
 
     #[test]
-    fn line_is_connected_and_hits_both_ends(
+    fn line_is_the_band_around_it_connected_and_with_both_ends(
         a in testkit::strategies::pixel(12), b in testkit::strategies::pixel(12),
     ) {
         let mut canvas = Canvas::new(32, 32);
@@ -198,7 +230,22 @@ proptest! {
         let ends = [a, b].map(|p| Pixel::new(p.x + 16, p.y + 16));
         prop_assert!(ends.iter().all(|e| drawn.contains(e)));
         let steps = (a.x - b.x).abs().max((a.y - b.y).abs());
-        prop_assert_eq!(drawn.len() as i32, steps + 1);
+        // Exactly the centres in the band: within ½ of the segment across
+        // it, and at most ½ beyond its ends along it.
+        let (pa, pb) = (ends[0].centre(), ends[1].centre());
+        let length = pa.distance(pb);
+        let in_band = |p: Pixel| {
+            let q = p.centre() - pa;
+            if length == 0.0 {
+                return q == Vec2::ZERO;
+            }
+            let d = (pb - pa) / length;
+            d.perp_dot(q).abs() <= 0.5 && (-0.5..=length + 0.5).contains(&q.dot(d))
+        };
+        let expected: Vec<Pixel> = canvas.enumerate().map(|(p, _)| p).filter(|&p| in_band(p)).collect();
+        testkit::assert_pixels_eq(&expected, &drawn, &format!("the band of {pa} → {pb}"));
+        // At least one pixel per step, at most two.
+        prop_assert!(drawn.len() as i32 >= steps + 1 && drawn.len() as i32 <= 2 * (steps + 1), "{} pixels for {} steps", drawn.len(), steps);
         prop_assert!(drawn.iter().all(|p| drawn.iter().any(|q| q != p && q.touches(*p)) || steps == 0));
     }
 }

@@ -1,8 +1,12 @@
-//! A small library rasterizer for the pipeline: DDA lines and edge-function
-//! triangles with colour and depth interpolation and a depth test.
+//! A small library rasterizer for the pipeline: triangles by edge
+//! functions and lines as one-pixel-wide bands of two triangles, with
+//! colour and depth interpolation and a depth test.
 //!
-//! This is not student work (the exercise topics build their own); it is
-//! kept small and plain so that the pipeline can draw.
+//! This is not student work: the exercise topics write their own, and
+//! `cargo xtask view` draws the pipeline with those. It is kept small and
+//! plain, and unlike any task (no line algorithm, no fill rule for shared
+//! edges, no fixed point), so that it draws the pictures of topic 04's
+//! tests without answering a task.
 //!
 //! Pixel convention: the canvas's (centres at integers, y up, rounding half
 //! away from zero). Depth test: a fragment is written only where its depth
@@ -11,10 +15,10 @@
 //! ±[`canvas::MAX_COORD`] is not drawn; the work per primitive is bounded by
 //! the canvas size, however long the primitive.
 
-mod dda;
+mod band;
 mod edge_function;
 
-pub use dda::draw_line;
+pub use band::draw_line;
 pub use edge_function::fill_triangle;
 
 use canvas::{Canvas, Fragment, Vertex, within_limits};
