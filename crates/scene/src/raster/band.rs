@@ -11,33 +11,42 @@
 //! to half a pixel after `b` (square caps), so both endpoints are drawn,
 //! and its border counts as inside (as the fill's edges do).
 
-use canvas::{Canvas, Fragment, Pixel, Vertex, round_half_away};
+use canvas::{Canvas, Fragment, Pixel, Vertex, Viewport, round_half_away};
 use glam::DVec2;
 
 use super::{depth_test, drawable};
 
 /// Draws the segment from `a` to `b` as a band one pixel wide, with colour
-/// and depth interpolated along it (linear from `a` to `b`), depth-tested.
-///
-/// A zero-length segment draws the one pixel at `round(a)`. Nothing is
-/// drawn if an endpoint is not finite or lies beyond ±[`canvas::MAX_COORD`];
-/// the work is bounded by the canvas's size, however long the segment.
+/// and depth interpolated along it (linear from `a` to `b`), depth-tested
+/// (see [`band`]).
 pub fn draw_line(canvas: &mut Canvas, a: Vertex, b: Vertex) {
-    if !drawable(&a) || !drawable(&b) {
+    let viewport = canvas.viewport();
+    band(a, b, viewport, |fragment| depth_test(canvas, fragment));
+}
+
+/// Emits the fragments of the band one pixel wide around the segment from
+/// `a` to `b` that lie in `viewport` (inclusive bounds), row by row from
+/// the bottom, with colour and depth interpolated along it (linear from
+/// `a` to `b`, continued half a pixel beyond the ends).
+///
+/// A zero-length segment emits the one pixel at `round(a)`. Nothing is
+/// emitted if an endpoint is not finite or lies beyond ±[`canvas::MAX_COORD`];
+/// the work is bounded by the viewport's size, however long the segment.
+pub fn band(a: Vertex, b: Vertex, viewport: Viewport, mut emit: impl FnMut(Fragment)) {
+    if !drawable(&a) || !drawable(&b) || viewport.is_empty() {
         return;
     }
     let (pa, pb) = (a.position.as_dvec2(), b.position.as_dvec2());
     let length = pa.distance(pb);
     if length == 0.0 {
         let pixel = Pixel::new(round_half_away(a.position.x), round_half_away(a.position.y));
-        depth_test(
-            canvas,
-            Fragment {
+        if viewport.contains(pixel) {
+            emit(Fragment {
                 pixel,
                 depth: a.depth,
                 colour: a.colour,
-            },
-        );
+            });
+        }
         return;
     }
     // A centre p is in the band when, with d the unit direction,
@@ -48,8 +57,8 @@ pub fn draw_line(canvas: &mut Canvas, a: Vertex, b: Vertex) {
     let d = (pb - pa) / length;
     let lo = pa.min(pb) - 1.0;
     let hi = pa.max(pb) + 1.0;
-    let first_row = lo.y.ceil().max(0.0);
-    let last_row = hi.y.floor().min(f64::from(canvas.height()) - 1.0);
+    let first_row = lo.y.ceil().max(f64::from(viewport.y_min));
+    let last_row = hi.y.floor().min(f64::from(viewport.y_max));
     if first_row > last_row {
         return;
     }
@@ -60,7 +69,7 @@ pub fn draw_line(canvas: &mut Canvas, a: Vertex, b: Vertex) {
             (d.x, dy * d.y - pa.x * d.x, -0.5, length + 0.5),
             (-d.y, d.x * dy + d.y * pa.x, -0.5, 0.5),
         ];
-        let (mut from, mut to) = (0.0_f64, f64::from(canvas.width()) - 1.0);
+        let (mut from, mut to) = (f64::from(viewport.x_min), f64::from(viewport.x_max));
         for (slope, offset, min, max) in runs {
             if slope == 0.0 {
                 if !(min..=max).contains(&offset) {
@@ -80,14 +89,11 @@ pub fn draw_line(canvas: &mut Canvas, a: Vertex, b: Vertex) {
             // Linear from a to b, continued half a pixel beyond the ends.
             let t = (p - pa).dot(d) / length;
             let v = a.mix(&b, t as f32);
-            depth_test(
-                canvas,
-                Fragment {
-                    pixel: Pixel::new(x, y),
-                    depth: v.depth,
-                    colour: v.colour,
-                },
-            );
+            emit(Fragment {
+                pixel: Pixel::new(x, y),
+                depth: v.depth,
+                colour: v.colour,
+            });
         }
     }
 }

@@ -18,7 +18,7 @@
 mod band;
 mod edge_function;
 
-pub use band::draw_line;
+pub use band::{band, draw_line};
 pub use edge_function::fill_triangle;
 
 use canvas::{Canvas, Fragment, Vertex, within_limits};
