@@ -40,6 +40,9 @@ pub struct ViewerApp {
     screenshot_asked: bool,
     /// Where the window's integration hands the screenshot over.
     screenshot: Arc<std::sync::Mutex<Option<Arc<egui::ColorImage>>>>,
+    /// Whether the stage list says how long the frame took (off in
+    /// snapshot tests, where the time would differ from run to run).
+    show_timing: bool,
 }
 
 impl ViewerApp {
@@ -66,6 +69,7 @@ impl ViewerApp {
             window_screenshot: None,
             screenshot_asked: false,
             screenshot: Arc::default(),
+            show_timing: true,
         }
     }
 
@@ -119,6 +123,11 @@ impl ViewerApp {
             }
             None => false,
         }
+    }
+
+    /// Whether the stage list says how long each frame took.
+    pub fn set_show_timing(&mut self, show: bool) {
+        self.show_timing = show;
     }
 
     /// Reports a frame as slow (an endless loop?) after `limit`.
@@ -309,9 +318,13 @@ impl ViewerApp {
             ui.label(RichText::new(stage.source).small().weak());
         }
         let (total, drawn) = frame.polygons;
-        let timing = self.worker.last_frame_time().map_or_else(String::new, |t| {
-            format!(" in {:.0} ms", t.as_secs_f64() * 1e3)
-        });
+        let timing = self
+            .worker
+            .last_frame_time()
+            .filter(|_| self.show_timing)
+            .map_or_else(String::new, |t| {
+                format!(" in {:.0} ms", t.as_secs_f64() * 1e3)
+            });
         ui.label(format!("{drawn} of {total} polygons drawn{timing}"));
     }
 

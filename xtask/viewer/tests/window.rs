@@ -22,6 +22,8 @@ fn harness(stages: Stages) -> Harness<'static, ViewerApp> {
     assert!(problems.is_empty(), "{problems:?}");
     let mut app = ViewerApp::new(meshes, stages, Vec::new());
     assert!(app.select_mesh("star.ply"));
+    // Frame times differ from run to run: not in the snapshots.
+    app.set_show_timing(false);
     app.settings_mut().width = 200;
     app.settings_mut().height = 200;
     Harness::builder()
