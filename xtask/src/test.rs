@@ -527,26 +527,12 @@ fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     // A round is one submission-like folder: the solutions of its topics
     // with one shortcut planted in each, so that every shortcut is graded
     // alone, against the solutions of the other tasks.
-    let mut rounds: Vec<Vec<&Shortcut>> = Vec::new();
-    for shortcut in &shortcuts.shortcut {
-        let same_topic = |s: &&Shortcut| s.topic == shortcut.topic;
-        match rounds
-            .iter_mut()
-            .find(|round| !round.iter().any(same_topic))
-        {
-            Some(round) => round.push(shortcut),
-            None => rounds.push(vec![shortcut]),
-        }
-    }
+    let rounds = one_per_topic(&shortcuts.shortcut, |s| &s.topic);
     let mut problems = Vec::new();
     let mut topics = std::collections::BTreeSet::new();
     let mut duration_s = 0.0;
     for (number, round) in rounds.iter().enumerate() {
-        let planted = root.join("target").join("xtask").join("shortcuts");
-        if planted.exists() {
-            fs::remove_dir_all(&planted)
-                .with_context(|| format!("cannot clear {}", planted.display()))?;
-        }
+        let planted = empty_folder(root.join("target").join("xtask").join("shortcuts"))?;
         for shortcut in round {
             let solutions = root.join("reference").join(&shortcut.topic);
             for file in stage::files_under(&solutions)? {
@@ -602,6 +588,31 @@ fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     ))
 }
 
+/// `items` in rounds that hold at most one item of each topic (named by
+/// `topic`), in order: a round is graded as one submission-like folder.
+fn one_per_topic<T>(items: &[T], topic: impl Fn(&T) -> &str) -> Vec<Vec<&T>> {
+    let mut rounds: Vec<Vec<&T>> = Vec::new();
+    for item in items {
+        match rounds
+            .iter_mut()
+            .find(|round| round.iter().all(|other| topic(other) != topic(item)))
+        {
+            Some(round) => round.push(item),
+            None => rounds.push(vec![item]),
+        }
+    }
+    rounds
+}
+
+/// `folder`, emptied (what an earlier round left there goes).
+fn empty_folder(folder: PathBuf) -> Result<PathBuf> {
+    if folder.exists() {
+        fs::remove_dir_all(&folder)
+            .with_context(|| format!("cannot clear {}", folder.display()))?;
+    }
+    Ok(folder)
+}
+
 /// A given function with a task's signature, and how it gets into the
 /// task's file.
 struct StandIn {
@@ -627,24 +638,11 @@ fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     }
     // A round holds at most one stand-in per topic, so that one that does
     // not compile where planted hides no other.
-    let mut rounds: Vec<Vec<&StandIn>> = Vec::new();
-    for stand_in in &stand_ins {
-        match rounds
-            .iter_mut()
-            .find(|round| round.iter().all(|s| s.topic != stand_in.topic))
-        {
-            Some(round) => round.push(stand_in),
-            None => rounds.push(vec![stand_in]),
-        }
-    }
+    let rounds = one_per_topic(&stand_ins, |s| &s.topic);
     let mut problems = Vec::new();
     let mut not_compiling = Vec::new();
     for (number, round) in rounds.iter().enumerate() {
-        let planted = root.join("target").join("xtask").join("stand-ins");
-        if planted.exists() {
-            fs::remove_dir_all(&planted)
-                .with_context(|| format!("cannot clear {}", planted.display()))?;
-        }
+        let planted = empty_folder(root.join("target").join("xtask").join("stand-ins"))?;
         for stand_in in round {
             stage::write_file(&planted.join(&stand_in.file), &stand_in.planted)?;
         }

@@ -102,14 +102,7 @@ impl Worker {
     /// The newest finished frame, if one arrived since the last call.
     pub fn poll(&mut self) -> Option<Frame> {
         match self.frames.try_recv() {
-            Ok((frame, took)) => {
-                self.busy_since = None;
-                self.last = Some(took);
-                if let Some(job) = self.pending.take() {
-                    self.send(job);
-                }
-                Some(frame)
-            }
+            Ok(done) => Some(self.arrived(done)),
             Err(TryRecvError::Empty | TryRecvError::Disconnected) => None,
         }
     }
@@ -118,17 +111,21 @@ impl Worker {
     /// not arrived by then (or none is being drawn).
     pub fn wait(&mut self, limit: Duration) -> Option<Frame> {
         self.busy_since?;
-        match self.frames.recv_timeout(limit) {
-            Ok((frame, took)) => {
-                self.busy_since = None;
-                self.last = Some(took);
-                if let Some(job) = self.pending.take() {
-                    self.send(job);
-                }
-                Some(frame)
-            }
-            Err(_) => None,
+        self.frames
+            .recv_timeout(limit)
+            .ok()
+            .map(|done| self.arrived(done))
+    }
+
+    /// A frame the worker finished: the worker is free for the request
+    /// that waited, if one did.
+    fn arrived(&mut self, (frame, took): (Frame, Duration)) -> Frame {
+        self.busy_since = None;
+        self.last = Some(took);
+        if let Some(job) = self.pending.take() {
+            self.send(job);
         }
+        frame
     }
 
     /// How long the frame being drawn has been running, if one is.
