@@ -302,8 +302,15 @@ proptest! {
         a in half_pixel_point(12), b in half_pixel_point(12),
         c in point(12.0), d in point(12.0),
     ) {
-        // c and d on opposite sides of a–b (else the pair overlaps).
-        let side = |p: Vec2| (b - a).perp_dot(p - a);
+        // c and d on the fill's 1/256-pixel grid, so that the side of a–b
+        // they lie on is the side their snapped positions lie on (exact
+        // in f64), and on opposite sides (else the pair overlaps): a d on
+        // c's side is mirrored through a.
+        let on_grid = |p: Vec2| (p * 256.0).round() / 256.0;
+        let side = |p: Vec2| (b - a).as_dvec2().perp_dot((p - a).as_dvec2());
+        let c = on_grid(c);
+        let d = on_grid(d);
+        let d = if side(c) * side(d) > 0.0 { 2.0 * a - d } else { d };
         prop_assume!(side(c) * side(d) < 0.0);
         let first = pixels([at(a.x, a.y), at(b.x, b.y), at(c.x, c.y)], WIDE);
         let second = pixels([at(b.x, b.y), at(a.x, a.y), at(d.x, d.y)], WIDE);
