@@ -2,16 +2,23 @@
 
 use canvas::{Pixel, Rgba, Vec2, Vertex};
 use proptest::prelude::*;
-use proptest::test_runner::Config;
+use proptest::test_runner::{Config, RngSeed};
 
-/// The configuration every property test in the course uses: 256 cases and
+/// The seed of every property test's random cases (see [`proptest_config`]).
+pub const SEED: u64 = 0x0C0D_E5EE_D000_0001;
+
+/// The configuration every property test in the course uses: 256 cases,
 /// no failure files written next to the tests (a student's copy of the
-/// tests must stay untouched; the grader checks it).
+/// tests must stay untouched; the grader checks it), and the cases drawn
+/// from one fixed [`SEED`], so that the same code meets the same cases in
+/// every run and a grade can be repeated. `PROPTEST_RNG_SEED=N` (or
+/// `PROPTEST_CASES=N`) in the environment draws other cases.
 #[must_use]
 pub fn proptest_config() -> Config {
     Config {
         cases: 256,
         failure_persistence: None,
+        rng_seed: RngSeed::Fixed(SEED),
         ..Config::default()
     }
 }
@@ -92,4 +99,34 @@ pub fn hostile_pixel() -> impl Strategy<Value = Pixel> {
         any::<i32>(),
     ];
     (coord.clone(), coord).prop_map(|(x, y)| Pixel::new(x, y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::test_runner::TestRunner;
+
+    /// The cases one run of a property test meets.
+    fn drawn() -> Vec<Vec2> {
+        let cases = std::cell::RefCell::new(Vec::new());
+        TestRunner::new(proptest::test_runner::contextualize_config(
+            proptest_config(),
+        ))
+        .run(&point(100.0), |p| {
+            cases.borrow_mut().push(p);
+            Ok(())
+        })
+        .unwrap();
+        cases.into_inner()
+    }
+
+    #[test]
+    fn every_run_meets_the_same_cases() {
+        if std::env::var_os("PROPTEST_RNG_SEED").is_some() {
+            return;
+        }
+        let first = drawn();
+        assert_eq!(first.len(), 256);
+        assert_eq!(first, drawn(), "a second run drew other cases");
+    }
 }
