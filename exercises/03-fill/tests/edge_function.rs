@@ -302,16 +302,18 @@ proptest! {
         a in half_pixel_point(12), b in half_pixel_point(12),
         c in point(12.0), d in point(12.0),
     ) {
-        // c and d on the fill's 1/256-pixel grid, so that the side of a–b
-        // they lie on is the side their snapped positions lie on (exact
-        // in f64), and on opposite sides (else the pair overlaps): a d on
-        // c's side is mirrored through a.
-        let on_grid = |p: Vec2| (p * 256.0).round() / 256.0;
-        let side = |p: Vec2| (b - a).as_dvec2().perp_dot((p - a).as_dvec2());
-        let c = on_grid(c);
-        let d = on_grid(d);
-        let d = if side(c) * side(d) > 0.0 { 2.0 * a - d } else { d };
-        prop_assume!(side(c) * side(d) < 0.0);
+        // c and d on opposite sides of a–b (else the pair overlaps), as
+        // the fill sees them: decided exactly on the positions snapped to
+        // its 1/256-pixel grid. A d on c's side is mirrored through a.
+        let snapped = |p: Vec2| [common::snap(p.x).unwrap(), common::snap(p.y).unwrap()];
+        let side = |p: Vec2| {
+            let (a, b, p) = (snapped(a), snapped(b), snapped(p));
+            (i128::from(b[0] - a[0]) * i128::from(p[1] - a[1])
+                - i128::from(b[1] - a[1]) * i128::from(p[0] - a[0]))
+            .signum()
+        };
+        let d = if side(c) == side(d) { 2.0 * a - d } else { d };
+        prop_assume!(side(c) * side(d) < 0);
         let first = pixels([at(a.x, a.y), at(b.x, b.y), at(c.x, c.y)], WIDE);
         let second = pixels([at(b.x, b.y), at(a.x, a.y), at(d.x, d.y)], WIDE);
         let expected = triangle_pixels([a, b, c], WIDE).len() + triangle_pixels([b, a, d], WIDE).len();
