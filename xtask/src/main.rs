@@ -5,7 +5,9 @@
 
 mod bench;
 mod cargo;
+mod classroom;
 mod grade;
+mod gradescope;
 mod release;
 mod setup;
 mod stage;
@@ -68,6 +70,20 @@ enum Command {
         /// A new or empty folder, or an earlier release (updated in place, its .git kept).
         dir: PathBuf,
         /// Topics to release: names as for `grade`, or a range such as `01..=03`; default all.
+        #[arg(long, value_delimiter = ',', num_args = 1..)]
+        topics: Vec<String>,
+        /// Also write a GitHub Classroom workflow that grades every push with the official
+        /// tests of this GitHub repository (the edition, pushed and tagged) and reports one
+        /// result per task.
+        #[arg(long, value_name = "OWNER/REPO[@TAG]")]
+        classroom: Option<classroom::CourseRepo>,
+    },
+    /// Write the Gradescope autograder to DIR: the student edition as the official tests,
+    /// setup.sh, run_autograder, and autograder.zip to upload.
+    Gradescope {
+        /// A new or empty folder, or an earlier bundle (updated in place).
+        dir: PathBuf,
+        /// Topics to grade: names as for `grade`, or a range such as `01..=03`; default all.
         #[arg(long, value_delimiter = ',', num_args = 1..)]
         topics: Vec<String>,
     },
@@ -158,7 +174,12 @@ fn main() -> ExitCode {
         Command::Bench { args } => bench::run(&root, &args),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
-        Command::Release { dir, topics } => release::run(&root, &dir, &topics),
+        Command::Gradescope { dir, topics } => gradescope::run(&root, &dir, &topics),
+        Command::Release {
+            dir,
+            topics,
+            classroom,
+        } => release::run(&root, &dir, &topics, classroom.as_ref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

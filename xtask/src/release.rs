@@ -15,7 +15,10 @@
 //! first build changes nothing in it.
 //!
 //! Releasing again into the same folder updates it in place (its `.git`
-//! stays): the next commit there is the new edition.
+//! stays): the next commit there is the new edition. With `--classroom
+//! OWNER/REPO@TAG` the edition also carries the GitHub Classroom workflow
+//! that grades each push with the official tests of that repository (see
+//! [`crate::classroom`]).
 
 use std::collections::{BTreeSet, HashMap};
 use std::fs;
@@ -25,6 +28,7 @@ use anyhow::{Context, Result, bail, ensure};
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
+use crate::classroom::{self, CourseRepo};
 use crate::stage::{self, Files, Source};
 use crate::topics::{self, Topic};
 
@@ -325,7 +329,12 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
 }
 
 /// Writes the edition of `topics` (empty: all) into `dir`.
-pub fn write(root: &Path, dir: &Path, wanted: &[String]) -> Result<Release> {
+pub fn write(
+    root: &Path,
+    dir: &Path,
+    wanted: &[String],
+    classroom: Option<&CourseRepo>,
+) -> Result<Release> {
     if !root.join("reference").is_dir() {
         bail!(
             "{} is a student edition already: it has no reference/",
@@ -341,6 +350,13 @@ pub fn write(root: &Path, dir: &Path, wanted: &[String]) -> Result<Release> {
         files.push((
             PathBuf::from("Cargo.lock"),
             Source::File(root.join("Cargo.lock")),
+        ));
+    }
+    if let Some(course) = classroom {
+        files.retain(|(to, _)| to != Path::new(classroom::WORKFLOW));
+        files.push((
+            PathBuf::from(classroom::WORKFLOW),
+            Source::Text(classroom::workflow(course, &topics).into_bytes()),
         ));
     }
     files.sort();
@@ -395,9 +411,14 @@ fn read(path: &Path) -> Result<String> {
 }
 
 /// `cargo xtask release DIR [--topics ...]`.
-pub fn run(root: &Path, dir: &Path, topics: &[String]) -> Result<()> {
+pub fn run(
+    root: &Path,
+    dir: &Path,
+    topics: &[String],
+    classroom: Option<&CourseRepo>,
+) -> Result<()> {
     let dir = stage::outside_course(root, dir)?;
-    let release = write(root, &dir, topics)?;
+    let release = write(root, &dir, topics, classroom)?;
     println!(
         "wrote the student edition to {}\n  topics: {}\n  course library: {}",
         release.dir.display(),
@@ -416,6 +437,23 @@ pub fn run(root: &Path, dir: &Path, topics: &[String]) -> Result<()> {
         "to publish it: cd {} && git init && git add -A && git commit -m \"Course edition\"",
         release.dir.display()
     );
+    if let Some(course) = classroom {
+        println!(
+            "  GitHub Classroom: {} grades every push with the official tests of {}{}; push this edition there{} and use it as the assignment's template",
+            classroom::WORKFLOW,
+            course.repository,
+            course
+                .reference
+                .as_deref()
+                .map(|r| format!(" at {r}"))
+                .unwrap_or_default(),
+            course
+                .reference
+                .as_deref()
+                .map(|r| format!(", tagged {r},"))
+                .unwrap_or_default(),
+        );
+    }
     Ok(())
 }
 

