@@ -11,6 +11,8 @@
 //!   colours, including hostile values (NaN, infinities, 1e30);
 //! - [`pixels`]: collecting what a rasterizer plots, expected pixels as
 //!   literal grids ([`grid!`]), duplicates and counts;
+//! - [`definitions`]: the pixels of lines, circles and triangles by their
+//!   definitions, exactly (what topics 01–03 compare with);
 //! - [`oracles`]: values by their definitions (binomials, Bernstein
 //!   polynomials), never by the algorithms the tasks teach;
 //! - [`test`]: `#[testkit::test]`, the `#[test]` of every graded test: it
@@ -18,6 +20,7 @@
 //!   under test cannot forge.
 #![warn(missing_docs)]
 
+pub mod definitions;
 pub mod image;
 pub mod oracles;
 pub mod pixels;

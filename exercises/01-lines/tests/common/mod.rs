@@ -2,70 +2,7 @@
 //! directly and exactly, not by the incremental algorithms you write.
 #![allow(dead_code, unused_imports)] // each test file uses a different part
 
-use canvas::{Canvas, Pixel, Rgba, Viewport};
-
-/// The pixels of the line from `from` to `to` by definition: in each column
-/// of the major axis (x when `|Δx| ≥ |Δy|`), the pixel nearest to the ideal
-/// line, a tie going to the smaller minor coordinate. Computed column by
-/// column in exact integer arithmetic, in order from `from` to `to`, and
-/// only for the columns inside `window` when one is given.
-pub fn nearest_pixels(from: Pixel, to: Pixel, window: Option<Viewport>) -> Vec<Pixel> {
-    let (dx, dy) = (
-        i128::from(to.x) - i128::from(from.x),
-        i128::from(to.y) - i128::from(from.y),
-    );
-    let x_major = dx.abs() >= dy.abs();
-    let (m0, n0, dm, dn) = if x_major {
-        (from.x, from.y, dx, dy)
-    } else {
-        (from.y, from.x, dy, dx)
-    };
-    let to_pixel = |major: i128, minor: i128| {
-        let (major, minor) = (major as i32, minor as i32);
-        if x_major {
-            Pixel::new(major, minor)
-        } else {
-            Pixel::new(minor, major)
-        }
-    };
-    if dm == 0 {
-        let p = from;
-        return match window {
-            Some(w) if !w.contains(p) => vec![],
-            _ => vec![p],
-        };
-    }
-    let step = dm.signum();
-    let (first, last) = (i128::from(m0), i128::from(m0) + dm);
-    // Restrict the columns to the window's major range.
-    let (lo, hi) = match window {
-        Some(w) if x_major => (i128::from(w.x_min), i128::from(w.x_max)),
-        Some(w) => (i128::from(w.y_min), i128::from(w.y_max)),
-        None => (first.min(last), first.max(last)),
-    };
-    let (lo, hi) = (lo.max(first.min(last)), hi.min(first.max(last)));
-    let mut columns: Vec<i128> = (lo..=hi).collect();
-    if step < 0 {
-        columns.reverse();
-    }
-    columns
-        .into_iter()
-        .map(|m| {
-            // Ideal minor = n0 + q with q = num / den, den > 0.
-            let (mut num, mut den) = (dn * (m - i128::from(m0)), dm);
-            if den < 0 {
-                num = -num;
-                den = -den;
-            }
-            // Nearest integer to q, ties down: ⌈q − ½⌉ = ⌈(2num − den) / 2den⌉.
-            let a = 2 * num - den;
-            let b = 2 * den;
-            let nearest = -((-a).div_euclid(b));
-            to_pixel(m, i128::from(n0) + nearest)
-        })
-        .filter(|&p| window.is_none_or(|w| w.contains(p)))
-        .collect()
-}
+use canvas::{Canvas, Pixel, Rgba};
 
 /// Whether the ideal line passes exactly half-way between two pixels in
 /// some column (where rounding rules differ).
@@ -79,6 +16,7 @@ pub fn has_tie(from: Pixel, to: Pixel) -> bool {
     dm != 0 && (0..=dm.abs()).any(|k| (2 * dn * k).rem_euclid(2 * dm.abs()) == dm.abs())
 }
 
+pub use testkit::definitions::line_pixels as nearest_pixels;
 pub use testkit::pixels::{collect, collect_weighted};
 
 /// The eight octants' characteristic lines from the origin of a 17 × 17

@@ -47,60 +47,6 @@ pub fn grid_pixels(centre: Pixel, rows: &[&str]) -> Vec<Pixel> {
     testkit::pixels::grid_pixels(testkit::pixels::origin_of_centred(centre, rows), rows)
 }
 
-/// Whether a shape reaching `rx` pixels left and right and `ry` up and
-/// down of `centre` stays within ±`MAX_COORD` (and the reaches are not
-/// negative): the limit every function of this topic draws within.
-pub fn within_limits(centre: Pixel, rx: i32, ry: i32) -> bool {
-    let fits = |c: i32, r: i32| r >= 0 && i64::from(c).abs() + i64::from(r) <= i64::from(MAX_COORD);
-    fits(centre.x, rx) && fits(centre.y, ry)
-}
-
-/// The second octant of the midpoint circle of radius `R` by definition:
-/// for each column `x = 0, 1, …` the row nearest to the circle,
-/// `y = round(√(R² − x²))`, as long as `x ≤ y`.
-///
-/// There are no ties: `√(R² − x²)` is never an integer plus ½, since
-/// `(y + ½)² = y² + y + ¼` is never an integer. So `y` is the midpoint
-/// rule's choice, `F(x, y − ½) < 0 < F(x, y + ½)` with `F = x² + y² − R²`,
-/// and `2y + 1` is the first odd number above `√(4(R² − x²))`:
-/// `y = (⌊√(4(R² − x²))⌋ + 1) div 2`, in exact integer arithmetic.
-pub fn second_octant(radius: i32) -> Vec<(i64, i64)> {
-    let r = i64::from(radius);
-    let mut octant = Vec::new();
-    for x in 0..=r {
-        let y = circle_row(r, x);
-        if x > y {
-            break;
-        }
-        octant.push((x, y));
-    }
-    octant
-}
-
-/// The row nearest to the circle of radius `r` in column `x` (`|x| ≤ r`):
-/// `(⌊√(4(r² − x²))⌋ + 1) div 2` (see [`second_octant`]).
-pub fn circle_row(r: i64, x: i64) -> i64 {
-    (((4 * (r * r - x * x)) as u64).isqrt() as i64 + 1) / 2
-}
-
-/// The pixels of the midpoint circle: the second octant and its seven
-/// mirror images, each pixel once, sorted; nothing for a negative radius
-/// or a circle beyond ±`MAX_COORD`.
-pub fn circle_pixels(centre: Pixel, radius: i32) -> Vec<Pixel> {
-    if !within_limits(centre, radius, radius) {
-        return Vec::new();
-    }
-    let mut set = BTreeSet::new();
-    for (x, y) in second_octant(radius) {
-        for (a, b) in [(x, y), (y, x)] {
-            for (sa, sb) in [(1, 1), (-1, 1), (1, -1), (-1, -1)] {
-                set.insert(offset(centre, sa * a, sb * b));
-            }
-        }
-    }
-    set.into_iter().collect()
-}
-
 /// Whether the pixel at offset `(x, y)` from the centre belongs to the
 /// filled circle of radius `R`: with `m = max(|x|, |y|)` and
 /// `n = min(|x|, |y|)`, `(m − ½)² + n² < R²`, in integers
@@ -201,14 +147,7 @@ pub fn ellipse_pixels(centre: Pixel, a: i32, b: i32, max_semi_axis: i32) -> Vec<
     set.into_iter().collect()
 }
 
-/// `centre + (x, y)`, for offsets the caller knows to be in range.
-pub fn offset(centre: Pixel, x: i64, y: i64) -> Pixel {
-    Pixel::new(
-        (i64::from(centre.x) + x) as i32,
-        (i64::from(centre.y) + y) as i32,
-    )
-}
-
+pub use testkit::definitions::{circle_pixels, circle_row, offset, second_octant, within_limits};
 pub use testkit::pixels::{collect, count, first_duplicate};
 
 /// The first pixel whose mirror image about `centre` is missing: mirrored

@@ -2,20 +2,15 @@
 //! by pixel in exact integer arithmetic, not by the algorithms you write.
 #![allow(dead_code, unused_imports)] // each test file uses a different part
 
-use std::collections::{BTreeMap, BTreeSet};
-
-use canvas::{Canvas, Fragment, MAX_COORD, Pixel, Rgba, Vec2, Viewport};
+use canvas::{Canvas, Pixel, Rgba, Vec2, Viewport};
 
 /// The colour used for test drawings.
 pub const INK: Rgba = Rgba::WHITE;
 
+pub use testkit::definitions::{
+    SUBPIXEL_BITS, snap, triangle_covers, triangle_pixels, viewport_pixels,
+};
 pub use testkit::pixels::{collect, collect_fragments, counts, first_duplicate, grid_pixels};
-
-/// Every pixel of a (small) viewport.
-pub fn viewport_pixels(viewport: Viewport) -> impl Iterator<Item = Pixel> {
-    (viewport.y_min..=viewport.y_max)
-        .flat_map(move |y| (viewport.x_min..=viewport.x_max).map(move |x| Pixel::new(x, y)))
-}
 
 /// A canvas with the given pixels set to [`INK`].
 pub fn canvas_with(width: u32, height: u32, pixels: &[Pixel]) -> Canvas {
@@ -38,61 +33,6 @@ pub fn in_half_open_box(p: Pixel, min: Vec2, max: Vec2) -> bool {
 
 // ---------------------------------------------------------------------------
 // Triangles.
-
-/// Fixed-point fractional bits, as the sheet prescribes for `edge_function`.
-pub const SUBPIXEL_BITS: u32 = 8;
-
-/// `round(v · 2^SUBPIXEL_BITS)`, ties away from zero; `None` for NaN,
-/// infinities and `|v| > MAX_COORD`.
-pub fn snap(v: f32) -> Option<i64> {
-    if !v.is_finite() || v.abs() > MAX_COORD as f32 {
-        return None;
-    }
-    Some((f64::from(v) * f64::from(1_u32 << SUBPIXEL_BITS)).round() as i64)
-}
-
-/// Whether the triangle covers the centre of `p`, by a definition written
-/// differently from the sheet's: the centre is moved by an infinitesimal
-/// `(δ, −δ²)` (right, and a hair down), which never lies on an edge, and is
-/// then inside when it lies strictly on the inner side of all three edges.
-/// Moving right takes centres on left edges in and on right edges out;
-/// moving down does the same for top and bottom edges: the top-left rule.
-pub fn triangle_covers(positions: [Vec2; 3], p: Pixel) -> bool {
-    let mut q = [[0_i64; 2]; 3];
-    for (k, v) in positions.iter().enumerate() {
-        match (snap(v.x), snap(v.y)) {
-            (Some(x), Some(y)) => q[k] = [x, y],
-            _ => return false,
-        }
-    }
-    let one = 1_i64 << SUBPIXEL_BITS;
-    let c = [i64::from(p.x) * one, i64::from(p.y) * one];
-    let cross = |a: [i64; 2], b: [i64; 2], d: [i64; 2]| {
-        i128::from(b[0] - a[0]) * i128::from(d[1] - a[1])
-            - i128::from(b[1] - a[1]) * i128::from(d[0] - a[0])
-    };
-    let area = cross(q[0], q[1], q[2]);
-    if area == 0 {
-        return false;
-    }
-    (0..3).all(|i| {
-        let (a, b) = (q[i], q[(i + 1) % 3]);
-        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
-        // cross(e, c + (δ, −δ²) − a) = O + δ·(−e.y) + δ²·(−e.x)
-        let side = [cross(a, b, c), i128::from(-ey), i128::from(-ex)]
-            .into_iter()
-            .find(|&t| t != 0)
-            .unwrap_or(0);
-        side.signum() == area.signum()
-    })
-}
-
-/// The pixels of `viewport` a triangle covers, by [`triangle_covers`].
-pub fn triangle_pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {
-    viewport_pixels(viewport)
-        .filter(|&p| triangle_covers(positions, p))
-        .collect()
-}
 
 // ---------------------------------------------------------------------------
 // Polygons.
