@@ -1,8 +1,8 @@
 //! `cargo xtask view [--reference] [ARGS...]`: the course viewer
 //! (`xtask/viewer`), built with your own stages in it.
 //!
-//! The viewer draws with the stages of four topics (lines, fill, clipping,
-//! depth test). Each is checked first: a topic that does not compile is
+//! The viewer draws with the stages of five topics (lines, circles, fill,
+//! clipping, depth test). Each is checked first: a topic that does not compile is
 //! left out of the build and named in the window, and the others still
 //! show. `--reference` stages the solutions instead (for tutors). `ARGS`
 //! go to the viewer (`--screenshot FILE`, `--mesh`, `--mode`, ...; see
@@ -13,7 +13,7 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 use crate::cargo;
-use crate::grade::pipeline::{STAGES, VIEWER};
+use crate::grade::pipeline::{VIEWER, VIEWER_TOPICS};
 use crate::stage::{self, Overlay};
 use crate::topics;
 
@@ -39,7 +39,7 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
     let staged = stage::stage(root, overlay, None)?;
     let mut features = Vec::new();
     let mut not_compiling = Vec::new();
-    for (feature, topic) in STAGES {
+    for (feature, topic) in VIEWER_TOPICS {
         let Some(found) = course.iter().find(|t| t.name == topic) else {
             continue; // not in this edition
         };

@@ -74,6 +74,46 @@ pub fn line_pixels(from: Pixel, to: Pixel, window: Option<Viewport>) -> Vec<Pixe
         .collect()
 }
 
+/// The columns (of the major axis) in which the ideal line from `from` to
+/// `to` passes exactly half-way between two pixels, as those two pixels,
+/// the smaller minor coordinate first: where [`line_pixels`] takes the
+/// first, a rule rounding half away from zero may take the other, and a
+/// floating-point sum (the DDA's) decides by its rounding errors.
+#[must_use]
+pub fn line_ties(from: Pixel, to: Pixel) -> Vec<[Pixel; 2]> {
+    let (dx, dy) = (
+        i64::from(to.x) - i64::from(from.x),
+        i64::from(to.y) - i64::from(from.y),
+    );
+    let x_major = dx.abs() >= dy.abs();
+    let (dm, dn) = if x_major { (dx, dy) } else { (dy, dx) };
+    if dm == 0 {
+        return Vec::new();
+    }
+    line_pixels(from, to, None)
+        .into_iter()
+        .filter_map(|p| {
+            let (major, minor) = if x_major { (p.x, p.y) } else { (p.y, p.x) };
+            let k = i64::from(major)
+                - if x_major {
+                    i64::from(from.x)
+                } else {
+                    i64::from(from.y)
+                };
+            // The ideal minor n0 + k·dn/dm has a fractional part of ½.
+            if (2 * dn * k).rem_euclid(2 * dm.abs()) != dm.abs() {
+                return None;
+            }
+            let other = minor + 1;
+            Some(if x_major {
+                [p, Pixel::new(p.x, other)]
+            } else {
+                [p, Pixel::new(other, p.y)]
+            })
+        })
+        .collect()
+}
+
 // ---------------------------------------------------------------------------
 // Circles (topic 02).
 
@@ -209,4 +249,28 @@ pub fn triangle_pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {
     viewport_pixels(viewport)
         .filter(|&p| triangle_covers(positions, p))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ties_are_the_columns_half_way_between_two_pixels() {
+        // y = x / 2: half-way at every odd x.
+        let ties = line_ties(Pixel::new(0, 0), Pixel::new(4, 2));
+        assert_eq!(
+            ties,
+            [
+                [Pixel::new(1, 0), Pixel::new(1, 1)],
+                [Pixel::new(3, 1), Pixel::new(3, 2)]
+            ]
+        );
+        // Steep, going down and left: x = 3 − (y − 3)/4 at y = 5, 9, 13.
+        let ties = line_ties(Pixel::new(3, 3), Pixel::new(0, 15));
+        assert_eq!(ties.len(), 3);
+        assert_eq!(ties[0], [Pixel::new(2, 5), Pixel::new(3, 5)]);
+        assert!(line_ties(Pixel::new(0, 0), Pixel::new(3, 1)).is_empty());
+        assert!(line_ties(Pixel::new(2, 2), Pixel::new(2, 2)).is_empty());
+    }
 }

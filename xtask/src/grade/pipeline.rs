@@ -31,6 +31,16 @@ pub const STAGES: [(&str, &str); 4] = [
     ("buffers", "05-buffers"),
 ];
 
+/// The viewer's features and topics in `cargo xtask view`: the pipeline's,
+/// and the pixel playground's circle.
+pub const VIEWER_TOPICS: [(&str, &str); 5] = [
+    STAGES[0],
+    ("circles", "02-circles"),
+    STAGES[1],
+    STAGES[2],
+    STAGES[3],
+];
+
 /// How long one picture may take.
 const TIME_LIMIT: Duration = Duration::from_secs(30);
 

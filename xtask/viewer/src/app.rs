@@ -1,5 +1,6 @@
 //! The window: the picture on the left, the controls and your stages on
-//! the right, as in seed 004's Figure 2.
+//! the right, as in seed 004's Figure 2. Two scenes: your pipeline
+//! ([`crate::render`]) and the pixel playground ([`crate::playground`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -11,16 +12,43 @@ use egui::{Color32, RichText, TextureHandle, TextureOptions};
 use scene::Mode;
 
 use crate::meshes::MeshEntry;
-use crate::render::{Frame, Settings};
+use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
+use crate::render::{Frame, FrameWorker, Settings, frame_worker};
 use crate::stages::{Stages, Status};
-use crate::worker::Worker;
+
+/// What the window shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scene {
+    /// Your pipeline drawing a mesh.
+    Pipeline,
+    /// One primitive on a magnified grid, beside its definition.
+    Pixels,
+}
+
+/// The pixel playground's state.
+struct Playground {
+    setup: Setup,
+    worker: PlaygroundWorker,
+    asked: Option<Setup>,
+    drawing: Option<Drawing>,
+    /// How many of your pixels show (stepping through them); `None`: all.
+    steps: Option<usize>,
+    /// The handle being dragged.
+    dragging: Option<usize>,
+    /// Each primitive's handles, kept while another one is shown.
+    handles: [[glam::Vec2; 3]; 4],
+    /// The primitive whose handles `setup` holds.
+    primitive: Primitive,
+}
 
 /// The viewer's state.
 pub struct ViewerApp {
+    scene: Scene,
+    playground: Playground,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
-    worker: Worker,
+    worker: FrameWorker,
     /// The settings of the frame last asked for (a change asks again).
     asked: Option<(usize, Settings)>,
     frame: Option<Frame>,
@@ -55,10 +83,21 @@ impl ViewerApp {
     pub fn new(meshes: Vec<MeshEntry>, stages: Stages, not_compiling: Vec<String>) -> Self {
         assert!(!meshes.is_empty(), "the viewer needs a mesh");
         Self {
+            scene: Scene::Pipeline,
+            playground: Playground {
+                setup: Setup::default(),
+                worker: playground::worker(stages.clone()),
+                asked: None,
+                drawing: None,
+                steps: None,
+                dragging: None,
+                handles: Primitive::ALL.map(Primitive::first_handles),
+                primitive: Primitive::DdaLine,
+            },
             meshes,
             selected: 0,
             settings: Settings::default(),
-            worker: Worker::start(stages),
+            worker: frame_worker(stages),
             asked: None,
             frame: None,
             texture: None,
@@ -100,7 +139,11 @@ impl ViewerApp {
             self.window_screenshot = None;
             return;
         }
-        if self.texture.is_some() && !self.screenshot_asked {
+        let shown = match self.scene {
+            Scene::Pipeline => self.texture.is_some(),
+            Scene::Pixels => self.playground.drawing.is_some(),
+        };
+        if shown && !self.screenshot_asked {
             let slot = Arc::clone(&self.screenshot);
             let ctx = ui.ctx().clone();
             ui.ctx().request_screenshot(move |image| {
@@ -125,6 +168,22 @@ impl ViewerApp {
         }
     }
 
+    /// Shows `scene`.
+    pub fn set_scene(&mut self, scene: Scene) {
+        self.scene = scene;
+    }
+
+    /// The pixel playground's set-up, to change what it draws.
+    pub fn playground_mut(&mut self) -> &mut Setup {
+        &mut self.playground.setup
+    }
+
+    /// The playground's drawing on screen, if one has been drawn.
+    #[must_use]
+    pub fn drawing(&self) -> Option<&Drawing> {
+        self.playground.drawing.as_ref()
+    }
+
     /// Whether the stage list says how long each frame took.
     pub fn set_show_timing(&mut self, show: bool) {
         self.show_timing = show;
@@ -133,6 +192,7 @@ impl ViewerApp {
     /// Reports a frame as slow (an endless loop?) after `limit`.
     pub fn set_slow_after(&mut self, limit: Duration) {
         self.worker.set_slow_after(limit);
+        self.playground.worker.set_slow_after(limit);
     }
 
     /// The settings the next frame is drawn with.
@@ -150,11 +210,43 @@ impl ViewerApp {
     fn ask(&mut self) {
         let wanted = (self.selected, self.settings.clone());
         if self.asked.as_ref() != Some(&wanted) {
-            self.worker.request(
+            self.worker.request((
                 Arc::clone(&self.meshes[self.selected].mesh),
                 self.settings.clone(),
-            );
+            ));
             self.asked = Some(wanted);
+        }
+    }
+
+    /// Asks for the playground's drawing if its set-up changed.
+    fn ask_playground(&mut self) {
+        let playground = &mut self.playground;
+        let index = |p: Primitive| Primitive::ALL.iter().position(|q| *q == p).unwrap_or(0);
+        if playground.setup.primitive != playground.primitive {
+            // Each primitive keeps its own handles.
+            playground.handles[index(playground.primitive)] = playground.setup.handles;
+            playground.setup.handles = playground.handles[index(playground.setup.primitive)];
+            playground.primitive = playground.setup.primitive;
+        }
+        playground.setup.tidy();
+        if playground.asked.as_ref() != Some(&playground.setup) {
+            playground.worker.request(playground.setup.clone());
+            playground.asked = Some(playground.setup.clone());
+            // A new drawing shows all its pixels.
+            playground.steps = None;
+        }
+    }
+
+    /// Asks for the playground's drawing and waits for it, at most
+    /// `limit` (for tests); whether it arrived.
+    pub fn wait_for_drawing(&mut self, limit: Duration) -> bool {
+        self.ask_playground();
+        match self.playground.worker.wait(limit) {
+            Some(drawing) => {
+                self.playground.drawing = Some(drawing);
+                true
+            }
+            None => self.playground.worker.busy_for().is_none(),
         }
     }
 
@@ -202,6 +294,11 @@ impl ViewerApp {
 
     /// Draws the window's contents into `ui`.
     pub fn show(&mut self, ui: &mut egui::Ui) {
+        if self.scene == Scene::Pixels {
+            self.show_playground(ui);
+            self.window_screenshot(ui);
+            return;
+        }
         self.ask();
         if let Some(frame) = self.worker.poll() {
             self.frame = Some(frame);
@@ -219,7 +316,17 @@ impl ViewerApp {
         self.window_screenshot(ui);
     }
 
+    /// The scene switch at the top of the controls.
+    fn scene_switch(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.selectable_value(&mut self.scene, Scene::Pipeline, "Pipeline scene");
+            ui.selectable_value(&mut self.scene, Scene::Pixels, "Pixel playground");
+        });
+        ui.separator();
+    }
+
     fn controls(&mut self, ui: &mut egui::Ui) {
+        self.scene_switch(ui);
         ui.heading("Your pipeline");
         ui.label(
             "The mesh, transformed by the course; clipped, drawn and depth-tested by your code.",
@@ -380,6 +487,253 @@ impl ViewerApp {
             }
         }
     }
+}
+
+impl ViewerApp {
+    /// The pixel playground: its controls on the right, the grid on the
+    /// left.
+    fn show_playground(&mut self, ui: &mut egui::Ui) {
+        self.ask_playground();
+        if let Some(drawing) = self.playground.worker.poll() {
+            let count = drawing.yours.len();
+            self.playground.steps = self.playground.steps.map(|s| s.min(count));
+            self.playground.drawing = Some(drawing);
+        }
+        if self.playground.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    self.playground_controls(ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.pixel_grid(ui));
+    }
+
+    fn playground_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your pixels");
+        ui.label("Your code draws one primitive; drag its handles. Beside it, the pixels of the course's definition, which the tests compare with.");
+        ui.separator();
+        let playground = &mut self.playground;
+        egui::ComboBox::from_label("Primitive")
+            .selected_text(playground.setup.primitive.label())
+            .show_ui(ui, |ui| {
+                for primitive in Primitive::ALL {
+                    ui.selectable_value(
+                        &mut playground.setup.primitive,
+                        primitive,
+                        primitive.label(),
+                    );
+                }
+            });
+        ui.add(egui::Slider::new(&mut playground.setup.size, Setup::SIZES).text("pixels across"));
+        ui.separator();
+        ui.label("# in both, + only yours, - only expected (the tests' legend)");
+        let Some(drawing) = &playground.drawing else {
+            ui.label("drawing …");
+            return;
+        };
+        let (name, source) = drawing.stage;
+        let colour = match drawing.status {
+            Status::Ok => Color32::LIGHT_GREEN,
+            Status::Unused | Status::NotReached => Color32::GRAY,
+            Status::NotYet(_) => Color32::YELLOW,
+            Status::Missing | Status::Panicked(_) | Status::Failed(_) => Color32::LIGHT_RED,
+        };
+        ui.label(RichText::new(format!("{name}: {}", drawing.status.describe())).color(colour));
+        ui.label(RichText::new(source).small().weak());
+        ui.label(drawing.summary());
+        ui.separator();
+        let count = drawing.yours.len();
+        ui.label(format!(
+            "Step through your {count} pixels, in the order you plotted them"
+        ));
+        let mut shown = playground.steps.unwrap_or(count);
+        ui.horizontal(|ui| {
+            if ui.button("Back").clicked() {
+                shown = shown.saturating_sub(1);
+            }
+            if ui.button("Next").clicked() {
+                shown = (shown + 1).min(count);
+            }
+            if ui.button("All").clicked() {
+                shown = count;
+            }
+        });
+        ui.add(egui::Slider::new(&mut shown, 0..=count).text("pixels shown"));
+        playground.steps = (shown < count).then_some(shown);
+        if let Some(step) = shown.checked_sub(1).and_then(|k| drawing.yours.get(k)) {
+            ui.label(RichText::new(format!("pixel {shown} of {count}")).strong());
+            ui.label(&step.note);
+        }
+    }
+
+    fn pixel_grid(&mut self, ui: &mut egui::Ui) {
+        if let Some(busy) = self.playground.worker.slow_for() {
+            ui.label(
+                RichText::new(format!(
+                    "Your code has been drawing for {:.1} s: an endless loop? \
+                     The window stays usable; fix the loop and restart the viewer.",
+                    busy.as_secs_f64()
+                ))
+                .color(Color32::YELLOW),
+            );
+        }
+        let playground = &mut self.playground;
+        let n = playground.setup.size;
+        let available = ui.available_size();
+        let cell = (available.x.min(available.y) / n as f32).floor().max(4.0);
+        let (response, painter) = ui.allocate_painter(
+            egui::vec2(cell * n as f32, cell * n as f32),
+            egui::Sense::drag(),
+        );
+        let origin = response.rect.left_top();
+        let top = n as f32 - 0.5;
+        let to_screen = |p: glam::Vec2| {
+            egui::pos2(origin.x + (p.x + 0.5) * cell, origin.y + (top - p.y) * cell)
+        };
+        let to_grid = |s: egui::Pos2| {
+            glam::Vec2::new((s.x - origin.x) / cell - 0.5, top - (s.y - origin.y) / cell)
+        };
+        let setup = &playground.setup;
+        let handles = setup.primitive.handles();
+        if response.drag_started()
+            && let Some(at) = response.interact_pointer_pos()
+        {
+            let at = to_grid(at);
+            playground.dragging = (0..handles)
+                .map(|k| (k, setup.handles[k].distance(at)))
+                .filter(|(_, d)| *d < 1.0)
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(k, _)| k);
+        }
+        if let (Some(k), Some(at)) = (playground.dragging, response.interact_pointer_pos())
+            && response.dragged()
+        {
+            playground.setup.move_handle(k, to_grid(at));
+        }
+        if response.drag_stopped() {
+            playground.dragging = None;
+        }
+        let setup = &playground.setup;
+        let painter = &painter;
+        let font = egui::FontId::monospace(cell * 0.6);
+        if let Some(drawing) = &playground.drawing {
+            let shown = playground.steps.unwrap_or(drawing.yours.len());
+            let colours: std::collections::HashMap<canvas::Pixel, Color32> = drawing
+                .yours
+                .iter()
+                .take(shown)
+                .filter_map(|s| Some((s.pixel, s.colour.map(colour32)?)))
+                .collect();
+            for (p, how) in drawing.cells(shown) {
+                let rect =
+                    egui::Rect::from_center_size(to_screen(p.centre()), egui::vec2(cell, cell));
+                let ink = colours.get(&p).copied().unwrap_or(INK);
+                match how {
+                    Cell::Both => {
+                        painter.rect_filled(rect.shrink(1.0), 0.0, ink);
+                    }
+                    Cell::OnlyYours => {
+                        painter.rect_filled(rect.shrink(1.0), 0.0, ink);
+                        painter.rect_stroke(
+                            rect.shrink(1.5),
+                            0.0,
+                            egui::Stroke::new(3.0, ONLY_YOURS),
+                            egui::StrokeKind::Inside,
+                        );
+                        painter.text(
+                            rect.center(),
+                            egui::Align2::CENTER_CENTER,
+                            "+",
+                            font.clone(),
+                            ONLY_YOURS,
+                        );
+                    }
+                    Cell::OnlyExpected => {
+                        painter.rect_stroke(
+                            rect.shrink(1.5),
+                            0.0,
+                            egui::Stroke::new(2.0, ONLY_EXPECTED),
+                            egui::StrokeKind::Inside,
+                        );
+                        painter.text(
+                            rect.center(),
+                            egui::Align2::CENTER_CENTER,
+                            "-",
+                            font.clone(),
+                            ONLY_EXPECTED,
+                        );
+                    }
+                    Cell::Empty => {
+                        painter.rect_filled(rect.shrink(1.0), 0.0, EMPTY);
+                    }
+                }
+            }
+            if let Some(step) = shown.checked_sub(1).and_then(|k| drawing.yours.get(k))
+                && shown < drawing.yours.len()
+            {
+                let rect = egui::Rect::from_center_size(
+                    to_screen(step.pixel.centre()),
+                    egui::vec2(cell, cell),
+                );
+                painter.rect_stroke(
+                    rect,
+                    0.0,
+                    egui::Stroke::new(3.0, Color32::YELLOW),
+                    egui::StrokeKind::Outside,
+                );
+            }
+        }
+        // The ideal primitive over the pixels.
+        let ideal = egui::Stroke::new(2.0, IDEAL);
+        let h = setup.handles;
+        match setup.primitive {
+            Primitive::DdaLine | Primitive::MidpointLine => {
+                painter.line_segment([to_screen(h[0]), to_screen(h[1])], ideal);
+            }
+            Primitive::Circle => {
+                painter.circle_stroke(to_screen(h[0]), setup.radius() as f32 * cell, ideal);
+            }
+            Primitive::Triangle => {
+                let points: Vec<egui::Pos2> = h.iter().map(|&p| to_screen(p)).collect();
+                painter.add(egui::Shape::closed_line(points, ideal));
+            }
+        }
+        for (k, handle) in h.iter().take(handles).enumerate() {
+            let centre = to_screen(*handle);
+            painter.circle_filled(centre, (cell * 0.3).max(4.0), HANDLE);
+            painter.text(
+                centre,
+                egui::Align2::CENTER_CENTER,
+                k.to_string(),
+                egui::FontId::proportional((cell * 0.35).max(8.0)),
+                Color32::BLACK,
+            );
+        }
+    }
+}
+
+/// A pixel you plotted (where your code gives it no colour).
+const INK: Color32 = Color32::from_rgb(200, 200, 210);
+/// A pixel of the grid nothing covers.
+const EMPTY: Color32 = Color32::from_rgb(38, 38, 44);
+/// The mark of a pixel only you plotted.
+const ONLY_YOURS: Color32 = Color32::from_rgb(255, 60, 60);
+/// The mark of a pixel only the definition has.
+const ONLY_EXPECTED: Color32 = Color32::from_rgb(90, 170, 255);
+/// The ideal primitive.
+const IDEAL: Color32 = Color32::from_rgb(255, 220, 90);
+/// The handles.
+const HANDLE: Color32 = Color32::from_rgb(255, 255, 255);
+
+/// A canvas colour on screen.
+fn colour32(c: canvas::Rgba) -> Color32 {
+    let [r, g, b, _] = c.to_rgba8();
+    Color32::from_rgb(r, g, b)
 }
 
 /// A `w × h` RGBA image, top row first, as a canvas (for saving as PNG).

@@ -17,11 +17,12 @@
 #[cfg(feature = "window")]
 pub mod app;
 pub mod meshes;
+pub mod playground;
 pub mod render;
 pub mod stages;
 pub mod worker;
 
 #[cfg(feature = "window")]
-pub use app::ViewerApp;
+pub use app::{Scene, ViewerApp};
 pub use render::{Frame, Settings, render};
 pub use stages::{Stages, Status};

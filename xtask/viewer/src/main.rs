@@ -9,7 +9,6 @@ use clap::{Parser, ValueEnum};
 use course_viewer::meshes::{self, MeshEntry, shipped_meshes};
 use course_viewer::render::Settings;
 use course_viewer::stages::{self, Stages};
-use course_viewer::worker::Worker;
 
 /// How polygons are drawn.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -51,6 +50,10 @@ struct Args {
     /// How long a picture may take before it is given up, in seconds.
     #[arg(long, default_value_t = 30.0)]
     time_limit: f64,
+    /// Open the window on the pixel playground (your lines, circle and
+    /// triangle on a magnified grid, beside their definitions).
+    #[arg(long)]
+    pixels: bool,
     /// Topics left out of this build because they do not compile (set by
     /// `cargo xtask view`).
     #[arg(long = "not-compiling", value_name = "TOPIC")]
@@ -97,14 +100,15 @@ fn main() -> Result<()> {
             settings,
             args.not_compiling,
             args.window_screenshot,
+            args.pixels,
         ),
     }
 }
 
 /// Draws one picture with your stages and writes it to `path`.
 fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path) -> Result<()> {
-    let mut worker = Worker::start(Stages::yours());
-    worker.request(std::sync::Arc::clone(&mesh.mesh), settings);
+    let mut worker = course_viewer::render::frame_worker(Stages::yours());
+    worker.request((std::sync::Arc::clone(&mesh.mesh), settings));
     let Some(frame) = worker.wait(limit) else {
         bail!(
             "your stages did not finish the picture within {:.0} s (an endless loop?)",
@@ -138,6 +142,7 @@ fn window(
     settings: Settings,
     not_compiling: Vec<String>,
     window_screenshot: Option<PathBuf>,
+    pixels: bool,
 ) -> Result<()> {
     use eframe::egui;
     let display = ["DISPLAY", "WAYLAND_DISPLAY"]
@@ -154,6 +159,9 @@ fn window(
     let mut app = course_viewer::ViewerApp::new(meshes, Stages::yours(), not_compiling);
     app.select_mesh(&name);
     *app.settings_mut() = settings;
+    if pixels {
+        app.set_scene(course_viewer::Scene::Pixels);
+    }
     if let Some(path) = window_screenshot {
         app.screenshot_window_to(path);
     }
@@ -175,6 +183,7 @@ fn window(
     _: Settings,
     _: Vec<String>,
     _: Option<PathBuf>,
+    _: bool,
 ) -> Result<()> {
     bail!("this viewer was built without its window (feature `window`): use --screenshot FILE")
 }

@@ -17,6 +17,18 @@ use glam::camera::rh::view;
 use scene::{ClipVertex, Mesh, Mode, Pipeline};
 
 use crate::stages::{Stage, Stages, Status, guarded};
+use crate::worker::Worker;
+
+/// The worker that draws frames of the pipeline scene.
+pub type FrameWorker = Worker<(std::sync::Arc<Mesh>, Settings), Frame>;
+
+/// Starts a worker that draws frames with `stages`.
+#[must_use]
+pub fn frame_worker(stages: Stages) -> FrameWorker {
+    Worker::start(move |(mesh, settings): (std::sync::Arc<Mesh>, Settings)| {
+        render(&mesh, &settings, &stages)
+    })
+}
 
 /// What the pipeline scene draws, and how.
 #[derive(Clone, Debug, PartialEq)]
@@ -229,7 +241,7 @@ pub fn render(mesh: &Mesh, settings: &Settings, stages: &Stages) -> Frame {
                         let mut fragments = Vec::new();
                         let triangle = [first, pair[0], pair[1]];
                         guarded(&mut fill.status, || {
-                            run(triangle, viewport, &mut |f| fragments.push(f));
+                            run(triangle, viewport, &mut |f, _| fragments.push(f));
                         });
                         for f in fragments {
                             write(&mut canvas, f);

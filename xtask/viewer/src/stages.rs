@@ -9,19 +9,28 @@
 //! | fill | `03-fill`: `edge_function::fill_triangle` |
 //! | depth test | `05-buffers`: `zbuffer::depth_test` with OpenGL's defaults (`LESS`, writes on) |
 //!
+//! and, for the pixel playground, `01-lines`' `midpoint::midpoint_line`
+//! and `02-circles`' `midpoint_circle::midpoint_circle`.
+//!
 //! A topic that does not compile is left out of the build (`cargo xtask
 //! view` checks each one first) and its stage is shown as missing.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::Arc;
 
-use canvas::{Canvas, Fragment, Vertex, Viewport};
+use canvas::{Canvas, Fragment, Pixel, Vertex, Viewport};
 use scene::ClipVertex;
 
 /// Draws a line: `(from, to, plot)`.
 pub type LineStage = dyn Fn(&Vertex, &Vertex, &mut dyn FnMut(Fragment)) + Send + Sync;
-/// Fills a triangle: `(vertices, viewport, plot)`.
-pub type FillStage = dyn Fn([Vertex; 3], Viewport, &mut dyn FnMut(Fragment)) + Send + Sync;
+/// Fills a triangle: `(vertices, viewport, plot)`; `plot` also gets the
+/// pixel's exact edge functions (03's `EdgeWeights`).
+pub type FillStage =
+    dyn Fn([Vertex; 3], Viewport, &mut dyn FnMut(Fragment, [i128; 3])) + Send + Sync;
+/// Draws a line between two pixels: `(from, to, plot)`.
+pub type PixelLineStage = dyn Fn(Pixel, Pixel, &mut dyn FnMut(Pixel)) + Send + Sync;
+/// Draws a circle: `(centre, radius, plot)`.
+pub type CircleStage = dyn Fn(Pixel, i32, &mut dyn FnMut(Pixel)) + Send + Sync;
 /// Clips a polygon in clip space against the view volume.
 pub type ClipStage = dyn Fn(&[ClipVertex]) -> Result<Vec<ClipVertex>, String> + Send + Sync;
 /// Runs a fragment through the depth test; whether it was written.
@@ -47,7 +56,8 @@ impl<F: ?Sized> Clone for Stage<F> {
     }
 }
 
-/// The four stages of the pipeline scene.
+/// The four stages of the pipeline scene, and those the pixel playground
+/// draws with besides.
 #[derive(Clone)]
 pub struct Stages {
     /// Sutherland–Hodgman clipping.
@@ -58,6 +68,10 @@ pub struct Stages {
     pub fill: Stage<FillStage>,
     /// The z-buffer's depth test.
     pub depth: Stage<DepthStage>,
+    /// The midpoint line (the playground).
+    pub midpoint: Stage<PixelLineStage>,
+    /// The midpoint circle (the playground).
+    pub circle: Stage<CircleStage>,
 }
 
 /// The four stages without code: what a build without any topic shows.
@@ -82,6 +96,16 @@ impl Default for Stages {
             depth: Stage {
                 name: "depth test",
                 source: "05-buffers · zbuffer::depth_test",
+                run: None,
+            },
+            midpoint: Stage {
+                name: "midpoint line",
+                source: "01-lines · midpoint::midpoint_line",
+                run: None,
+            },
+            circle: Stage {
+                name: "midpoint circle",
+                source: "02-circles · midpoint_circle::midpoint_circle",
                 run: None,
             },
         }
@@ -109,12 +133,27 @@ impl Stages {
                     lines::dda::dda_line(from, to, plot);
                 },
             ));
+            stages.midpoint.run = Some(Arc::new(
+                |from: Pixel, to: Pixel, plot: &mut dyn FnMut(Pixel)| {
+                    lines::midpoint::midpoint_line(from, to, plot);
+                },
+            ));
+        }
+        #[cfg(feature = "circles")]
+        {
+            stages.circle.run = Some(Arc::new(
+                |centre: Pixel, radius: i32, plot: &mut dyn FnMut(Pixel)| {
+                    circles::midpoint_circle::midpoint_circle(centre, radius, plot);
+                },
+            ));
         }
         #[cfg(feature = "fill")]
         {
             stages.fill.run = Some(Arc::new(
-                |vertices: [Vertex; 3], viewport: Viewport, plot: &mut dyn FnMut(Fragment)| {
-                    fill::edge_function::fill_triangle(vertices, viewport, |f, _| plot(f));
+                |vertices: [Vertex; 3],
+                 viewport: Viewport,
+                 plot: &mut dyn FnMut(Fragment, [i128; 3])| {
+                    fill::edge_function::fill_triangle(vertices, viewport, plot);
                 },
             ));
         }

@@ -116,3 +116,80 @@ fn a_looping_stage_leaves_the_window_usable() {
     release.store(true, Ordering::Relaxed);
     settle(&mut harness);
 }
+
+/// Waits for the playground's drawing and lets the window show it.
+fn settle_pixels(harness: &mut Harness<'static, ViewerApp>) {
+    assert!(
+        harness
+            .state_mut()
+            .wait_for_drawing(Duration::from_secs(60)),
+        "no drawing within a minute"
+    );
+    harness.run_steps(3);
+}
+
+#[test]
+fn the_pixel_playground_compares_your_pixels_with_the_definition() {
+    let mut harness = harness(Stages::yours());
+    harness.get_by_label("Pixel playground").click();
+    harness.run_steps(2);
+    settle_pixels(&mut harness);
+    harness.get_by_label("lines: ok");
+    let line = harness.state().drawing().unwrap().clone();
+    harness.get_by_label(&line.summary());
+    assert!(line.summary().starts_with("all "), "{}", line.summary());
+    harness.snapshot("viewer_pixels_dda");
+
+    // Stepping back shows one pixel less and says what decided the last.
+    harness.get_by_label("Back").click();
+    harness.run_steps(2);
+    let shown = line.yours.len() - 1;
+    harness.get_by_label(&format!("pixel {shown} of {}", line.yours.len()));
+    harness.get_by_label(&line.yours[shown - 1].note);
+
+    // Another primitive: the triangle, drawn by the fill stage.
+    harness.get_by_label("Primitive").click();
+    harness.run_steps(2);
+    harness.get_by_label("Edge-function triangle (03)").click();
+    harness.run_steps(2);
+    settle_pixels(&mut harness);
+    harness.get_by_label("fill: ok");
+    let triangle = harness.state().drawing().unwrap();
+    assert!(
+        triangle.summary().starts_with("all "),
+        "{}",
+        triangle.summary()
+    );
+    assert_ne!(
+        triangle.expected, line.expected,
+        "the picture follows the control"
+    );
+    harness.snapshot("viewer_pixels_triangle");
+}
+
+#[test]
+fn a_wrong_circle_is_marked_pixel_by_pixel() {
+    let mut stages = Stages::yours();
+    // One pixel too far out, everywhere.
+    stages.circle.run = Some(Arc::new(
+        |centre: canvas::Pixel, radius: i32, plot: &mut dyn FnMut(canvas::Pixel)| {
+            let reference = Stages::yours().circle.run.unwrap();
+            reference(centre, radius + 1, plot);
+        },
+    ));
+    let mut harness = harness(stages);
+    harness.state_mut().set_scene(course_viewer::Scene::Pixels);
+    harness.state_mut().playground_mut().primitive = course_viewer::playground::Primitive::Circle;
+    settle_pixels(&mut harness);
+    let summary = harness.state().drawing().unwrap().summary();
+    assert!(summary.contains("only yours (+)"), "{summary}");
+    harness.get_by_label(&summary);
+    harness.snapshot("viewer_pixels_wrong_circle");
+    // The last pixel's note: the circle's implicit function there.
+    harness.get_by_label("Back").click();
+    harness.run_steps(2);
+    let drawing = harness.state().drawing().unwrap();
+    let note = drawing.yours[drawing.yours.len() - 2].note.clone();
+    assert!(note.contains("x² + y² − R² = "), "{note}");
+    harness.get_by_label(&note);
+}

@@ -15,24 +15,18 @@ fn xvfb_run() -> Option<PathBuf> {
         .find(|p| p.is_file())
 }
 
-#[test]
-fn the_window_opens_under_xvfb_and_shows_the_picture() {
-    let Some(xvfb_run) = xvfb_run() else {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "xvfb-run is missing, and CI must test the real window (`cargo xtask test` installs the Debian package xvfb)"
-        );
-        eprintln!("skipped: no xvfb-run here (Debian: apt-get install xvfb xauth)");
-        return;
-    };
+/// Opens the viewer under `xvfb_run` with `args`, lets it save a
+/// screenshot of its window and close, and returns the screenshot.
+fn window_screenshot(xvfb_run: &std::path::Path, name: &str, args: &[&str]) -> canvas::Canvas {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("xvfb");
     std::fs::create_dir_all(&dir).unwrap();
-    let shot = dir.join("window.png");
+    let shot = dir.join(name);
     let _ = std::fs::remove_file(&shot);
     let mut child = Command::new(xvfb_run)
         .args(["--auto-servernum", "--server-args=-screen 0 1280x800x24"])
         .arg(env!("CARGO_BIN_EXE_course-viewer"))
-        .args(["--mesh", "star.ply", "--size", "200", "--window-screenshot"])
+        .args(args)
+        .arg("--window-screenshot")
         .arg(&shot)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -63,6 +57,24 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
         picture.width(),
         picture.height()
     );
+    picture
+}
+
+#[test]
+fn the_window_opens_under_xvfb_and_shows_the_picture() {
+    let Some(xvfb_run) = xvfb_run() else {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "xvfb-run is missing, and CI must test the real window (`cargo xtask test` installs the Debian package xvfb)"
+        );
+        eprintln!("skipped: no xvfb-run here (Debian: apt-get install xvfb xauth)");
+        return;
+    };
+    let picture = window_screenshot(
+        &xvfb_run,
+        "window.png",
+        &["--mesh", "star.ply", "--size", "200"],
+    );
     // The star's top vertex is red: the picture is in the window.
     let reds = picture
         .enumerate()
@@ -71,5 +83,15 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
     assert!(
         reds > 20,
         "{reds} red pixels: the star is not in the window"
+    );
+    // The pixel playground: the DDA line's orange first pixel.
+    let picture = window_screenshot(&xvfb_run, "pixels.png", &["--pixels"]);
+    let orange = picture
+        .enumerate()
+        .filter(|(_, c)| c.r > 0.9 && (0.35..0.55).contains(&c.g) && c.b < 0.3)
+        .count();
+    assert!(
+        orange > 100,
+        "{orange} orange pixels: the playground's line is not in the window"
     );
 }
