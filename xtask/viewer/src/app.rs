@@ -39,6 +39,9 @@ struct Playground {
     handles: [[glam::Vec2; 3]; 4],
     /// The primitive whose handles `setup` holds.
     primitive: Primitive,
+    /// Where the grid was last drawn: its top-left corner and the size of
+    /// a cell on screen.
+    grid: Option<(egui::Pos2, f32)>,
 }
 
 /// The viewer's state.
@@ -93,6 +96,7 @@ impl ViewerApp {
                 dragging: None,
                 handles: Primitive::ALL.map(Primitive::first_handles),
                 primitive: Primitive::DdaLine,
+                grid: None,
             },
             meshes,
             selected: 0,
@@ -176,6 +180,19 @@ impl ViewerApp {
     /// The pixel playground's set-up, to change what it draws.
     pub fn playground_mut(&mut self) -> &mut Setup {
         &mut self.playground.setup
+    }
+
+    /// Where handle `k` of the playground shows on screen, once the grid
+    /// has been drawn (for tests that drag it).
+    #[must_use]
+    pub fn handle_on_screen(&self, k: usize) -> Option<egui::Pos2> {
+        let (origin, cell) = self.playground.grid?;
+        let p = *self.playground.setup.handles.get(k)?;
+        let top = self.playground.setup.size as f32 - 0.5;
+        Some(egui::pos2(
+            origin.x + (p.x + 0.5) * cell,
+            origin.y + (top - p.y) * cell,
+        ))
     }
 
     /// The playground's drawing on screen, if one has been drawn.
@@ -591,6 +608,7 @@ impl ViewerApp {
             egui::Sense::drag(),
         );
         let origin = response.rect.left_top();
+        playground.grid = Some((origin, cell));
         let top = n as f32 - 0.5;
         let to_screen = |p: glam::Vec2| {
             egui::pos2(origin.x + (p.x + 0.5) * cell, origin.y + (top - p.y) * cell)

@@ -193,3 +193,52 @@ fn a_wrong_circle_is_marked_pixel_by_pixel() {
     assert!(note.contains("x² + y² − R² = "), "{note}");
     harness.get_by_label(&note);
 }
+
+#[test]
+fn dragging_a_handle_moves_the_line_and_redraws_it() {
+    let mut harness = harness(Stages::yours());
+    harness.state_mut().set_scene(course_viewer::Scene::Pixels);
+    settle_pixels(&mut harness);
+    let before = harness.state().drawing().unwrap().clone();
+    let from = harness
+        .state()
+        .handle_on_screen(1)
+        .expect("the grid is drawn");
+    let cell = harness.state().handle_on_screen(0).unwrap().distance(from)
+        / before.setup.handles[0].distance(before.setup.handles[1]);
+    // Two cells right and one up: pixel (13, 8) to (15, 9).
+    let to = from + egui::vec2(2.0 * cell, -cell);
+    let input = harness.input_mut();
+    input.events.push(egui::Event::PointerMoved(from));
+    input.events.push(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    harness.run_steps(2);
+    for t in [0.25, 0.5, 0.75, 1.0] {
+        harness
+            .input_mut()
+            .events
+            .push(egui::Event::PointerMoved(from + (to - from) * t));
+        harness.run_steps(1);
+    }
+    harness.input_mut().events.push(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    harness.run_steps(2);
+    settle_pixels(&mut harness);
+    let after = harness.state().drawing().unwrap();
+    assert_eq!(after.setup.handles[1], canvas::Vec2::new(15.0, 9.0));
+    assert_eq!(
+        after.setup.handles[0], before.setup.handles[0],
+        "only the dragged handle moves"
+    );
+    assert!(after.expected.contains(&canvas::Pixel::new(15, 9)));
+    assert!(after.summary().starts_with("all "), "{}", after.summary());
+    assert_ne!(after.expected, before.expected);
+}
