@@ -8,6 +8,7 @@ mod cargo;
 mod classroom;
 mod grade;
 mod gradescope;
+mod hint;
 mod release;
 mod setup;
 mod stage;
@@ -77,6 +78,17 @@ enum Command {
         /// result per task.
         #[arg(long, value_name = "OWNER/REPO[@TAG]")]
         classroom: Option<classroom::CourseRepo>,
+    },
+    /// Show the hints of a task, one more each time: the goal first, the exact rule last.
+    Hint {
+        /// The task: its id (`dda`), or TOPIC/ID (`lines/dda`, `01-lines/dda`).
+        task: String,
+        /// Show every hint at once.
+        #[arg(long)]
+        all: bool,
+        /// Forget the hints seen of this task.
+        #[arg(long)]
+        reset: bool,
     },
     /// Write the Gradescope autograder to DIR: the student edition as the official tests,
     /// setup.sh, run_autograder, and autograder.zip to upload.
@@ -174,6 +186,7 @@ fn main() -> ExitCode {
         Command::Bench { args } => bench::run(&root, &args),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
+        Command::Hint { task, all, reset } => hint::run(&root, &task, all, reset),
         Command::Gradescope { dir, topics } => gradescope::run(&root, &dir, &topics),
         Command::Release {
             dir,

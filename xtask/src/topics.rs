@@ -14,6 +14,7 @@
 //! title = "DDA with colour and depth interpolation"
 //! points = 3
 //! bonus = false              # optional: bonus points do not count in the maximum
+//! hints = ["the goal", "the key step", "the exact rule"]   # optional: `cargo xtask hint dda`
 //! +++
 //! # Topic 01: Lines
 //! ```
@@ -86,6 +87,10 @@ pub struct Task {
     /// Bonus points count in the score but not in the maximum.
     #[serde(default)]
     pub bonus: bool,
+    /// Hints, shown one more each time by `cargo xtask hint`: the first
+    /// restates the goal, the last points at the exact rule.
+    #[serde(default)]
+    pub hints: Vec<String>,
 }
 
 impl TaskSheet {
@@ -328,6 +333,30 @@ mod tests {
         }
         for name in ["02", "line", "", "01-line"] {
             assert!(!topic.matches(name), "{name}");
+        }
+    }
+
+    #[test]
+    fn every_task_of_the_course_has_hints_from_the_goal_to_the_rule() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        for topic in discover(&root).unwrap() {
+            for task in &topic.sheet.tasks {
+                assert!(
+                    (2..=4).contains(&task.hints.len()),
+                    "{}/{} has {} hints in its sheet (2 to 4: the goal first, the exact rule last)",
+                    topic.name,
+                    task.id,
+                    task.hints.len()
+                );
+                for hint in &task.hints {
+                    assert!(
+                        hint.len() > 20 && !hint.contains("```"),
+                        "{}/{}: a hint is a sentence or two, not code: {hint:?}",
+                        topic.name,
+                        task.id
+                    );
+                }
+            }
         }
     }
 }

@@ -1151,3 +1151,73 @@ fn the_gradescope_autograder_grades_correct_faulty_and_tampered_submissions() {
         "{stray:#}"
     );
 }
+
+#[test]
+fn hints_come_one_more_each_time_and_failing_tasks_point_at_them() {
+    let root = fixture("tiny", "hints");
+    let hint = |args: &[&str]| {
+        let mut all = vec!["hint"];
+        all.extend(args);
+        let output = xtask(&root, &all);
+        (
+            output.status.success(),
+            stdout(&output),
+            String::from_utf8_lossy(&output.stderr).into_owned(),
+        )
+    };
+    let (ok, first, _) = hint(&["negate"]);
+    assert!(ok);
+    assert!(
+        first.contains("01-tiny/negate: Negation (hint 1 of 2)"),
+        "{first}"
+    );
+    assert!(
+        first.contains("1. Return the number with its sign flipped.  (new)"),
+        "{first}"
+    );
+    assert!(!first.contains("Zero stays zero"), "{first}");
+    let (_, second, _) = hint(&["tiny/negate"]);
+    assert!(second.contains("(hint 2 of 2)"), "{second}");
+    assert!(
+        second.contains("1. Return the number with its sign flipped.\n"),
+        "{second}"
+    );
+    assert!(second.contains("2. Zero stays zero"), "{second}");
+    assert!(second.contains("that is every hint"), "{second}");
+    let (_, again, _) = hint(&["negate"]);
+    assert!(
+        again.contains("(hint 2 of 2)") && !again.contains("(new)"),
+        "{again}"
+    );
+    let (ok, _, _) = hint(&["negate", "--reset"]);
+    assert!(ok);
+    let (_, restarted, _) = hint(&["negate"]);
+    assert!(restarted.contains("(hint 1 of 2)"), "{restarted}");
+    let (_, none, _) = hint(&["double"]);
+    assert!(none.contains("has no hints in its sheet"), "{none}");
+    let (ok, _, error) = hint(&["triple"]);
+    assert!(
+        !ok && error.contains("no task `triple`; the tasks are: 01-tiny/double, 01-tiny/negate"),
+        "{error}"
+    );
+    // The untouched stub fails: the grade names the hint command.
+    let (output, report, _) = grade(&root, "grade", &[]);
+    assert!(
+        stdout(&output)
+            .contains("hint:    cargo xtask hint 01-tiny/negate  (2 hints, one more each time)"),
+        "{}",
+        stdout(&output)
+    );
+    assert_eq!(
+        task(&report, "01-tiny", "negate")["hints"]
+            .as_array()
+            .unwrap()
+            .len(),
+        2
+    );
+    let html = fs::read_to_string(root.join("target/grade/report.html")).unwrap();
+    assert!(
+        html.contains("<details class=\"hints\"><summary>Hints (2)"),
+        "{html}"
+    );
+}

@@ -192,6 +192,15 @@ pub fn task_summary(topic: &TopicReport, task: &TaskReport) -> String {
         if others > 0 {
             let _ = write!(text, "\n\n{others} other test(s) of this task failed too");
         }
+        if !task.hints.is_empty() {
+            let _ = write!(
+                text,
+                "\nhints: `cargo xtask hint {}/{}` ({} of them, one more each time)",
+                topic.name,
+                task.id,
+                task.hints.len()
+            );
+        }
     }
     text
 }

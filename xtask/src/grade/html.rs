@@ -185,6 +185,23 @@ fn task_section(html: &mut String, topic: &str, task: &TaskReport) {
                 task.failed - 1
             );
         }
+        if !task.hints.is_empty() {
+            let _ = writeln!(
+                html,
+                "<details class=\"hints\"><summary>Hints ({}): open one at a time, or <code>cargo xtask hint {}/{}</code></summary><ol>",
+                task.hints.len(),
+                escape(topic),
+                escape(&task.id)
+            );
+            for hint in &task.hints {
+                let _ = writeln!(
+                    html,
+                    "<li><details><summary>next hint</summary>{}</details></li>",
+                    escape(hint)
+                );
+            }
+            let _ = writeln!(html, "</ol></details>");
+        }
     }
     for test in pictures {
         let Some(dir) = &test.images_dir else {

@@ -597,6 +597,7 @@ fn topic_report(
             } else {
                 error.clone()
             },
+            hints: task.hints.clone(),
             passed: 0,
             failed: 0,
             ignored: 0,

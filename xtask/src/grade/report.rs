@@ -136,6 +136,8 @@ pub struct TaskReport {
     pub status: TaskStatus,
     /// Why it could not be graded, for [`TaskStatus::Error`].
     pub error: Option<String>,
+    /// The sheet's hints (`cargo xtask hint`).
+    pub hints: Vec<String>,
     /// Tests that passed.
     pub passed: usize,
     /// Tests that failed.
@@ -269,6 +271,7 @@ mod tests {
             score: 0.0,
             status: TaskStatus::Fail,
             error: None,
+            hints: Vec::new(),
             passed: 1,
             failed: 4,
             ignored: 0,

@@ -353,6 +353,14 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
     if let Some(dir) = &test.images_dir {
         let _ = writeln!(text, "  images:  {}", out.join(dir).display());
     }
+    if !task.hints.is_empty() {
+        let _ = writeln!(
+            text,
+            "  hint:    cargo xtask hint {topic}/{}  ({} hints, one more each time)",
+            task.id,
+            task.hints.len()
+        );
+    }
     let others: Vec<&str> = task
         .tests
         .iter()
