@@ -74,7 +74,7 @@ pub struct Block {
 /// size: `i64` lanes suffice, although the corners are computed in `i128`
 /// (far from the triangle, `O` can reach 2⁶⁶).
 ///
-/// **Lanes.** Within a block row the eight values `t + k·A` (`k = 0..8`)
+/// **Lanes.** Within a block row the eight values `t + k·A·2⁸` (`k = 0..8`)
 /// of each partial edge are computed and compared as one array — no
 /// branch per pixel, the shape compilers vectorise.
 ///

@@ -186,7 +186,7 @@ fn triangulated_grid_covers_every_pixel_once() {
     assert!(twice.is_empty(), "pixels covered more than once: {twice:?}");
 }
 
-/// A filled star of twelve triangles around a white centre, colours and
+/// A filled star of 24 triangles around a white centre, colours and
 /// depths interpolated (the sheet's fill figure, as triangles).
 fn star() -> Canvas {
     let mut canvas = Canvas::new(129, 129);

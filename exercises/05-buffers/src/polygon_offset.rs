@@ -5,7 +5,8 @@
 //! Convention (see `canvas`): pixel centres at integers, y up; depth 0 is
 //! nearest. Fills come from the given [`crate::raster::fill_triangle`]
 //! (top-left rule), outlines from the given [`crate::raster::draw_line`]
-//! (DDA, both endpoints); the depth test is `LESS` with depth writes.
+//! (the one-pixel band around the segment, both ends included); the depth
+//! test is `LESS` with depth writes.
 //!
 //! **Stitching.** A polygon drawn filled and then again as an outline puts
 //! two fragments on each edge pixel with (nearly) the same depth: the

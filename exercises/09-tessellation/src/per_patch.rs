@@ -32,7 +32,7 @@
 //! ```
 //!
 //! A patch uses the same bound per direction, with `M` the largest second
-//! difference of its control rows (for `u`) or columns (for `v`); this
+//! difference of its control columns (for `u`) or rows (for `v`); this
 //! ignores the twist term `S_uv`, an estimate rather than a guarantee. The
 //! seed leaves the estimate open ("depends on the viewpoint and the shape");
 //! a screen-size estimate would use projected control points instead.

@@ -1,7 +1,7 @@
 //! Bézier patches as the GPU reads them (seed 000 §2.4-2.5: tensor-product
 //! Bézier surfaces; seed 001 §4.1: cubic Bézier triangles, equation 4.1):
 //! their control points, their layout and the vertex the evaluation pass
-//! writes. Evaluating them is task 2, in WGSL; the tests compare with the
+//! writes. Evaluating them is task 3, in WGSL; the tests compare with the
 //! definitions evaluated in `f64` (`testkit::oracles`).
 //!
 //! # Bicubic patch

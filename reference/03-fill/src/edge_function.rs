@@ -80,8 +80,9 @@ pub fn snap(v: f32) -> Option<i64> {
 /// vertices' order as given (before the winding fix).
 ///
 /// **Work.** The bounding box of the snapped vertices, clipped to
-/// `viewport`; within a row `O_i` grows by `A_i` per pixel, within a column
-/// by `B_i` (all integer arithmetic).
+/// `viewport`; within a row `O_i` grows by `A_i · 2⁸` per pixel (a pixel
+/// is 2⁸ snapped units: `A_i` alone moves 1/256 pixel), within a column by
+/// `B_i · 2⁸` (all integer arithmetic).
 ///
 /// A triangle of zero area (after snapping), or with a position that is
 /// NaN, infinite or beyond ±[`MAX_COORD`], plots nothing.
