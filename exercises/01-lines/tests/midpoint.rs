@@ -14,10 +14,10 @@ fn midpoint(from: Pixel, to: Pixel) -> Vec<Pixel> {
 
 #[testkit::test]
 fn first_octant_line_matches_the_grid() {
-    // (0,0) -> (8,3): slope 3/8, no ties.
+    // (0,0) -> (8,3): slope 3/8, one tie.
     //   3 |.......##
-    //   2 |....###..
-    //   1 |..##.....    (x = 1: y = 0.375 -> 0; x = 4: 1.5 is a tie -> 1)
+    //   2 |.....##..
+    //   1 |..###....    (x = 1: y = 0.375 -> 0; x = 4: 1.5 is a tie -> 1)
     //   0 |##.......
     let expected = [
         (0, 0),
