@@ -647,6 +647,22 @@ impl ViewerApp {
                 .take(shown)
                 .filter_map(|s| Some((s.pixel, s.colour.map(colour32)?)))
                 .collect();
+            // The legend's mark on a cell: a frame and its symbol.
+            let mark = |rect: egui::Rect, width: f32, colour: Color32, symbol: &str| {
+                painter.rect_stroke(
+                    rect.shrink(1.5),
+                    0.0,
+                    egui::Stroke::new(width, colour),
+                    egui::StrokeKind::Inside,
+                );
+                painter.text(
+                    rect.center(),
+                    egui::Align2::CENTER_CENTER,
+                    symbol,
+                    font.clone(),
+                    colour,
+                );
+            };
             for (p, how) in drawing.cells(shown) {
                 let rect =
                     egui::Rect::from_center_size(to_screen(p.centre()), egui::vec2(cell, cell));
@@ -657,35 +673,9 @@ impl ViewerApp {
                     }
                     Cell::OnlyYours => {
                         painter.rect_filled(rect.shrink(1.0), 0.0, ink);
-                        painter.rect_stroke(
-                            rect.shrink(1.5),
-                            0.0,
-                            egui::Stroke::new(3.0, ONLY_YOURS),
-                            egui::StrokeKind::Inside,
-                        );
-                        painter.text(
-                            rect.center(),
-                            egui::Align2::CENTER_CENTER,
-                            "+",
-                            font.clone(),
-                            ONLY_YOURS,
-                        );
+                        mark(rect, 3.0, ONLY_YOURS, "+");
                     }
-                    Cell::OnlyExpected => {
-                        painter.rect_stroke(
-                            rect.shrink(1.5),
-                            0.0,
-                            egui::Stroke::new(2.0, ONLY_EXPECTED),
-                            egui::StrokeKind::Inside,
-                        );
-                        painter.text(
-                            rect.center(),
-                            egui::Align2::CENTER_CENTER,
-                            "-",
-                            font.clone(),
-                            ONLY_EXPECTED,
-                        );
-                    }
+                    Cell::OnlyExpected => mark(rect, 2.0, ONLY_EXPECTED, "-"),
                     Cell::Empty => {
                         painter.rect_filled(rect.shrink(1.0), 0.0, EMPTY);
                     }

@@ -363,28 +363,14 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
         Primitive::MidpointLine => {
             let (from, to) = (setup.pixel(0), setup.pixel(1));
             let (status, pixels) = collect(&stages.midpoint, size, |run, plot| run(from, to, plot));
-            let steps = pixels
-                .into_iter()
-                .map(|p| Step {
-                    pixel: p,
-                    colour: None,
-                    note: line_note(from, to, p),
-                })
-                .collect();
+            let steps = uncoloured(pixels, |p| line_note(from, to, p));
             (status, steps, definitions::line_pixels(from, to, None))
         }
         Primitive::Circle => {
             let (centre, radius) = (setup.pixel(0), setup.radius());
             let (status, pixels) =
                 collect(&stages.circle, size, |run, plot| run(centre, radius, plot));
-            let steps = pixels
-                .into_iter()
-                .map(|p| Step {
-                    pixel: p,
-                    colour: None,
-                    note: circle_note(centre, radius, p),
-                })
-                .collect();
+            let steps = uncoloured(pixels, |p| circle_note(centre, radius, p));
             (status, steps, definitions::circle_pixels(centre, radius))
         }
         Primitive::Triangle => {
@@ -426,6 +412,19 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
             .filter(|p| viewport.contains(*p))
             .collect(),
     }
+}
+
+/// The steps of code that plots pixels without a colour, each with its
+/// note.
+fn uncoloured(pixels: Vec<Pixel>, note: impl Fn(Pixel) -> String) -> Vec<Step> {
+    pixels
+        .into_iter()
+        .map(|pixel| Step {
+            pixel,
+            colour: None,
+            note: note(pixel),
+        })
+        .collect()
 }
 
 /// The colours of a line's endpoints (the DDA interpolates between them).
