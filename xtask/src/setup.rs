@@ -173,6 +173,30 @@ pub fn actionlint(tools: &Path, file: &Path) -> anyhow::Result<Vec<String>> {
         .collect())
 }
 
+/// Chromium, the browser `cargo xtask test` opens `report.html` in
+/// (headless): on the `PATH`, or installed with `apt-get` (Debian's
+/// `chromium`) as for lavapipe. `None` when neither works.
+pub fn chromium() -> Option<std::path::PathBuf> {
+    let find = || {
+        let path = std::env::var_os("PATH")?;
+        std::env::split_paths(&path).find_map(|dir| {
+            ["chromium", "chromium-browser", "google-chrome"]
+                .iter()
+                .map(|name| dir.join(name))
+                .find(|p| p.is_file())
+        })
+    };
+    if let Some(found) = find() {
+        return Some(found);
+    }
+    apt_install(
+        &["chromium"],
+        "Chromium, in which the report is checked",
+        "the report is checked in a headless Chromium, and this machine has none",
+    );
+    find()
+}
+
 /// The Debian/Ubuntu package of bubblewrap, the sandbox of every test run.
 pub const SANDBOX_PACKAGE: &str = "bubblewrap";
 

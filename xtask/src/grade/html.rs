@@ -16,7 +16,59 @@ table{border-collapse:collapse;margin:.5em 0}td,th{padding:.25em .75em;text-alig
 border-bottom:1px solid #8884}.ok{color:#197a32}.fail{color:#b3261e}.error{color:#a15c00}\
 pre{background:#8881;padding:.75em;overflow-x:auto}figure{display:inline-block;margin:.5em}\
 figure img{image-rendering:pixelated;min-width:8em;max-width:24em;border:1px solid #8886}\
-figcaption{font-size:.85em;text-align:center}";
+figcaption{font-size:.85em;text-align:center}progress{width:10em}\
+.task{display:flex;flex-wrap:wrap;gap:0 2em;align-items:flex-start}.task>div{min-width:0;max-width:100%}\
+.compare{display:inline-block;margin:.5em 1em .5em 0;vertical-align:top}\
+.compare .view{position:relative;display:inline-block;line-height:0;border:1px solid #8886}\
+.compare .view img{image-rendering:pixelated;image-rendering:crisp-edges}\
+.compare .grid{position:absolute;inset:0;pointer-events:none;background-image:\
+linear-gradient(to right,#8886 1px,transparent 1px),linear-gradient(to bottom,#8886 1px,transparent 1px)}\
+.compare .switch{font-size:.9em;margin:.25em 0}.compare .switch label{margin-right:.75em}";
+
+/// Turns each `.compare` (a comparison's pictures, shown side by side
+/// without it) into one magnified view with a switch between its pictures:
+/// the largest whole magnification that fits 480 pixels, no smoothing, a
+/// pixel grid from 6× on. Inline, so the page works from a zip.
+const SCRIPT: &str = r#"<script>
+document.querySelectorAll('.compare').forEach((box, n) => {
+  const figures = [...box.querySelectorAll('figure')];
+  const images = figures.map(f => f.querySelector('img'));
+  const view = document.createElement('div');
+  view.className = 'view';
+  const grid = document.createElement('div');
+  grid.className = 'grid';
+  const shown = images[0].cloneNode();
+  view.append(shown, grid);
+  const bar = document.createElement('div');
+  bar.className = 'switch';
+  figures.forEach((figure, k) => {
+    const label = document.createElement('label');
+    const radio = document.createElement('input');
+    radio.type = 'radio';
+    radio.name = 'compare-' + n;
+    radio.checked = k === 0;
+    radio.addEventListener('change', () => { shown.src = images[k].src; shown.alt = images[k].alt; });
+    label.append(radio, ' ' + figure.querySelector('figcaption').textContent);
+    bar.append(label);
+  });
+  const fit = () => {
+    const w = shown.naturalWidth, h = shown.naturalHeight;
+    if (!w) return;
+    const scale = Math.max(1, Math.floor(480 / Math.max(w, h)));
+    shown.style.width = w * scale + 'px';
+    shown.style.height = h * scale + 'px';
+    grid.style.backgroundSize = scale + 'px ' + scale + 'px';
+    grid.hidden = scale < 6;
+    box.dataset.scale = scale;
+  };
+  shown.addEventListener('load', fit);
+  figures.forEach(f => f.remove());
+  const title = box.querySelector(':scope > p');
+  if (title) title.after(bar, view); else box.prepend(bar, view);
+  fit();
+});
+</script>
+"#;
 
 /// The whole page.
 #[must_use]
@@ -56,10 +108,12 @@ pub fn page(report: &Report) -> String {
             escape(&integrity.summary())
         );
     }
+    summary(&mut html, report);
     for topic in &report.topics {
         let _ = writeln!(
             html,
-            "<h2>{} <small>({} of {} points)</small></h2>",
+            "<h2 id=\"{}\">{} <small>({} of {} points)</small></h2>",
+            topic_anchor(&topic.name),
             escape(&topic.name),
             report::points(topic.score),
             report::points(topic.max_score),
@@ -100,8 +154,49 @@ pub fn page(report: &Report) -> String {
         }
     }
     pipeline_section(&mut html, &report.pipeline);
+    html.push_str(SCRIPT);
     html.push_str("</body></html>\n");
     html
+}
+
+/// The summary across topics, first: points, a bar, and how many tasks
+/// are done, each topic linked to its section.
+fn summary(html: &mut String, report: &Report) {
+    html.push_str(
+        "<table id=\"summary\"><tr><th>topic</th><th>points</th><th></th><th>tasks done</th></tr>\n",
+    );
+    for topic in &report.topics {
+        let done = topic
+            .tasks
+            .iter()
+            .filter(|t| t.status == TaskStatus::Ok)
+            .count();
+        let _ = writeln!(
+            html,
+            "<tr><td><a href=\"#{anchor}\">{name}</a></td><td>{score} / {max}</td>\
+             <td><progress value=\"{score}\" max=\"{max}\"></progress></td>\
+             <td class=\"{class}\">{done} of {tasks}</td></tr>",
+            anchor = topic_anchor(&topic.name),
+            name = escape(&topic.name),
+            score = report::points(topic.score),
+            max = report::points(topic.max_score.max(topic.score)),
+            class = if done == topic.tasks.len() {
+                "ok"
+            } else {
+                "fail"
+            },
+            tasks = topic.tasks.len(),
+        );
+    }
+    let _ = writeln!(
+        html,
+        "<tr><th>total</th><th>{} / {}</th><th></th><th></th></tr></table>",
+        report::points(report.score),
+        report::points(report.max_score)
+    );
+    if !report.pipeline.is_empty() {
+        html.push_str("<p><a href=\"#pipeline\">Your pipeline</a>: the shipped meshes drawn by your stages.</p>\n");
+    }
 }
 
 /// "Your pipeline": the shipped meshes drawn by the graded stages, beside
@@ -154,6 +249,9 @@ fn task_section(html: &mut String, topic: &str, task: &TaskReport) {
     if let Some(error) = &task.error {
         let _ = writeln!(html, "<p class=\"error\">Not graded: {}</p>", escape(error));
     }
+    // The failing case on the left, the pictures beside it (the first
+    // failing test's first).
+    html.push_str("<div class=\"task\"><div>\n");
     if let Some(test) = failure {
         let _ = writeln!(
             html,
@@ -203,6 +301,9 @@ fn task_section(html: &mut String, topic: &str, task: &TaskReport) {
             let _ = writeln!(html, "</ol></details>");
         }
     }
+    html.push_str("</div><div>\n");
+    let mut pictures = pictures;
+    pictures.sort_by_key(|t| failure.is_none_or(|f| f.name != t.name));
     for test in pictures {
         let Some(dir) = &test.images_dir else {
             continue;
@@ -222,20 +323,37 @@ fn task_section(html: &mut String, topic: &str, task: &TaskReport) {
                 TestStatus::Ignored => "ignored",
             }
         );
+        // One comparison per folder the test wrote (`dda_star/yours.png`,
+        // `dda_star/reference.png`, ...).
         let mut images: Vec<&std::path::PathBuf> = test.images.iter().collect();
-        images.sort_by_key(|image| (picture_rank(image), image.as_path()));
-        for image in images {
-            let path = dir.join(image);
-            let _ = writeln!(
-                html,
-                "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{name}\"></a>\
-                 <figcaption>{name}</figcaption></figure>",
-                src = escape(&url(&path)),
-                name = escape(&image.display().to_string()),
-            );
+        images.sort_by_key(|image| (image.parent(), picture_rank(image), image.as_path()));
+        for group in images.chunk_by(|a, b| a.parent() == b.parent()) {
+            let name = group[0]
+                .parent()
+                .filter(|p| !p.as_os_str().is_empty())
+                .map(|p| p.display().to_string());
+            html.push_str("<div class=\"compare\">");
+            if let Some(name) = name {
+                let _ = write!(html, "<p><small>{}</small></p>", escape(&name));
+            }
+            for image in group {
+                let path = dir.join(image);
+                let caption = image
+                    .file_stem()
+                    .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+                let _ = write!(
+                    html,
+                    "<figure><a href=\"{src}\"><img src=\"{src}\" alt=\"{caption}\"></a>\
+                     <figcaption>{caption}</figcaption></figure>",
+                    src = escape(&url(&path)),
+                    caption = escape(&caption),
+                );
+            }
+            html.push_str("</div>\n");
         }
         html.push_str("</div>\n");
     }
+    html.push_str("</div></div>\n");
 }
 
 /// Pictures of one comparison in reading order: yours, then the
@@ -264,6 +382,11 @@ fn status_class(status: TaskStatus) -> &'static str {
         TaskStatus::Fail => "fail",
         TaskStatus::CompileError | TaskStatus::Error => "error",
     }
+}
+
+/// An id for a topic's section: `topic-01-lines`.
+fn topic_anchor(topic: &str) -> String {
+    format!("topic-{}", anchor(topic, "").trim_end_matches('-'))
 }
 
 /// An id for a task's section: `01-lines--dda`.
