@@ -357,6 +357,17 @@ struct PlannedTest {
     images_dir: PathBuf,
 }
 
+/// Sorts `tests` (libtest lists them alphabetically) in the order their
+/// file `source` declares them: the order its author wrote them in,
+/// named cases before the random ones, so that the first failure shown is
+/// the first a reader of the file meets. Names not found go last.
+fn in_declaration_order(tests: &mut [String], source: &str) {
+    tests.sort_by_cached_key(|test| {
+        let name = test.rsplit("::").next().unwrap_or(test);
+        source.find(&format!("fn {name}(")).unwrap_or(usize::MAX)
+    });
+}
+
 /// The sandbox of the tests of one grading run: its program and the
 /// folders it hides (see [`GradeOptions::hidden`]).
 struct SandboxPlan {
@@ -398,7 +409,7 @@ fn plan(
         has_binary[task] = true;
         let listed = run::list_tests(&executable, &topic.dir, false)
             .and_then(|all| Ok((all, run::list_tests(&executable, &topic.dir, true)?)));
-        let (all, ignored) = match listed {
+        let (mut all, ignored) = match listed {
             Ok(lists) => lists,
             Err(error) => {
                 plan.task_errors[task] = Some(format!(
@@ -409,6 +420,9 @@ fn plan(
         };
         if all.is_empty() {
             plan.task_errors[task] = Some(format!("tests/{name}.rs has no tests"));
+        }
+        if let Ok(source) = fs::read_to_string(topic.dir.join("tests").join(format!("{name}.rs"))) {
+            in_declaration_order(&mut all, &source);
         }
         for test in all {
             let relative = test_path(&name, &test);
@@ -737,6 +751,29 @@ fn list_files(dir: &Path) -> Vec<PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tests_are_graded_in_the_order_their_file_declares_them() {
+        let source = "#[testkit::test]\nfn zero_length_line() {}\n\nproptest! {\n    #[testkit::test]\n    fn a_random_property(x in 0..3) {}\n}\n\nmod more {\n    #[test]\n    fn backwards() {}\n}\n";
+        let mut tests: Vec<String> = [
+            "a_random_property",
+            "more::backwards",
+            "unknown",
+            "zero_length_line",
+        ]
+        .map(str::to_owned)
+        .to_vec();
+        in_declaration_order(&mut tests, source);
+        assert_eq!(
+            tests,
+            [
+                "zero_length_line",
+                "a_random_property",
+                "more::backwards",
+                "unknown"
+            ]
+        );
+    }
 
     #[test]
     fn test_paths_are_unique_per_task_and_nest_modules() {
