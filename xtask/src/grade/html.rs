@@ -11,13 +11,14 @@ use std::path::Path;
 use super::report::{self, Edition, Report, TaskReport, TaskStatus, TestReport, TestStatus};
 
 /// Styles for the page: readable in light and dark mode, monospace diffs.
-const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:72em}\
+const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:96em}\
 table{border-collapse:collapse;margin:.5em 0}td,th{padding:.25em .75em;text-align:left;\
 border-bottom:1px solid #8884}.ok{color:#197a32}.fail{color:#b3261e}.error{color:#a15c00}\
 pre{background:#8881;padding:.75em;overflow-x:auto}figure{display:inline-block;margin:.5em}\
 figure img{image-rendering:pixelated;min-width:8em;max-width:24em;border:1px solid #8886}\
 figcaption{font-size:.85em;text-align:center}progress{width:10em}\
 .task{display:flex;flex-wrap:wrap;gap:0 2em;align-items:flex-start}.task>div{min-width:0;max-width:100%}\
+.task>div:first-child{flex:1 1 26em}.task>div:last-child{flex:0 1 auto}\
 .compare{display:inline-block;margin:.5em 1em .5em 0;vertical-align:top}\
 .compare .view{position:relative;display:inline-block;line-height:0;border:1px solid #8886}\
 .compare .view img{image-rendering:pixelated;image-rendering:crisp-edges}\
