@@ -10,6 +10,7 @@ mod grade;
 mod gradescope;
 mod hint;
 mod release;
+mod review;
 mod setup;
 mod stage;
 mod stubs;
@@ -89,6 +90,19 @@ enum Command {
         /// Forget the hints seen of this task.
         #[arg(long)]
         reset: bool,
+    },
+    /// Review the snapshots the last grade found different with cargo-insta (installed when
+    /// missing): accept, reject or skip each; the course's snapshots are never changed.
+    Review {
+        /// The submission whose grade to review (its folder name in a class's gradebook).
+        #[arg(long, value_name = "NAME")]
+        submission: Option<String>,
+        /// Where the grade was written [default: <root>/target/grade].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Print every snapshot and its diff instead of stepping through them.
+        #[arg(long)]
+        list: bool,
     },
     /// Write the Gradescope autograder to DIR: the student edition as the official tests,
     /// setup.sh, run_autograder, and autograder.zip to upload.
@@ -186,6 +200,11 @@ fn main() -> ExitCode {
         Command::Bench { args } => bench::run(&root, &args),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
+        Command::Review {
+            submission,
+            out,
+            list,
+        } => review::run(&root, out.as_deref(), submission.as_deref(), list),
         Command::Hint { task, all, reset } => hint::run(&root, &task, all, reset),
         Command::Gradescope { dir, topics } => gradescope::run(&root, &dir, &topics),
         Command::Release {

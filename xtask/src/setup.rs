@@ -197,6 +197,40 @@ pub fn chromium() -> Option<std::path::PathBuf> {
     find()
 }
 
+/// The version of cargo-insta installed for `cargo xtask review`.
+pub const CARGO_INSTA_VERSION: &str = "1.49.0";
+
+/// `cargo-insta`, insta's review tool: on the `PATH`, or installed into
+/// `tools` with `cargo install --locked` (a few minutes, once).
+pub fn cargo_insta(tools: &Path) -> anyhow::Result<std::path::PathBuf> {
+    use anyhow::{Context, ensure};
+    let installed = tools.join("bin").join("cargo-insta");
+    let on_path = std::env::var_os("PATH").and_then(|path| {
+        std::env::split_paths(&path)
+            .map(|dir| dir.join("cargo-insta"))
+            .find(|p| p.is_file())
+    });
+    if let Some(found) = on_path.or_else(|| installed.is_file().then(|| installed.clone())) {
+        return Ok(found);
+    }
+    println!(
+        "==> installing cargo-insta {CARGO_INSTA_VERSION}, insta's review tool (once, a few minutes): cargo install cargo-insta --locked"
+    );
+    let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+        .args(["install", "--quiet", "--locked", "cargo-insta", "--version"])
+        .arg(CARGO_INSTA_VERSION)
+        .arg("--root")
+        .arg(tools)
+        .stdin(Stdio::null())
+        .status()
+        .context("cannot run cargo install")?;
+    ensure!(
+        status.success() && installed.is_file(),
+        "`cargo install cargo-insta` failed"
+    );
+    Ok(installed)
+}
+
 /// The Debian/Ubuntu package of bubblewrap, the sandbox of every test run.
 pub const SANDBOX_PACKAGE: &str = "bubblewrap";
 

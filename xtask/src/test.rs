@@ -413,9 +413,49 @@ fn do_nothing_scores_zero(root: &Path) -> Result<String> {
         );
     }
     let kept: usize = keep.values().map(Vec::len).sum();
+    let reviewed = snapshots_review(root, &root.join("target").join("grade").join("do-nothing"))?;
     Ok(format!(
-        "0 of {} points in {:.1} s ({kept} todo!() kept where no cheap body compiles)",
+        "0 of {} points in {:.1} s ({kept} todo!() kept where no cheap body compiles); {reviewed}",
         report.max_score, report.duration_s
+    ))
+}
+
+/// `cargo xtask review` on the grade in `graded`, whose snapshots differ
+/// (a do-nothing body draws nothing): cargo-insta shows each one's diff,
+/// and the course's own snapshots stay as they were.
+fn snapshots_review(root: &Path, graded: &Path) -> Result<String> {
+    let official = |review: &crate::review::Review| -> Vec<Option<Vec<u8>>> {
+        review
+            .pending
+            .iter()
+            .map(|file| fs::read(root.join(file.with_extension(""))).ok())
+            .collect()
+    };
+    let review = crate::review::Review::prepare(root, graded)?
+        .context("the do-nothing grade left no differing snapshot to review")?;
+    let before = official(&review);
+    let diffs = review.diffs()?;
+    ensure!(
+        diffs.len() == review.pending.len(),
+        "the review shows {} of {} snapshots",
+        diffs.len(),
+        review.pending.len()
+    );
+    for (snapshot, diff) in &diffs {
+        ensure!(
+            diff.contains("-old snapshot") && diff.contains("+new results"),
+            "the review of {} shows no diff:\n{}",
+            snapshot.display(),
+            tail(diff, 20)
+        );
+    }
+    ensure!(
+        official(&review) == before,
+        "reviewing changed the course's snapshots"
+    );
+    Ok(format!(
+        "`cargo xtask review` shows the diffs of its {} differing snapshots",
+        diffs.len()
     ))
 }
 
