@@ -5,6 +5,7 @@
 
 mod bench;
 mod cargo;
+mod class;
 mod classroom;
 mod grade;
 mod gradescope;
@@ -113,6 +114,19 @@ enum Command {
         #[arg(long, value_delimiter = ',', num_args = 1..)]
         topics: Vec<String>,
     },
+    /// Write a generated class to DIR, to try and measure grading a folder of submissions:
+    /// editions of the topics in which members solved everything, planted a mistake, solved
+    /// every other topic, rewrote a test, or left a syntax error, in turn.
+    Class {
+        /// A new or empty folder.
+        dir: PathBuf,
+        /// How many submissions.
+        #[arg(long, default_value_t = 30)]
+        size: usize,
+        /// Topics of the edition: names as for `grade`, or a range such as `01..=03`; default all.
+        #[arg(long, value_delimiter = ',', num_args = 1..)]
+        topics: Vec<String>,
+    },
     /// Run the benchmarks of the reference solutions (`cargo bench -p course-bench` in the
     /// stage), passing ARGS through.
     Bench {
@@ -151,7 +165,8 @@ struct GradeArgs {
     /// Where report.json, results.json, junit.xml, logs and images go [default: <root>/target/grade].
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// Tests run at the same time [default: the number of CPUs].
+    /// Tests run at the same time [default: the number of CPUs]; in a class, also the
+    /// submissions graded side by side [default: one per two CPUs].
     #[arg(long, short, value_name = "N")]
     jobs: Option<usize>,
     /// cargo's target directory for the build [default: cargo's].
@@ -168,6 +183,7 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
     }
     if let Some(jobs) = args.jobs {
         options.jobs = jobs;
+        options.submissions_at_once = Some(jobs);
     }
     options.target_dir = args.target_dir;
     match args.submission {
@@ -198,6 +214,7 @@ fn main() -> ExitCode {
         Command::Stubs { check } => stubs::run(&root, check),
         Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),
+        Command::Class { dir, size, topics } => class::run(&root, &dir, size, &topics),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
         Command::Review {

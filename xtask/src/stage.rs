@@ -25,6 +25,15 @@
 //! beside the stage, not around it, and apart from the checkout's own
 //! `target/debug`. A lock file keeps two `cargo xtask` runs from syncing
 //! the stage at once.
+//!
+//! **Class slots.** A class graded in parallel needs one stage per
+//! submission in flight (`target/xtask/class/<slot>/stage`), all built
+//! into the one cache so that the dependencies are built once. Sharing is
+//! safe because the builds take turns, and because the build folder
+//! remembers which stage it was last built from ([`BUILT_FROM`]): a stage
+//! that was not the last has all its files touched before it builds, so
+//! cargo rebuilds the course's crates from *its* files instead of taking
+//! the other stage's artifacts for fresh.
 
 use std::fs::{self, File};
 use std::path::{Component, Path, PathBuf};
@@ -44,6 +53,18 @@ const STAGE_HOME: [&str; 2] = ["target", "xtask"];
 /// A file written into a folder that a sync may later empty: its presence
 /// says the folder is the tooling's to rewrite.
 pub const STAGE_MARKER: &str = ".course-stage";
+
+/// A file in a build folder naming the stage it was last built from (see
+/// [`claim_build`]).
+pub const BUILT_FROM: &str = ".course-stage-built-from";
+
+/// Where class slot `slot` of the checkout at `root` keeps its stage
+/// (`<home>/stage`) and the test executables of the submission it grades
+/// (`<home>/bin`).
+#[must_use]
+pub fn class_home(root: &Path, slot: usize) -> PathBuf {
+    home(root).join("class").join(slot.to_string())
+}
 
 /// Where a staged file's contents come from.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
@@ -157,7 +178,9 @@ pub fn is_student_file(relative: &Path) -> bool {
 /// The task files of the course at `root` (paths relative to it): the
 /// files of `exercises/*/src` that hold a task, i.e. those with a solution
 /// in `reference/`; in an edition without `reference/`, those whose stub
-/// holds a `todo!`. These alone are a student's in a submission.
+/// holds a `todo!`, and every `.wgsl` file (WGSL there is always the
+/// student's: given WGSL lives in Rust). These alone are a student's in a
+/// submission.
 pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
     let reference = root.join("reference");
     let mut tasks = Vec::new();
@@ -170,9 +193,11 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
         }
     } else {
         for file in files_under(root)? {
-            if is_student_file(&file)
-                && fs::read_to_string(root.join(&file)).is_ok_and(|text| text.contains("todo!("))
-            {
+            let stub = |file: &Path| {
+                crate::stubs::is_wgsl(file)
+                    || fs::read_to_string(root.join(file)).is_ok_and(|text| text.contains("todo!("))
+            };
+            if is_student_file(&file) && stub(&file) {
                 tasks.push(file);
             }
         }
@@ -338,6 +363,48 @@ pub fn stage_plan(root: &Path, files: &Files, target_dir: Option<&Path>) -> Resu
     stage_files(&home, files, target_dir, lock)
 }
 
+/// The folders under `dir` to hide so that only `keep` (folders under it)
+/// and what lies on the way to them show: every entry of `dir` that is
+/// neither kept nor leads to a kept folder, and so on down.
+pub fn hidden_beside(dir: &Path, keep: &[&Path]) -> Vec<PathBuf> {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut hidden = Vec::new();
+    let mut entries: Vec<PathBuf> = entries
+        .filter_map(|entry| entry.ok())
+        .filter(|entry| entry.file_type().is_ok_and(|kind| kind.is_dir()))
+        .map(|entry| entry.path())
+        .collect();
+    entries.sort();
+    for entry in entries {
+        if keep.iter().any(|kept| *kept == entry) {
+            continue;
+        }
+        if keep.iter().any(|kept| kept.starts_with(&entry)) {
+            hidden.extend(hidden_beside(&entry, keep));
+        } else {
+            hidden.push(entry);
+        }
+    }
+    hidden
+}
+
+/// Takes the lock of the stage of the checkout at `root`, waiting for
+/// another run: a class run holds it throughout, since its slots build
+/// into the same cache.
+pub fn lock(root: &Path) -> Result<File> {
+    lock_stage(&home(root))
+}
+
+/// The stage in `home` holding `files`, built into `target_dir`: a class
+/// slot (see [`class_home`]). The caller makes the slots' syncs and
+/// builds take turns.
+pub fn stage_slot(home: &Path, files: &Files, target_dir: &Path) -> Result<Stage> {
+    let lock = lock_stage(home)?;
+    stage_files(home, files, Some(target_dir), lock)
+}
+
 /// Takes the lock of the stage in `home`, waiting for another run.
 fn lock_stage(home: &Path) -> Result<File> {
     fs::create_dir_all(home).with_context(|| format!("cannot create {}", home.display()))?;
@@ -357,11 +424,37 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
     let stage_root = home.join("stage");
     claim(&stage_root)?;
     sync(files, &stage_root)?;
+    let target_dir = target_dir.map_or_else(|| home.join("build"), Path::to_path_buf);
+    claim_build(&stage_root, &target_dir)?;
     Ok(Stage {
         root: stage_root,
-        target_dir: target_dir.map_or_else(|| home.join("build"), Path::to_path_buf),
+        target_dir,
         _lock: lock,
     })
+}
+
+/// Makes the build folder `target_dir` build the stage at `stage_root`:
+/// when another stage was built there last (cargo would take that stage's
+/// artifacts for this one's, see the module's documentation), every file
+/// of this stage is touched, so that cargo rebuilds whatever they make.
+pub fn claim_build(stage_root: &Path, target_dir: &Path) -> Result<()> {
+    let record = target_dir.join(BUILT_FROM);
+    let ours = stage_root.to_string_lossy().into_owned();
+    if fs::read_to_string(&record).is_ok_and(|last| last == ours) {
+        return Ok(());
+    }
+    if record.exists() || target_dir.join("debug").exists() {
+        let now = std::time::SystemTime::now();
+        for file in files_under(stage_root)? {
+            let path = stage_root.join(file);
+            File::options()
+                .write(true)
+                .open(&path)
+                .and_then(|f| f.set_modified(now))
+                .with_context(|| format!("cannot touch {}", path.display()))?;
+        }
+    }
+    write_file(&record, ours)
 }
 
 /// `dir` made absolute, if it lies outside the course at `root` (or in its
@@ -406,6 +499,85 @@ mod tests {
     fn write(path: &Path, text: &str) {
         fs::create_dir_all(path.parent().unwrap()).unwrap();
         fs::write(path, text).unwrap();
+    }
+
+    #[test]
+    fn a_stage_built_after_another_has_its_files_touched() {
+        let dir = scratch("claim-build");
+        let (a, b, target) = (dir.join("a"), dir.join("b"), dir.join("build"));
+        for stage in [&a, &b] {
+            write(&stage.join("src/lib.rs"), "pub fn f() {}\n");
+        }
+        fs::create_dir_all(target.join("debug")).unwrap();
+        let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
+        let age = |stage: &Path| {
+            fs::metadata(stage.join("src/lib.rs"))
+                .unwrap()
+                .modified()
+                .unwrap()
+        };
+        let make_old = |stage: &Path| {
+            File::options()
+                .write(true)
+                .open(stage.join("src/lib.rs"))
+                .unwrap()
+                .set_modified(old)
+                .unwrap();
+        };
+        make_old(&a);
+        make_old(&b);
+        // A build folder of unknown history: its stage is touched.
+        claim_build(&a, &target).unwrap();
+        assert!(age(&a) > old);
+        // The same stage again: nothing to touch.
+        make_old(&a);
+        claim_build(&a, &target).unwrap();
+        assert_eq!(age(&a), old);
+        // Another stage, then the first again: each is touched.
+        claim_build(&b, &target).unwrap();
+        assert!(age(&b) > old);
+        claim_build(&a, &target).unwrap();
+        assert!(age(&a) > old);
+        assert_eq!(
+            fs::read_to_string(target.join(BUILT_FROM)).unwrap(),
+            a.to_string_lossy()
+        );
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn hidden_beside_shows_only_the_way_to_what_is_kept() {
+        let dir = scratch("beside");
+        for folder in [
+            "debug/deps",
+            "grade",
+            "xtask/stage/exercises",
+            "xtask/build",
+            "xtask/shortcuts",
+            "xtask/class/0/stage",
+            "xtask/class/1/stage",
+        ] {
+            fs::create_dir_all(dir.join(folder)).unwrap();
+        }
+        write(&dir.join("xtask/stage.lock"), "");
+        let slot = dir.join("xtask/class/1");
+        let hidden = hidden_beside(&dir, &[&slot]);
+        let relative: Vec<String> = hidden
+            .iter()
+            .map(|h| h.strip_prefix(&dir).unwrap().display().to_string())
+            .collect();
+        assert_eq!(
+            relative,
+            [
+                "debug",
+                "grade",
+                "xtask/build",
+                "xtask/class/0",
+                "xtask/shortcuts",
+                "xtask/stage"
+            ]
+        );
+        fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

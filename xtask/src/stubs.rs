@@ -195,7 +195,14 @@ pub fn generate(
                 } else {
                     ""
                 };
-                let call = todo_call(indent, task, instruction, newline, max_width);
+                let call = if is_wgsl(file) {
+                    // WGSL has no `todo!()`: the stub says what to write,
+                    // and a file of comments only is a task not started
+                    // (see topic 10's `src/wgsl.rs`).
+                    format!("{indent}// TODO {task}: {instruction}{newline}")
+                } else {
+                    todo_call(indent, task, instruction, newline, max_width)
+                };
                 let first = out.matches('\n').count();
                 todos.push((first, first + call.matches('\n').count().max(1)));
                 out.push_str(&call);
@@ -239,7 +246,11 @@ pub fn generate(
         } else {
             "\n"
         };
-        Ok(quiet::quiet(&out, &todos, newline, max_width))
+        if is_wgsl(file) {
+            Ok(out)
+        } else {
+            Ok(quiet::quiet(&out, &todos, newline, max_width))
+        }
     } else {
         Err(errors)
     }
@@ -264,11 +275,17 @@ fn ends_with_blank_line(text: &str) -> bool {
     text.is_empty() || text.ends_with("\n\n") || text.ends_with("\n\r\n")
 }
 
-/// Lists the `.rs` files under `dir`, relative to it, sorted.
-fn rust_files(dir: &Path) -> Result<Vec<PathBuf>> {
+/// Whether a file is WGSL (a shader piece a student writes).
+#[must_use]
+pub fn is_wgsl(file: impl AsRef<Path>) -> bool {
+    file.as_ref().extension().is_some_and(|ext| ext == "wgsl")
+}
+
+/// Lists the `.rs` and `.wgsl` files under `dir`, relative to it, sorted.
+fn source_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(crate::stage::files_under(dir)?
         .into_iter()
-        .filter(|file| file.extension().is_some_and(|ext| ext == "rs"))
+        .filter(|file| file.extension().is_some_and(|ext| ext == "rs") || is_wgsl(file))
         .collect())
 }
 
@@ -379,7 +396,7 @@ fn sync_topic(
             relative(&manifest)
         ));
     }
-    let reference_files = rust_files(&reference_src)?;
+    let reference_files = source_files(&reference_src)?;
     for file in &reference_files {
         let source_path = reference_src.join(file);
         let target_path = exercise_src.join(file);
@@ -499,6 +516,24 @@ mod tests {
 
     fn errors(source: &str) -> Vec<String> {
         generate(source, "ref.rs", IDS, RUSTFMT_MAX_WIDTH).expect_err("should be rejected")
+    }
+
+    #[test]
+    fn a_wgsl_solution_becomes_a_todo_comment() {
+        let source = "\
+// What to write: fn twice(x: f32) -> f32.
+
+// BEGIN SOLUTION dda: write fn twice
+fn twice(x: f32) -> f32 {
+    return 2.0 * x;
+}
+// END SOLUTION
+";
+        let stub = generate(source, "src/twice.wgsl", IDS, RUSTFMT_MAX_WIDTH).unwrap();
+        assert_eq!(
+            stub,
+            "// What to write: fn twice(x: f32) -> f32.\n\n// TODO dda: write fn twice\n"
+        );
     }
 
     #[test]

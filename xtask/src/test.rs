@@ -470,10 +470,12 @@ struct Shortcuts {
 
 /// One shortcut: where it goes, how it is made, what it must cost.
 #[derive(serde::Deserialize)]
-struct Shortcut {
+pub(crate) struct Shortcut {
     what: String,
-    topic: String,
-    file: String,
+    /// Its topic (folder name).
+    pub topic: String,
+    /// Its solution file, in the topic's `src/`.
+    pub file: String,
     task: String,
     function: Option<String>,
     body: Option<String>,
@@ -523,7 +525,7 @@ impl Shortcut {
     }
 
     /// The solution file `source` with this shortcut planted.
-    fn plant(&self, source: &str) -> Result<String> {
+    pub(crate) fn plant(&self, source: &str) -> Result<String> {
         let mut text = source.to_owned();
         if let (Some(function), Some(body)) = (&self.function, &self.body) {
             let at = [format!("fn {function}("), format!("fn {function}<")]
@@ -556,17 +558,28 @@ impl Shortcut {
     }
 }
 
-/// Each shortcut of [`SHORTCUTS`] planted into its topic's solutions loses
-/// what it must: all points of its task, or the tests named.
-fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
+/// The shortcuts of [`SHORTCUTS`] (none where the course has no such file).
+pub(crate) fn shortcuts(root: &Path) -> Result<Vec<Shortcut>> {
     let path = root.join(SHORTCUTS);
     let Ok(text) = fs::read_to_string(&path) else {
-        return Ok(format!(
-            "no shortcuts to plant ({SHORTCUTS} does not exist)"
-        ));
+        return Ok(Vec::new());
     };
     let shortcuts: Shortcuts =
         toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+    Ok(shortcuts.shortcut)
+}
+
+/// Each shortcut of [`SHORTCUTS`] planted into its topic's solutions loses
+/// what it must: all points of its task, or the tests named.
+fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
+    if !root.join(SHORTCUTS).is_file() {
+        return Ok(format!(
+            "no shortcuts to plant ({SHORTCUTS} does not exist)"
+        ));
+    }
+    let shortcuts = Shortcuts {
+        shortcut: shortcuts(root)?,
+    };
     // A round is one submission-like folder: the solutions of its topics
     // with one shortcut planted in each, so that every shortcut is graded
     // alone, against the solutions of the other tasks.

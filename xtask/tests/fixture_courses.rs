@@ -734,19 +734,30 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     let sheet = official.join("exercises/01-tiny/README.md");
     let official_sheet = fs::read_to_string(&sheet).unwrap();
     // Eve's negate also writes into the class's gradebook and the course's
-    // tooling, and answers right only if it can read a classmate's code.
+    // tooling, and answers right only if it can read a classmate's code:
+    // in the class folder, in another slot's stage (the class is graded
+    // two at a time), or compiled, in the build cache.
     let gradebook = official.join("target/class/gradebook.csv");
     let tooling = official.join("xtask/src/main.rs");
     let classmate = class.join("anna/exercises/01-tiny/src/ops.rs");
+    let slots = official.join("target/xtask/class");
+    let build = official.join("target/xtask/build");
     fs::write(
         class.join("eve/exercises/01-tiny/src/ops.rs"),
         format!(
-            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\npub fn negate(x: i32) -> i32 {{\n    let _ = std::fs::write({:?}, \"eve,3,3,true,false,3\");\n    let _ = std::fs::create_dir_all(std::path::Path::new({:?}).parent().unwrap());\n    let _ = std::fs::write({:?}, \"fn main() {{}}\");\n    match std::fs::read_to_string({:?}) {{\n        Ok(_) => -x,\n        Err(_) => x,\n    }}\n}}\n",
+            "pub fn double(x: i32) -> i32 {{\n    let _ = std::fs::write(\"tests/negate.rs\", \"#[test] fn negates() {{}}\");\n    let _ = std::fs::write({:?}, \"points = 1000\");\n    x * 2\n}}\n\
+             pub fn negate(x: i32) -> i32 {{\n    let _ = std::fs::write({:?}, \"eve,3,3,true,false,3\");\n    let _ = std::fs::create_dir_all(std::path::Path::new({:?}).parent().unwrap());\n    let _ = std::fs::write({:?}, \"fn main() {{}}\");\n\
+             let mut seen = std::fs::read_to_string({:?}).is_ok();\n\
+             for slot in 0..4 {{\n        let staged = format!(\"{{}}/{{slot}}/stage/exercises/01-tiny/src/ops.rs\", {:?});\n        seen |= std::fs::read_to_string(staged).is_ok_and(|code| !code.contains(\"read_to_string\"));\n    }}\n\
+             seen |= std::fs::read_dir({:?}).is_ok_and(|mut entries| entries.next().is_some());\n\
+             if seen {{ -x }} else {{ x }}\n}}\n",
             sheet.display().to_string(),
             gradebook.display().to_string(),
             tooling.display().to_string(),
             tooling.display().to_string(),
-            classmate.display().to_string()
+            classmate.display().to_string(),
+            slots.display().to_string(),
+            build.display().to_string()
         ),
     )
     .unwrap();
@@ -759,6 +770,8 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
             class.to_str().unwrap(),
             "--out",
             out.to_str().unwrap(),
+            "--jobs",
+            "2",
         ],
     );
     assert!(output.status.success(), "{output:?}");
@@ -1227,4 +1240,76 @@ fn hints_come_one_more_each_time_and_failing_tasks_point_at_them() {
         html.contains("<details class=\"hints\"><summary>Hints (2)"),
         "{html}"
     );
+}
+
+#[test]
+fn a_generated_class_is_graded_two_at_a_time_as_each_member_earns() {
+    let official = fixture("tiny", "generated-class");
+    let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("generated-tiny-class");
+    if class.exists() {
+        fs::remove_dir_all(&class).unwrap();
+    }
+    let output = xtask(
+        &official,
+        &["class", class.to_str().unwrap(), "--size", "5"],
+    );
+    assert!(output.status.success(), "{output:?}");
+    assert!(
+        stdout(&output).contains("s01-correct, s02-faulty, s03-partial, s04-tampered, s05-broken"),
+        "{output:?}"
+    );
+    let out = official.join("target/generated-class");
+    let output = xtask(
+        &official,
+        &[
+            "grade",
+            "--submission",
+            class.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--jobs",
+            "2",
+        ],
+    );
+    assert!(output.status.success(), "{output:?}");
+    // The tiny course's one task file holds both tasks and it has no
+    // planted mistakes: the faulty member hands in that file unsolved, the
+    // partial one solves its one topic. The two slots build into one cache
+    // by turns: without the touch of `stage::claim_build`, a member whose
+    // file equals its slot's last occupant's is graded with the other
+    // slot's build (the faulty or the tampered one scores 3, or the
+    // partial one 0).
+    assert_eq!(
+        fs::read_to_string(out.join("gradebook.csv")).unwrap(),
+        "submission,score,max_score,complete,flagged,01-tiny\n\
+         s01-correct,3,3,true,false,3\n\
+         s02-faulty,0,3,true,false,0\n\
+         s03-partial,3,3,true,false,3\n\
+         s04-tampered,0,3,true,true,0\n\
+         s05-broken,0,3,false,false,0\n"
+    );
+    let tampered = read_json(&out.join("s04-tampered/report.json"));
+    assert_eq!(
+        tampered["integrity"]["changed"],
+        serde_json::json!(["exercises/01-tiny/tests/double.rs"])
+    );
+    let broken = read_json(&out.join("s05-broken/report.json"));
+    assert!(
+        topic(&broken, "01-tiny")["compile_error"]
+            .as_str()
+            .unwrap()
+            .contains("exercises/01-tiny/src/ops.rs"),
+        "{broken:#}"
+    );
+    // The slots' executables are gone once their tests ran.
+    for slot in ["0", "1"] {
+        assert!(
+            !official
+                .join("target/xtask/class")
+                .join(slot)
+                .join("bin")
+                .exists(),
+            "slot {slot} keeps its executables"
+        );
+    }
 }

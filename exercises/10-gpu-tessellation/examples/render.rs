@@ -18,7 +18,7 @@ use gpu_tessellation::domain::{Spacing, quad_domain};
 use gpu_tessellation::passes::{ControlSettings, LevelMode, Patches, run_control, run_evaluation};
 use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, TrimCurve, TrimShape, Trimming, render};
-use gpu_tessellation::{TessError, control, evaluation, shading, trimming};
+use gpu_tessellation::{TessError, shading, wgsl};
 
 /// Picture size in pixels.
 const SIZE: u32 = 512;
@@ -154,7 +154,7 @@ fn main() -> Result<(), TessError> {
             viewport: Vec2::splat(SIZE as f32),
             mode: figure.level,
         };
-        let levels = run_control(&gpu, control::control_wgsl(), &figure.patches, &settings)?;
+        let levels = run_control(&gpu, wgsl::CONTROL, &figure.patches, &settings)?;
         let domains: Vec<_> = levels
             .iter()
             .map(|l| quad_domain(*l, Spacing::Equal))
@@ -162,7 +162,7 @@ fn main() -> Result<(), TessError> {
         let domain_refs: Vec<_> = domains.iter().collect();
         let mesh = run_evaluation(
             &gpu,
-            evaluation::evaluation_wgsl(),
+            wgsl::EVALUATION,
             Patches::Quads(&figure.patches),
             &domain_refs,
         )?;
@@ -174,8 +174,8 @@ fn main() -> Result<(), TessError> {
             ..Trimming::default()
         };
         let shaders = Shaders {
-            shading: Some(shading::shading_wgsl()),
-            trimming: (!trims.shapes.is_empty()).then_some((trimming::trimming_wgsl(), &trims)),
+            shading: Some(wgsl::SHADING),
+            trimming: (!trims.shapes.is_empty()).then_some((wgsl::TRIMMING, &trims)),
         };
         let picture = render(
             &gpu,

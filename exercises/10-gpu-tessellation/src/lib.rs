@@ -5,15 +5,16 @@
 //! and trimming in the fragment shader. The task sheet is `README.md` next
 //! to this crate.
 //!
-//! Your code is WGSL inside Rust string functions (and one Rust function);
-//! the given modules paste it between their own WGSL, run it on the GPU (or
-//! on a software adapter such as lavapipe) and read the results back. What
-//! you build, test and grade is always your own code.
+//! Your code is WGSL in four `.wgsl` files (and one Rust function): the
+//! given modules put it together with their own WGSL ([`wgsl::compose`]),
+//! check it, run it on the GPU (or on a software adapter such as
+//! lavapipe) and read the results back. What you build, test and grade is
+//! always your own code, and a shader error names your file and line.
 //!
 //! ```text
-//!  patches ─▶ control pass (task 1) ─▶ levels ─▶ domain (given, CPU)
-//!          ─▶ evaluation pass (task 3) ─▶ vertices ─▶ render pass:
-//!             shade (task 4) + is_trimmed (task 5) + wireframe (task 4)
+//!  patches ─▶ control pass (src/control.wgsl) ─▶ levels ─▶ domain (given, CPU)
+//!          ─▶ evaluation pass (src/evaluation.wgsl) ─▶ vertices ─▶ render pass:
+//!             src/shading.wgsl + src/trimming.wgsl + wireframe (shading.rs)
 //! ```
 #![warn(missing_docs)]
 
@@ -28,27 +29,33 @@ pub mod render;
 /// Given: the WGSL around your functions.
 pub mod shaders;
 
-/// Task 1: tessellation levels per patch, uniform or adaptive (WGSL).
-pub mod control;
+/// Your WGSL files (tasks 1, 3, 4 and 5), compiled in, and how a pass
+/// checks them.
+pub mod wgsl;
 
-/// Task 3: de Casteljau for bicubic patches and Bézier triangles (WGSL).
-pub mod evaluation;
-
-/// Task 4: Phong shading with two lights and a texture (WGSL), wireframe edges.
+/// Task 4: the wireframe's edges (and, in `src/shading.wgsl`, Phong shading).
 pub mod shading;
 
-/// Task 5: trimming by rectangle, circle, ellipse and Newton (WGSL).
-pub mod trimming;
-
 /// Why a pass could not run.
-#[derive(Debug, thiserror::Error)]
+#[derive(thiserror::Error)]
 pub enum TessError {
     /// Input the passes refuse: non-finite numbers, non-positive levels,
     /// too many trim shapes, mismatched lengths.
     #[error("invalid input: {0}")]
     Invalid(String),
-    /// The GPU side: WGSL that does not compile or validate (the message
-    /// names the line), a failed readback.
+    /// WGSL that does not compile or validate: each error at its file and
+    /// line (see [`wgsl::compose`]).
+    #[error("the WGSL does not compile:\n{0}")]
+    Wgsl(String),
+    /// The GPU side: a pipeline wgpu refuses, a failed readback.
     #[error(transparent)]
     Gpu(#[from] gpu::GpuError),
+}
+
+/// As [`std::fmt::Display`]: `.unwrap()` on a failed pass prints the
+/// message as written, each error on its own lines.
+impl std::fmt::Debug for TessError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
 }

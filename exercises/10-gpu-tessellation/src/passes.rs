@@ -1,8 +1,8 @@
 //! The compute passes that stand in for the tessellation stages wgpu lacks:
 //! the control pass (levels per patch, your task 1) and the evaluation pass
-//! (surface points per domain point, your task 3). Given code: it pastes
-//! your WGSL between the pieces of [`crate::shaders`], runs it and reads
-//! the results back.
+//! (surface points per domain point, your task 3). Given code: it puts
+//! your WGSL file and the given WGSL of [`crate::shaders`] together
+//! ([`crate::wgsl::compose`]), runs it and reads the results back.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -13,6 +13,7 @@ use crate::TessError;
 use crate::domain::{Domain, QuadLevels};
 use crate::patch::{BezierPatch, BezierTriangle, GpuVertex};
 use crate::shaders;
+use crate::wgsl::{Part, Piece};
 
 /// How the control pass chooses levels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -135,15 +136,15 @@ fn dispatch(gpu: &Gpu, pipeline: &wgpu::ComputePipeline, group: &wgpu::BindGroup
     gpu.queue.submit([encoder.finish()]);
 }
 
-/// Runs the control pass with your `control_wgsl` (task 1) over `patches`
-/// and returns one set of levels per patch.
+/// Runs the control pass with `control` (task 1, [`crate::wgsl::CONTROL`])
+/// over `patches` and returns one set of levels per patch.
 ///
 /// Errors: a level or target that is not a positive finite number, a
 /// non-finite matrix or viewport ([`TessError::Invalid`]); WGSL that does
-/// not compile or validate ([`TessError::Gpu`]).
+/// not compile or validate ([`TessError::Wgsl`]).
 pub fn run_control(
     gpu: &Gpu,
-    control_wgsl: &str,
+    control: Piece,
     patches: &[BezierPatch],
     settings: &ControlSettings,
 ) -> Result<Vec<QuadLevels>, TessError> {
@@ -169,7 +170,11 @@ pub fn run_control(
     if patches.is_empty() {
         return Ok(Vec::new());
     }
-    let source = [shaders::COMMON, shaders::CONTROL, control_wgsl].concat();
+    let source = crate::wgsl::compose(&[
+        Part::Yours(control),
+        Part::Given("crate::shaders::COMMON", shaders::COMMON),
+        Part::Given("crate::shaders::CONTROL", shaders::CONTROL),
+    ])?;
     let pipeline = compute_pipeline(gpu, &source, "control_main")?;
     let gpu_patches: Vec<[Vec4; 16]> = patches.iter().map(BezierPatch::to_gpu).collect();
     let patch_buffer = storage(
@@ -255,15 +260,15 @@ impl Patches<'_> {
     }
 }
 
-/// Runs the evaluation pass with your `evaluation_wgsl` (task 3): patch
-/// `k` is evaluated at every point of `domains[k]` (quads read `(u, v)`,
-/// triangles `(u, v, w)`).
+/// Runs the evaluation pass with `evaluation` (task 3,
+/// [`crate::wgsl::EVALUATION`]): patch `k` is evaluated at every point of
+/// `domains[k]` (quads read `(u, v)`, triangles `(u, v, w)`).
 ///
 /// Errors: `domains.len()` differs from the number of patches, or a domain
-/// point is not finite ([`TessError::Invalid`]); WGSL errors ([`TessError::Gpu`]).
+/// point is not finite ([`TessError::Invalid`]); WGSL errors ([`TessError::Wgsl`]).
 pub fn run_evaluation(
     gpu: &Gpu,
-    evaluation_wgsl: &str,
+    evaluation: Piece,
     patches: Patches<'_>,
     domains: &[&Domain],
 ) -> Result<GpuMesh, TessError> {
@@ -311,7 +316,11 @@ pub fn run_evaluation(
             triangles,
         });
     }
-    let source = [shaders::COMMON, shaders::EVALUATION, evaluation_wgsl].concat();
+    let source = crate::wgsl::compose(&[
+        Part::Yours(evaluation),
+        Part::Given("crate::shaders::COMMON", shaders::COMMON),
+        Part::Given("crate::shaders::EVALUATION", shaders::EVALUATION),
+    ])?;
     let none = wgpu::BufferUsages::empty();
     let domain_buffer = storage(gpu, "domain", bytemuck::cast_slice(&points), none);
     let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);

@@ -12,6 +12,7 @@ use wgpu::util::DeviceExt;
 use crate::TessError;
 use crate::patch::GpuVertex;
 use crate::shaders;
+use crate::wgsl::{self, Part, Piece};
 
 /// The first light of seed 000's fragment shader (Listing 13, line 53).
 pub const LIGHT_0: Vec3 = Vec3::new(0.0, 10.0, 0.0);
@@ -337,16 +338,21 @@ pub fn vertex_buffer(gpu: &Gpu, vertices: &[GpuVertex]) -> wgpu::Buffer {
 /// trimming predicates or none.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Shaders<'a> {
-    /// Task 4's `shade`; `None`: flat `base_colour`.
-    pub shading: Option<&'a str>,
-    /// Task 5's predicates with the trim shapes; `None`: nothing is trimmed.
-    pub trimming: Option<(&'a str, &'a Trimming)>,
+    /// Task 4's `shade` ([`crate::wgsl::SHADING`]); `None`: flat `base_colour`.
+    pub shading: Option<Piece>,
+    /// Task 5's predicates ([`crate::wgsl::TRIMMING`]) with the trim
+    /// shapes; `None`: nothing is trimmed.
+    pub trimming: Option<(Piece, &'a Trimming)>,
 }
 
 /// Renders `meshes` into a `width × height` canvas.
 ///
+/// Each of your pieces is checked on its own first (with the given
+/// stand-in for the other), then the shader of both.
+///
 /// Errors: bad trimming input ([`TessError::Invalid`]), WGSL that does not
-/// compile or validate, a failed readback ([`TessError::Gpu`]).
+/// compile or validate ([`TessError::Wgsl`]), a failed readback
+/// ([`TessError::Gpu`]).
 pub fn render(
     gpu: &Gpu,
     width: u32,
@@ -359,16 +365,30 @@ pub fn render(
         Some((_, t)) => t.to_gpu()?,
         None => Trimming::default().to_gpu()?,
     };
-    let source = [
-        shaders::RENDER,
-        shaders_used.shading.unwrap_or(shaders::FLAT_SHADING),
-        &shaders_used
-            .trimming
-            .map_or(shaders::NO_TRIMMING.to_owned(), |(wgsl, _)| {
-                [shaders::TRIMMING, wgsl].concat()
-            }),
-    ]
-    .concat();
+    let render = Part::Given("crate::shaders::RENDER", shaders::RENDER);
+    let flat = Part::Given("crate::shaders::FLAT_SHADING", shaders::FLAT_SHADING);
+    let no_trimming = Part::Given("crate::shaders::NO_TRIMMING", shaders::NO_TRIMMING);
+    let given_trimming = Part::Given("crate::shaders::TRIMMING", shaders::TRIMMING);
+    // Your pieces first, so that their lines are the shader's.
+    let mut yours = Vec::new();
+    let mut given = vec![render];
+    match shaders_used.shading {
+        Some(piece) => yours.push(Part::Yours(piece)),
+        None => given.push(flat),
+    }
+    match shaders_used.trimming {
+        Some((piece, _)) => {
+            yours.push(Part::Yours(piece));
+            given.push(given_trimming);
+        }
+        None => given.push(no_trimming),
+    }
+    if let [shading, trimming] = yours[..] {
+        // Each on its own first: an error in one is not reported as the other's.
+        wgsl::compose(&[shading, render, no_trimming])?;
+        wgsl::compose(&[trimming, render, flat, given_trimming])?;
+    }
+    let source = wgsl::compose(&[yours, given].concat())?;
     let module = gpu.shader("render", &source)?;
     let device = &gpu.device;
     let uniform = |label, bytes: &[u8]| {

@@ -4,10 +4,10 @@
 mod common;
 
 use glam::{DMat4, DVec4, Mat4, Vec2, Vec3};
-use gpu_tessellation::control::control_wgsl;
 use gpu_tessellation::domain::{MAX_TESS_LEVEL, QuadLevels};
 use gpu_tessellation::passes::{ControlSettings, LevelMode, run_control};
 use gpu_tessellation::patch::BezierPatch;
+use gpu_tessellation::wgsl;
 use proptest::prelude::*;
 
 /// Viewport of the adaptive tests.
@@ -63,7 +63,7 @@ fn close(gpu: f32, cpu: f32) -> bool {
 
 #[testkit::test]
 fn uniform_levels_are_clamped_to_one_and_64() {
-    let wgsl = control_wgsl();
+    let piece = wgsl::CONTROL.written();
     let Some(gpu) = common::gpu() else { return };
     let patches = [BezierPatch::flat(Vec2::ZERO, Vec2::ONE, 0.0)];
     for (asked, expected) in [
@@ -78,7 +78,7 @@ fn uniform_levels_are_clamped_to_one_and_64() {
             viewport: VIEWPORT,
             mode: LevelMode::Uniform(asked),
         };
-        let levels = run_control(&gpu, wgsl, &patches, &settings).unwrap();
+        let levels = run_control(&gpu, piece, &patches, &settings).unwrap();
         assert_eq!(
             levels,
             [QuadLevels::uniform(expected)],
@@ -89,7 +89,7 @@ fn uniform_levels_are_clamped_to_one_and_64() {
 
 #[testkit::test]
 fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
-    let wgsl = control_wgsl();
+    let piece = wgsl::CONTROL.written();
     let Some(gpu) = common::gpu() else { return };
     // Eye at z = 3 looking at the origin; P0 lies behind it, at z = 4.
     let mut patch = BezierPatch::flat(Vec2::splat(-0.5), Vec2::splat(0.5), 0.0);
@@ -102,7 +102,7 @@ fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
             pixels_per_segment: 10.0,
         },
     };
-    let levels = run_control(&gpu, wgsl, &[patch], &settings).unwrap()[0];
+    let levels = run_control(&gpu, piece, &[patch], &settings).unwrap()[0];
     assert_eq!(
         levels.outer[0], MAX_TESS_LEVEL,
         "u = 0 holds P0: {levels:?}"
@@ -145,7 +145,7 @@ proptest! {
         eye in (-1.5f32..1.5, -1.5f32..1.5, 3.0f32..6.0),
         target in 2.0f32..40.0,
     ) {
-        let wgsl = control_wgsl();
+        let piece = wgsl::CONTROL.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let view_proj = camera(Vec3::new(eye.0, eye.1, eye.2));
         let settings = ControlSettings {
@@ -153,7 +153,7 @@ proptest! {
             viewport: VIEWPORT,
             mode: LevelMode::Adaptive { pixels_per_segment: target },
         };
-        let levels = run_control(&gpu, wgsl, &patches, &settings).unwrap();
+        let levels = run_control(&gpu, piece, &patches, &settings).unwrap();
         prop_assert_eq!(levels.len(), patches.len());
         for (patch, got) in patches.iter().zip(&levels) {
             let expected = cpu_levels(patch, view_proj, f64::from(target));
@@ -169,7 +169,7 @@ proptest! {
         pairs in prop::collection::vec((common::patch(), common::patch()), 1..20),
         eye in (-1.5f32..1.5, -1.5f32..1.5, 3.0f32..6.0),
     ) {
-        let wgsl = control_wgsl();
+        let piece = wgsl::CONTROL.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let patches: Vec<BezierPatch> = pairs
             .iter()
@@ -180,7 +180,7 @@ proptest! {
             viewport: VIEWPORT,
             mode: LevelMode::Adaptive { pixels_per_segment: 37.0 },
         };
-        let levels = run_control(&gpu, wgsl, &patches, &settings).unwrap();
+        let levels = run_control(&gpu, piece, &patches, &settings).unwrap();
         for pair in levels.chunks_exact(2) {
             prop_assert_eq!(
                 pair[0].outer[2].to_bits(),

@@ -8,9 +8,9 @@ use gpu::Gpu;
 use gpu_tessellation::domain::{
     Domain, QuadLevels, Spacing, TriangleLevels, quad_domain, triangle_domain,
 };
-use gpu_tessellation::evaluation::evaluation_wgsl;
 use gpu_tessellation::passes::{Patches, run_evaluation};
 use gpu_tessellation::patch::{BezierPatch, BezierTriangle, GpuVertex, SurfacePoint};
+use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
 
 /// Largest position difference from the f64 evaluation (control points in
@@ -32,12 +32,12 @@ fn spacing() -> impl Strategy<Value = Spacing> {
 
 fn evaluate_quads(
     gpu: &Gpu,
-    wgsl: &str,
+    piece: Piece,
     patches: &[BezierPatch],
     domains: &[Domain],
 ) -> Vec<GpuVertex> {
     let refs: Vec<&Domain> = domains.iter().collect();
-    run_evaluation(gpu, wgsl, Patches::Quads(patches), &refs)
+    run_evaluation(gpu, piece, Patches::Quads(patches), &refs)
         .unwrap()
         .read(gpu)
         .unwrap()
@@ -45,12 +45,12 @@ fn evaluate_quads(
 
 fn evaluate_triangles(
     gpu: &Gpu,
-    wgsl: &str,
+    piece: Piece,
     triangles: &[BezierTriangle],
     domains: &[Domain],
 ) -> Vec<GpuVertex> {
     let refs: Vec<&Domain> = domains.iter().collect();
-    run_evaluation(gpu, wgsl, Patches::Triangles(triangles), &refs)
+    run_evaluation(gpu, piece, Patches::Triangles(triangles), &refs)
         .unwrap()
         .read(gpu)
         .unwrap()
@@ -110,7 +110,7 @@ fn triangle_cross_length(t: &BezierTriangle, uvw: DVec3) -> f64 {
 
 #[testkit::test]
 fn patch_corners_are_the_corner_control_points() {
-    let wgsl = evaluation_wgsl();
+    let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     let points: [Vec3; 16] = std::array::from_fn(|k| {
         Vec3::new(
@@ -121,7 +121,7 @@ fn patch_corners_are_the_corner_control_points() {
     });
     let patch = BezierPatch::new(points);
     let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = match (d.x as u32, d.y as u32) {
             (0, 0) => 0,
@@ -136,12 +136,12 @@ fn patch_corners_are_the_corner_control_points() {
 
 #[testkit::test]
 fn flat_patch_has_the_planes_normal_everywhere() {
-    let wgsl = evaluation_wgsl();
+    let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     // The plane z = 0.5 seen from +z, u along x and v along y: normal +z.
     let patch = BezierPatch::flat(Vec2::new(-1.0, -0.5), Vec2::new(2.0, 1.5), 0.5);
     let domain = quad_domain(QuadLevels::uniform(5.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = Vec3::new(-1.0 + 3.0 * d.x, -0.5 + 2.0 * d.y, 0.5);
         assert!(
@@ -154,7 +154,7 @@ fn flat_patch_has_the_planes_normal_everywhere() {
 
 #[testkit::test]
 fn normal_uses_the_surface_tangent_not_the_last_rows() {
-    let wgsl = evaluation_wgsl();
+    let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     // A twisted patch: row v = 1 runs along x, row v = 0 along x but rising
     // in z. At v = 0 the u tangent is (1, 0, 1)/√2-ish, not the last row's (1, 0, 0).
@@ -163,7 +163,7 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
         patch.points[i].z = i as f32 / 3.0;
     }
     let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_quads(&gpu, wgsl, &[patch], std::slice::from_ref(&domain));
+    let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         // Central differences stay inside [0, 1]² away from the corners' sides.
         let uv = d
@@ -181,7 +181,7 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
 
 #[testkit::test]
 fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
-    let wgsl = evaluation_wgsl();
+    let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     let (a, b, c) = (
         Vec3::new(0.0, 0.0, 0.0),
@@ -190,7 +190,7 @@ fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
     );
     let triangle = BezierTriangle::flat(a, b, c);
     let domain = triangle_domain(TriangleLevels::uniform(3.0), Spacing::Equal);
-    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
+    let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = a * d.x + b * d.y + c * d.z;
         assert!(
@@ -210,14 +210,14 @@ proptest! {
         levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0, 0.5f32..20.0), 6),
         spacing in spacing(),
     ) {
-        let wgsl = evaluation_wgsl();
+        let piece = wgsl::EVALUATION.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let domains: Vec<Domain> = patches
             .iter()
             .zip(&levels)
             .map(|(_, &(a, b, c))| quad_domain(QuadLevels { outer: [a, b, c, a], inner: [b, c] }, spacing))
             .collect();
-        let got = evaluate_quads(&gpu, wgsl, &patches, &domains);
+        let got = evaluate_quads(&gpu, piece, &patches, &domains);
         let mut k = 0;
         for (patch, domain) in patches.iter().zip(&domains) {
             for d in &domain.points {
@@ -234,14 +234,14 @@ proptest! {
         levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0), 6),
         spacing in spacing(),
     ) {
-        let wgsl = evaluation_wgsl();
+        let piece = wgsl::EVALUATION.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let domains: Vec<Domain> = triangles
             .iter()
             .zip(&levels)
             .map(|(_, &(o, i))| triangle_domain(TriangleLevels { outer: [o, i, o], inner: i }, spacing))
             .collect();
-        let got = evaluate_triangles(&gpu, wgsl, &triangles, &domains);
+        let got = evaluate_triangles(&gpu, piece, &triangles, &domains);
         let mut k = 0;
         for (triangle, domain) in triangles.iter().zip(&domains) {
             for d in &domain.points {
@@ -255,7 +255,7 @@ proptest! {
 
 #[testkit::test]
 fn pn_triangle_interpolates_its_vertices_and_normals() {
-    let wgsl = evaluation_wgsl();
+    let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     let vertices = [
         Vec3::new(0.0, 0.0, 0.0),
@@ -286,7 +286,7 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
         ],
     };
     let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
-    let got = evaluate_triangles(&gpu, wgsl, &[triangle], std::slice::from_ref(&domain));
+    let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = if d.x == 1.0 {
             0

@@ -12,7 +12,8 @@ use gpu::Gpu;
 use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
 use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, brick_texture, render, vertex_buffer};
-use gpu_tessellation::shading::{shading_wgsl, wireframe_edges};
+use gpu_tessellation::shading::wireframe_edges;
+use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
 use testkit::image::Tolerance;
 
@@ -52,7 +53,7 @@ fn bump(lo: Vec2, hi: Vec2, base: f32, scale: f32) -> BezierPatch {
 }
 
 /// Renders height fields (CPU tessellated) with your shading.
-fn render_patches(gpu: &Gpu, wgsl: &str, patches: &[BezierPatch]) -> Canvas {
+fn render_patches(gpu: &Gpu, piece: Piece, patches: &[BezierPatch]) -> Canvas {
     let domain = quad_domain(QuadLevels::uniform(LEVEL), Spacing::Equal);
     let buffers: Vec<_> = patches
         .iter()
@@ -67,7 +68,7 @@ fn render_patches(gpu: &Gpu, wgsl: &str, patches: &[BezierPatch]) -> Canvas {
         })
         .collect();
     let shaders = Shaders {
-        shading: Some(wgsl),
+        shading: Some(piece),
         trimming: None,
     };
     render(gpu, SIZE, SIZE, &scene(), shaders, &meshes).unwrap()
@@ -104,11 +105,11 @@ fn cpu_render(patches: &[(BezierPatch, Vec2, Vec2)]) -> Canvas {
 
 #[testkit::test]
 fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
-    let wgsl = shading_wgsl();
+    let piece = wgsl::SHADING.written();
     let Some(gpu) = common::gpu() else { return };
     let (lo, hi) = (Vec2::splat(-1.0), Vec2::splat(1.0));
     let patch = bump(lo, hi, 0.0, 0.8);
-    let yours = render_patches(&gpu, wgsl, &[patch]);
+    let yours = render_patches(&gpu, piece, &[patch]);
     let cpu = cpu_render(&[(patch, lo, hi)]);
     common::assert_matches_cpu("render_phong_bump", &yours, &cpu, SHADING);
 }
@@ -122,13 +123,13 @@ fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
 /// ```
 #[testkit::test]
 fn the_nearer_of_two_overlapping_patches_is_kept() {
-    let wgsl = shading_wgsl();
+    let piece = wgsl::SHADING.written();
     let Some(gpu) = common::gpu() else { return };
     let (a_lo, a_hi) = (Vec2::splat(-1.0), Vec2::splat(1.0));
     let (b_lo, b_hi) = (Vec2::splat(-0.5), Vec2::splat(0.5));
     let a = bump(a_lo, a_hi, 0.0, 0.4);
     let b = bump(b_lo, b_hi, 0.6, 0.3);
-    let yours = render_patches(&gpu, wgsl, &[b, a]);
+    let yours = render_patches(&gpu, piece, &[b, a]);
     let cpu = cpu_render(&[(a, a_lo, a_hi), (b, b_lo, b_hi)]);
     common::assert_matches_cpu("render_depth_two_patches", &yours, &cpu, SHADING);
 }

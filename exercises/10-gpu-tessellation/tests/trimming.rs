@@ -14,7 +14,7 @@ use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
 use gpu_tessellation::render::{
     DrawMesh, Scene, Shaders, TrimCurve, TrimShape, Trimming, render, vertex_buffer,
 };
-use gpu_tessellation::trimming::trimming_wgsl;
+use gpu_tessellation::wgsl::{self, Piece};
 use testkit::image::Tolerance;
 
 /// Picture size.
@@ -28,7 +28,7 @@ const TRIMMED: Tolerance = Tolerance {
 /// Segments per curve of the CPU's polygon (far finer than a pixel).
 const FLATTENING: usize = 256;
 
-fn trim_render(gpu: &Gpu, wgsl: &str, trimming: &Trimming) -> Canvas {
+fn trim_render(gpu: &Gpu, piece: Piece, trimming: &Trimming) -> Canvas {
     let domain = quad_domain(QuadLevels::uniform(4.0), Spacing::Equal);
     let vertices = vertex_buffer(
         gpu,
@@ -38,7 +38,7 @@ fn trim_render(gpu: &Gpu, wgsl: &str, trimming: &Trimming) -> Canvas {
     scene.view_proj = Mat4::IDENTITY;
     let shaders = Shaders {
         shading: None,
-        trimming: Some((wgsl, trimming)),
+        trimming: Some((piece, trimming)),
     };
     let mesh = DrawMesh {
         vertices: &vertices,
@@ -124,13 +124,13 @@ fn cpu_render(shapes: &[TrimShape]) -> Canvas {
 
 #[track_caller]
 fn check(name: &str, shapes: Vec<TrimShape>) {
-    let wgsl = trimming_wgsl();
+    let piece = wgsl::TRIMMING.written();
     let Some(gpu) = common::gpu() else { return };
     let trimming = Trimming {
         shapes: shapes.clone(),
         ..Trimming::default()
     };
-    let yours = trim_render(&gpu, wgsl, &trimming);
+    let yours = trim_render(&gpu, piece, &trimming);
     common::assert_matches_cpu(name, &yours, &cpu_render(&shapes), TRIMMED);
 }
 
@@ -290,7 +290,7 @@ fn nested_regions_keep_the_inner_island() {
 
 #[testkit::test]
 fn one_newton_step_or_a_coarse_epsilon_trims_less() {
-    let wgsl = trimming_wgsl();
+    let piece = wgsl::TRIMMING.written();
     let Some(gpu) = common::gpu() else { return };
     let trimmed_pixels = |iterations, epsilon| {
         let trimming = Trimming {
@@ -298,7 +298,7 @@ fn one_newton_step_or_a_coarse_epsilon_trims_less() {
             iterations,
             epsilon,
         };
-        trim_render(&gpu, wgsl, &trimming)
+        trim_render(&gpu, piece, &trimming)
             .pixels_not(Rgba::WHITE)
             .len()
     };

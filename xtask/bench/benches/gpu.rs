@@ -18,9 +18,9 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{DVec3, Vec3, Vec4};
 use gpu::Gpu;
 use gpu_tessellation::domain::{Domain, QuadLevels, Spacing, quad_domain};
-use gpu_tessellation::evaluation::evaluation_wgsl;
 use gpu_tessellation::passes::{Patches, run_evaluation};
 use gpu_tessellation::patch::{BezierPatch, GpuVertex};
+use gpu_tessellation::wgsl;
 
 /// De Casteljau on a cubic: the point and the two points of the last step
 /// but one, whose difference is a third of the derivative.
@@ -120,7 +120,7 @@ fn tessellation(c: &mut Criterion) {
             group.bench_function(name, |b| {
                 b.iter(|| {
                     let mesh =
-                        run_evaluation(&gpu, evaluation_wgsl(), Patches::Quads(&patches), &domains)
+                        run_evaluation(&gpu, wgsl::EVALUATION, Patches::Quads(&patches), &domains)
                             .expect("the reference evaluation runs");
                     black_box(mesh.read(&gpu).expect("readback"));
                 });

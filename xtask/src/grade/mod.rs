@@ -70,12 +70,67 @@ pub struct GradeOptions {
     pub out: PathBuf,
     /// Tests run at the same time.
     pub jobs: usize,
+    /// Submissions of a class graded at the same time, as `--jobs` gave
+    /// it; `None`: one per two CPUs (see `submission`).
+    pub submissions_at_once: Option<usize>,
     /// cargo's `--target-dir`; `None`: cargo's default for the workspace.
     pub target_dir: Option<PathBuf>,
     /// Folders the tests must not see (shown empty in the sandbox): the
     /// official solutions, the submissions, other reports. The graded
     /// tree's own `reference/` and the report folder are always hidden.
     pub hidden: Vec<PathBuf>,
+    /// Folders hidden from the tests but not from the build (the build
+    /// folder, once the executables are kept elsewhere).
+    pub hidden_from_tests: Vec<PathBuf>,
+    /// Where to keep the test executables once built (hard links), so
+    /// that they run from there while the build folder builds another
+    /// stage: a class slot's `bin/`. `None`: they run where cargo put them.
+    pub keep_binaries: Option<PathBuf>,
+    /// Shared with other grades running at the same time: at most its
+    /// count of tests run at once across all of them.
+    pub permits: Option<std::sync::Arc<Permits>>,
+    /// Progress bars and spinners on stderr (off where several grades
+    /// share the terminal).
+    pub progress: bool,
+}
+
+/// A counting semaphore: the tests that may run at once, shared by the
+/// submissions of a class graded side by side.
+#[derive(Debug)]
+pub struct Permits {
+    free: Mutex<usize>,
+    freed: std::sync::Condvar,
+}
+
+impl Permits {
+    /// `count` permits (at least one).
+    #[must_use]
+    pub fn new(count: usize) -> Self {
+        Self {
+            free: Mutex::new(count.max(1)),
+            freed: std::sync::Condvar::new(),
+        }
+    }
+
+    /// Waits for a permit, which is given back when the guard drops.
+    pub fn take(&self) -> PermitGuard<'_> {
+        let mut free = self.free.lock().expect("no permit holder panics");
+        while *free == 0 {
+            free = self.freed.wait(free).expect("no permit holder panics");
+        }
+        *free -= 1;
+        PermitGuard(self)
+    }
+}
+
+/// A permit of [`Permits`], held while a test runs.
+pub struct PermitGuard<'a>(&'a Permits);
+
+impl Drop for PermitGuard<'_> {
+    fn drop(&mut self) {
+        *self.0.free.lock().expect("no permit holder panics") += 1;
+        self.0.freed.notify_one();
+    }
 }
 
 impl GradeOptions {
@@ -89,8 +144,13 @@ impl GradeOptions {
             reference: false,
             out,
             jobs: default_jobs(),
+            submissions_at_once: None,
             target_dir: None,
             hidden: Vec::new(),
+            hidden_from_tests: Vec::new(),
+            keep_binaries: None,
+            permits: None,
+            progress: true,
         }
     }
 }
@@ -142,6 +202,26 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
 /// Grades the course at `options.root` as it is, building it into
 /// `options.target_dir`; writes no report files.
 fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
+    prepare(options, edition)?.finish()
+}
+
+/// A course built and its tests listed, ready to run: the first half of a
+/// grade. What the tests run from no longer depends on the build folder
+/// where the executables are kept ([`GradeOptions::keep_binaries`]).
+pub(crate) struct Prepared {
+    options: GradeOptions,
+    edition: Edition,
+    started: Instant,
+    root: PathBuf,
+    out: PathBuf,
+    plans: Vec<Plan>,
+    sandbox: Option<SandboxPlan>,
+    viewer: pipeline::Viewer,
+}
+
+/// Builds the course at `options.root` (every topic and the pipeline's
+/// viewer) and lists its tests.
+pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepared> {
     let started = Instant::now();
     let root = std::path::absolute(&options.root)
         .with_context(|| format!("cannot find {}", options.root.display()))?;
@@ -166,7 +246,9 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
             .cloned()
             .chain([root.join(stage::SOLUTIONS)])
             .collect(),
+        hidden_from_tests: options.hidden_from_tests.clone(),
     });
+    let spinner = |message: String| spinner(message, options.progress);
     for stale in [out.join(PENDING_SNAPSHOTS), out.join("scratch")] {
         if stale.exists() {
             fs::remove_dir_all(&stale)
@@ -222,80 +304,199 @@ fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
                 build?
             }
         };
-        plans.push(plan(&root, &out, topic, build, &sandbox));
+        let build = match (&options.keep_binaries, build) {
+            (Some(keep), Build::Built(binaries)) => {
+                Build::Built(keep_binaries(binaries, &keep.join(&topic.name))?)
+            }
+            (_, build) => build,
+        };
+        plans.push(plan(
+            &root,
+            &out,
+            topic,
+            build,
+            &sandbox,
+            options.keep_binaries.as_deref(),
+        ));
     }
-
-    // Then run all tests of all topics in one pool.
-    let mut jobs: Vec<(usize, usize)> = plans
+    let compiled: Vec<&str> = plans
         .iter()
-        .enumerate()
-        .flat_map(|(p, plan)| {
-            let runnable = plan
-                .tests
-                .iter()
-                .enumerate()
-                .filter(|(_, test)| test.command.is_some());
-            runnable.map(move |(t, _)| (p, t))
-        })
+        .filter(|plan| plan.compile_error.is_none())
+        .map(|plan| plan.topic.name.as_str())
         .collect();
-    // First the first test of every task, then the second of every task,
-    // and so on: the workers run tests of different tasks side by side,
-    // so a task that loops costs one time limit, not one per worker.
-    let mut rank: HashMap<(usize, usize), usize> = HashMap::new();
-    let mut order: HashMap<(usize, usize), usize> = HashMap::new();
-    for &(p, t) in &jobs {
-        let task = (p, plans[p].tests[t].task);
-        let next = rank.entry(task).or_insert(0);
-        order.insert((p, t), *next);
-        *next += 1;
-    }
-    jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
-    let results = run_all(&plans, &jobs, options.jobs.max(1))?;
-
-    let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
-    for (&(p, t), result) in jobs.iter().zip(results) {
-        finished.insert((p, t), result);
-    }
-    let topics: Vec<TopicReport> = plans
-        .into_iter()
-        .enumerate()
-        .map(|(p, plan)| topic_report(&out, plan, |t| finished.remove(&(p, t))))
-        .collect();
-    let spinner = spinner("drawing the pipeline with your stages".to_owned());
-    let pipeline = pipeline::render(
-        &pipeline::Plan {
-            root: &root,
-            out: &out,
-            target_dir: options.target_dir.as_deref(),
-            build_sandbox: build_sandbox.as_ref(),
-            sandbox: sandbox
-                .as_ref()
-                .map(|s| (s.program.as_path(), s.hidden.as_slice())),
-        },
-        &topics,
+    let graded: Vec<&str> = plans.iter().map(|plan| plan.topic.name.as_str()).collect();
+    let viewer = pipeline::build_viewer(
+        &root,
+        options.target_dir.as_deref(),
+        build_sandbox.as_ref(),
+        &graded,
+        &compiled,
     );
-    spinner.finish_and_clear();
-    let report = Report {
-        schema: report::SCHEMA,
-        root,
-        edition,
-        score: report::round2(topics.iter().map(|t| t.score).sum()),
-        max_score: report::round2(topics.iter().map(|t| t.max_score).sum()),
-        duration_s: report::round2(started.elapsed().as_secs_f64()),
-        complete: topics.iter().all(|topic| {
-            topic.compile_error.is_none()
-                && topic.errors.is_empty()
-                && topic
-                    .tasks
-                    .iter()
-                    .all(|task| task.status != TaskStatus::Error)
-        }),
-        integrity: None,
-        sandboxed: sandbox.is_some(),
-        topics,
-        pipeline,
+    let viewer = match (&options.keep_binaries, viewer) {
+        (Some(keep), pipeline::Viewer::Built(binary)) => {
+            match keep_binary(&binary, &keep.join("viewer")) {
+                Ok(kept) => pipeline::Viewer::Built(kept),
+                Err(error) => pipeline::Viewer::Failed(format!("{error:#}")),
+            }
+        }
+        (_, viewer) => viewer,
     };
-    Ok(report)
+    Ok(Prepared {
+        options: options.clone(),
+        edition,
+        started,
+        root,
+        out,
+        plans,
+        sandbox,
+        viewer,
+    })
+}
+
+/// Hard links `binaries` into `dir` (emptied first): cargo replaces an
+/// executable it rebuilds with a new file, so the link keeps this build's.
+fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary>> {
+    if dir.exists() {
+        fs::remove_dir_all(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
+    }
+    binaries
+        .into_iter()
+        .map(|binary| {
+            Ok(TestBinary {
+                executable: keep_binary(&binary.executable, dir)?,
+                name: binary.name,
+            })
+        })
+        .collect()
+}
+
+/// Hard links (or, across file systems, copies) `binary` into `dir`.
+fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
+    fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let name = binary
+        .file_name()
+        .with_context(|| format!("{} has no file name", binary.display()))?;
+    let kept = dir.join(name);
+    let _ = fs::remove_file(&kept);
+    if fs::hard_link(binary, &kept).is_err() {
+        fs::copy(binary, &kept)
+            .with_context(|| format!("cannot copy {} to {}", binary.display(), kept.display()))?;
+    }
+    Ok(kept)
+}
+
+impl Prepared {
+    /// Runs the tests and draws the pipeline: the second half of a grade.
+    pub(crate) fn finish(self) -> Result<Report> {
+        let keep = self.options.keep_binaries.clone();
+        let report = self.run();
+        if let Some(keep) = keep {
+            let _ = fs::remove_dir_all(keep);
+        }
+        report
+    }
+
+    fn run(self) -> Result<Report> {
+        let Prepared {
+            options,
+            edition,
+            started,
+            root,
+            out,
+            plans,
+            sandbox,
+            viewer,
+        } = self;
+        let out = out.as_path();
+        // Then run all tests of all topics in one pool.
+        let mut jobs: Vec<(usize, usize)> = plans
+            .iter()
+            .enumerate()
+            .flat_map(|(p, plan)| {
+                let runnable = plan
+                    .tests
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, test)| test.command.is_some());
+                runnable.map(move |(t, _)| (p, t))
+            })
+            .collect();
+        // First the first test of every task, then the second of every task,
+        // and so on: the workers run tests of different tasks side by side,
+        // so a task that loops costs one time limit, not one per worker.
+        let mut rank: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut order: HashMap<(usize, usize), usize> = HashMap::new();
+        for &(p, t) in &jobs {
+            let task = (p, plans[p].tests[t].task);
+            let next = rank.entry(task).or_insert(0);
+            order.insert((p, t), *next);
+            *next += 1;
+        }
+        jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
+        let results = run_all(
+            &plans,
+            &jobs,
+            options.jobs.max(1),
+            options.permits.as_deref(),
+            options.progress,
+        )?;
+
+        let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
+        for (&(p, t), result) in jobs.iter().zip(results) {
+            finished.insert((p, t), result);
+        }
+        let topics: Vec<TopicReport> = plans
+            .into_iter()
+            .enumerate()
+            .map(|(p, plan)| topic_report(out, plan, |t| finished.remove(&(p, t))))
+            .collect();
+        let spinner = spinner(
+            "drawing the pipeline with your stages".to_owned(),
+            options.progress,
+        );
+        let hidden: Vec<PathBuf> = sandbox
+            .as_ref()
+            .map(|s| {
+                s.hidden
+                    .iter()
+                    .chain(&s.hidden_from_tests)
+                    .cloned()
+                    .collect()
+            })
+            .unwrap_or_default();
+        let pipeline = pipeline::draw_all(
+            &pipeline::Plan {
+                root: &root,
+                out,
+                sandbox: sandbox
+                    .as_ref()
+                    .map(|s| (s.program.as_path(), hidden.as_slice())),
+            },
+            &viewer,
+        );
+        spinner.finish_and_clear();
+        let report = Report {
+            schema: report::SCHEMA,
+            root,
+            edition,
+            score: report::round2(topics.iter().map(|t| t.score).sum()),
+            max_score: report::round2(topics.iter().map(|t| t.max_score).sum()),
+            duration_s: report::round2(started.elapsed().as_secs_f64()),
+            complete: topics.iter().all(|topic| {
+                topic.compile_error.is_none()
+                    && topic.errors.is_empty()
+                    && topic
+                        .tasks
+                        .iter()
+                        .all(|task| task.status != TaskStatus::Error)
+            }),
+            integrity: None,
+            sandboxed: sandbox.is_some(),
+            topics,
+            pipeline,
+        };
+        Ok(report)
+    }
 }
 
 /// `cargo xtask grade`: grade, print the table and the failures.
@@ -373,14 +574,19 @@ fn in_declaration_order(tests: &mut [String], source: &str) {
 struct SandboxPlan {
     program: PathBuf,
     hidden: Vec<PathBuf>,
+    hidden_from_tests: Vec<PathBuf>,
 }
 
+/// The tests of `topic` built as `build`, ready to run. The executables
+/// lie in cargo's target folder, or in `kept` (see
+/// [`GradeOptions::keep_binaries`]); the sandbox shows that folder.
 fn plan(
     root: &Path,
     out: &Path,
     topic: &Topic,
     build: Build,
     sandbox: &Option<SandboxPlan>,
+    kept: Option<&Path>,
 ) -> Plan {
     let mut plan = Plan {
         topic: topic.clone(),
@@ -434,13 +640,18 @@ fn plan(
             env.push(("INSTA_PENDING_DIR".into(), pending.clone().into()));
             let sandbox = sandbox.as_ref().map(|s| run::Sandbox {
                 program: s.program.clone(),
-                // The course and its build (the executable's `target/`).
+                // The course and its build (the executable's `target/`,
+                // or the folder it is kept in).
                 read_only: std::iter::once(root.to_path_buf())
-                    .chain(executable.ancestors().nth(3).map(Path::to_path_buf))
+                    .chain(match kept {
+                        Some(kept) => Some(kept.to_path_buf()),
+                        None => executable.ancestors().nth(3).map(Path::to_path_buf),
+                    })
                     .collect(),
                 hidden: s
                     .hidden
                     .iter()
+                    .chain(&s.hidden_from_tests)
                     .cloned()
                     .chain([out.to_path_buf()])
                     .collect(),
@@ -521,23 +732,38 @@ fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsS
     ]
 }
 
-fn spinner(message: String) -> ProgressBar {
+fn spinner(message: String, shown: bool) -> ProgressBar {
+    if !shown {
+        return ProgressBar::hidden();
+    }
     let spinner = ProgressBar::new_spinner().with_message(message);
     spinner.enable_steady_tick(Duration::from_millis(100));
     spinner
 }
 
-/// Runs the given tests `jobs` at a time, with a progress bar on stderr
-/// (hidden when stderr is not a terminal).
-fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Vec<Finished>> {
+/// Runs the given tests `threads` at a time (and, with `permits`, only
+/// while one is free), with a progress bar on stderr (hidden when stderr
+/// is not a terminal or `progress` is off).
+fn run_all(
+    plans: &[Plan],
+    jobs: &[(usize, usize)],
+    threads: usize,
+    permits: Option<&Permits>,
+    progress: bool,
+) -> Result<Vec<Finished>> {
     run::stop_tests_on_interrupt();
-    let bar = ProgressBar::new(jobs.len() as u64).with_style(
-        ProgressStyle::with_template(
-            "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
-        )
-        .expect("a valid progress template"),
-    );
-    bar.enable_steady_tick(Duration::from_millis(100));
+    let bar = if progress {
+        let bar = ProgressBar::new(jobs.len() as u64).with_style(
+            ProgressStyle::with_template(
+                "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
+            )
+            .expect("a valid progress template"),
+        );
+        bar.enable_steady_tick(Duration::from_millis(100));
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
     let next = AtomicUsize::new(0);
     let results: Mutex<Vec<Option<Result<Finished>>>> =
         Mutex::new((0..jobs.len()).map(|_| None).collect());
@@ -561,6 +787,7 @@ fn run_all(plans: &[Plan], jobs: &[(usize, usize)], threads: usize) -> Result<Ve
                     let result = if skip {
                         Ok(Finished::not_run())
                     } else {
+                        let _permit = permits.map(Permits::take);
                         command.run()
                     };
                     if result.as_ref().is_ok_and(|f| f.exit.timed_out) {

@@ -16,7 +16,6 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 
 use super::build::BuildSandbox;
-use super::report::TopicReport;
 use super::run::Sandbox;
 use crate::cargo::{self, cargo};
 
@@ -105,67 +104,80 @@ pub struct PipelinePicture {
     pub error: Option<String>,
 }
 
-/// Where and how the viewer is built and run.
+/// Where and how the viewer is run.
 pub struct Plan<'a> {
     /// The staged course.
     pub root: &'a Path,
     /// The report folder.
     pub out: &'a Path,
-    /// cargo's target folder for the stage.
-    pub target_dir: Option<&'a Path>,
-    /// The build sandbox, if any.
-    pub build_sandbox: Option<&'a BuildSandbox>,
     /// The test sandbox's program and hidden folders, if any.
     pub sandbox: Option<(&'a Path, &'a [PathBuf])>,
 }
 
-/// Draws the pictures with the stages of the graded topics that compiled;
-/// none when the course has no viewer or none of its topics was graded.
-pub fn render(plan: &Plan<'_>, graded: &[TopicReport]) -> Vec<PipelinePicture> {
-    if !plan
-        .root
+/// The viewer of a grade, built before the tests run.
+#[derive(Debug)]
+pub enum Viewer {
+    /// The course has no viewer, or none of the pipeline's topics was graded.
+    None,
+    /// Its executable.
+    Built(PathBuf),
+    /// Why it did not build.
+    Failed(String),
+}
+
+/// Builds the viewer of the staged course at `root` with the stages of the
+/// `compiled` topics, when the course has one and a pipeline topic is
+/// among the `graded`.
+pub fn build_viewer(
+    root: &Path,
+    target_dir: Option<&Path>,
+    build_sandbox: Option<&BuildSandbox>,
+    graded: &[&str],
+    compiled: &[&str],
+) -> Viewer {
+    let has_viewer = root
         .join("xtask")
         .join("viewer")
         .join("Cargo.toml")
-        .is_file()
-    {
-        return Vec::new();
+        .is_file();
+    if !has_viewer || !STAGES.iter().any(|(_, topic)| graded.contains(topic)) {
+        return Viewer::None;
     }
     let features: Vec<&str> = STAGES
         .iter()
-        .filter(|(_, topic)| {
-            graded
-                .iter()
-                .any(|t| t.name == *topic && t.compile_error.is_none())
-        })
+        .filter(|(_, topic)| compiled.contains(topic))
         .map(|(feature, _)| *feature)
         .collect();
-    if !STAGES
-        .iter()
-        .any(|(_, topic)| graded.iter().any(|t| t.name == *topic))
-    {
-        return Vec::new();
+    match build(root, target_dir, build_sandbox, &features) {
+        Ok(binary) => Viewer::Built(binary),
+        Err(error) => Viewer::Failed(format!("{error:#}")),
     }
+}
+
+/// Draws the pictures with the viewer built by [`build_viewer`].
+pub fn draw_all(plan: &Plan<'_>, viewer: &Viewer) -> Vec<PipelinePicture> {
     let dir = plan.out.join("pipeline");
     let _ = fs::remove_dir_all(&dir);
-    let binary = match build(plan, &features).and_then(|binary| {
-        fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-        Ok(binary)
-    }) {
-        Ok(binary) => binary,
-        Err(error) => {
-            return SCENES
-                .iter()
-                .map(|scene| PipelinePicture {
-                    what: scene.what.to_owned(),
-                    yours: None,
-                    expected: expected(plan.root, plan.out, scene),
-                    stages: Vec::new(),
-                    error: Some(format!("the viewer did not build: {error:#}")),
-                })
-                .collect();
-        }
+    let failed = |error: String| {
+        SCENES
+            .iter()
+            .map(|scene| PipelinePicture {
+                what: scene.what.to_owned(),
+                yours: None,
+                expected: expected(plan.root, plan.out, scene),
+                stages: Vec::new(),
+                error: Some(error.clone()),
+            })
+            .collect()
     };
+    let binary = match viewer {
+        Viewer::None => return Vec::new(),
+        Viewer::Failed(error) => return failed(format!("the viewer did not build: {error}")),
+        Viewer::Built(binary) => binary,
+    };
+    if let Err(error) = fs::create_dir_all(&dir) {
+        return failed(format!("cannot create {}: {error}", dir.display()));
+    }
     // A stage that loops costs one time limit, not one per picture.
     let mut stuck: Option<String> = None;
     SCENES
@@ -179,7 +191,7 @@ pub fn render(plan: &Plan<'_>, graded: &[TopicReport]) -> Vec<PipelinePicture> {
                 error: Some(format!("not drawn: {error}")),
             },
             None => {
-                let picture = draw(plan, &binary, &dir, scene);
+                let picture = draw(plan, binary, &dir, scene);
                 if picture.yours.is_none() {
                     stuck = picture.error.clone().filter(|e| e.contains("took longer"));
                 }
@@ -200,10 +212,15 @@ fn expected(root: &Path, out: &Path, scene: &Scene) -> Option<PathBuf> {
 }
 
 /// Builds the viewer without its window; its executable.
-fn build(plan: &Plan<'_>, features: &[&str]) -> Result<PathBuf> {
+fn build(
+    root: &Path,
+    target_dir: Option<&Path>,
+    build_sandbox: Option<&BuildSandbox>,
+    features: &[&str],
+) -> Result<PathBuf> {
     let mut command = cargo();
     command
-        .current_dir(plan.root)
+        .current_dir(root)
         .args(["build", "--package", VIEWER, "--no-default-features"])
         .args([
             "--message-format",
@@ -214,10 +231,10 @@ fn build(plan: &Plan<'_>, features: &[&str]) -> Result<PathBuf> {
     if !features.is_empty() {
         command.args(["--features", &features.join(",")]);
     }
-    if let Some(dir) = plan.target_dir {
+    if let Some(dir) = target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
-    let mut command = match plan.build_sandbox {
+    let mut command = match build_sandbox {
         Some(sandbox) => sandbox.wrap(&command)?,
         None => command,
     };
