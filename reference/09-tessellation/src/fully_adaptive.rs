@@ -50,8 +50,11 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// ([`EdgeTest::must_split`]) with the new vertex at the parameter
 /// midpoint, evaluated on `patch`; a triangle with one, two or three split
 /// edges is replaced by 2, 3 or 4 triangles (the patterns in the module
-/// documentation; with two, the quadrilateral is cut along its shorter
-/// diagonal in the parameter plane, the first one on a tie).
+/// documentation; with two split edges `a→b` (midpoint `m0`) and `b→c`
+/// (`m1`), counter-clockwise, the quadrilateral `a m0 m1 c` is cut along
+/// its shorter diagonal in the parameter plane, `a–m1` or `m0–c`, and on a
+/// tie along `a–m1`: from the corner the unsplit edge `c→a` runs into to
+/// the midpoint of the far split edge).
 ///
 /// The result keeps the initial vertices, in order, and appends the new
 /// ones; triangles keep their orientation in the parameter plane. An edge
