@@ -87,16 +87,15 @@ fn storage(gpu: &Gpu, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> w
 
 fn compute_pipeline(
     gpu: &Gpu,
-    source: &str,
+    module: &wgpu::ShaderModule,
     entry: &str,
 ) -> Result<wgpu::ComputePipeline, TessError> {
-    let module = gpu.shader(entry, source)?;
     Ok(gpu.validated(entry, || {
         gpu.device
             .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                 label: Some(entry),
                 layout: None,
-                module: &module,
+                module,
                 entry_point: Some(entry),
                 compilation_options: Default::default(),
                 cache: None,
@@ -175,7 +174,8 @@ pub fn run_control(
         Part::Given("crate::shaders::COMMON", shaders::COMMON),
         Part::Given("crate::shaders::CONTROL", shaders::CONTROL),
     ])?;
-    let pipeline = compute_pipeline(gpu, &source, "control_main")?;
+    let module = gpu.shader("control", &source)?;
+    let pipeline = compute_pipeline(gpu, &module, "control_main")?;
     let gpu_patches: Vec<[Vec4; 16]> = patches.iter().map(BezierPatch::to_gpu).collect();
     let patch_buffer = storage(
         gpu,
@@ -262,95 +262,132 @@ impl Patches<'_> {
 
 /// Runs the evaluation pass with `evaluation` (task 3,
 /// [`crate::wgsl::EVALUATION`]): patch `k` is evaluated at every point of
-/// `domains[k]` (quads read `(u, v)`, triangles `(u, v, w)`).
+/// `domains[k]` (quads read `(u, v)`, triangles `(u, v, w)`). Compiles
+/// the pass first; to run it many times, make an [`EvaluationPass`] once.
 ///
-/// Errors: `domains.len()` differs from the number of patches, or a domain
-/// point is not finite ([`TessError::Invalid`]); WGSL errors ([`TessError::Wgsl`]).
+/// Errors: as [`EvaluationPass::new`] and [`EvaluationPass::run`].
 pub fn run_evaluation(
     gpu: &Gpu,
     evaluation: Piece,
     patches: Patches<'_>,
     domains: &[&Domain],
 ) -> Result<GpuMesh, TessError> {
-    if domains.len() != patches.len() {
-        return Err(TessError::Invalid(format!(
-            "{} patches but {} domains",
-            patches.len(),
-            domains.len()
-        )));
+    EvaluationPass::new(gpu, evaluation)?.run(gpu, patches, domains)
+}
+
+/// The evaluation pass, compiled: its shader and its two pipelines, made
+/// once (the set-up of a frame) and run for every frame.
+#[derive(Debug)]
+pub struct EvaluationPass {
+    quads: wgpu::ComputePipeline,
+    triangles: wgpu::ComputePipeline,
+}
+
+impl EvaluationPass {
+    /// Checks and compiles `evaluation` with the given WGSL.
+    ///
+    /// Errors: WGSL that does not compile or validate ([`TessError::Wgsl`],
+    /// [`TessError::Gpu`]).
+    pub fn new(gpu: &Gpu, evaluation: Piece) -> Result<Self, TessError> {
+        let source = crate::wgsl::compose(&[
+            Part::Yours(evaluation),
+            Part::Given("crate::shaders::COMMON", shaders::COMMON),
+            Part::Given("crate::shaders::EVALUATION", shaders::EVALUATION),
+        ])?;
+        let module = gpu.shader("evaluation", &source)?;
+        Ok(Self {
+            quads: compute_pipeline(gpu, &module, "evaluate_quads")?,
+            triangles: compute_pipeline(gpu, &module, "evaluate_triangles")?,
+        })
     }
-    if domains
-        .iter()
-        .any(|d| d.points.iter().any(|p| !p.is_finite()))
-    {
-        return Err(TessError::Invalid("a domain point is not finite".into()));
-    }
-    let mut jobs = Vec::with_capacity(domains.len());
-    let mut points: Vec<Vec4> = Vec::new();
-    let mut triangles = Vec::new();
-    let mut max_points = 0;
-    for domain in domains {
-        let offset = points.len() as u32;
-        jobs.push(Job {
-            domain_offset: offset,
-            point_count: domain.points.len() as u32,
-            vertex_offset: offset,
-            pad: 0,
-        });
-        max_points = max_points.max(domain.points.len() as u32);
-        points.extend(domain.points.iter().map(|p: &Vec3| p.extend(0.0)));
-        triangles.extend(domain.triangles.iter().map(|t| t.map(|k| k + offset)));
-    }
-    let vertex_count = points.len() as u32;
-    let zeros = vec![GpuVertex::default(); points.len()];
-    let vertices = storage(
-        gpu,
-        "vertices",
-        bytemuck::cast_slice(&zeros),
-        wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
-    );
-    if jobs.is_empty() || max_points == 0 {
-        return Ok(GpuMesh {
+
+    /// Evaluates patch `k` at every point of `domains[k]` (quads read
+    /// `(u, v)`, triangles `(u, v, w)`): uploads, dispatches, and leaves
+    /// the vertices on the GPU.
+    ///
+    /// Errors: `domains.len()` differs from the number of patches, or a
+    /// domain point is not finite ([`TessError::Invalid`]); a bind group
+    /// wgpu refuses ([`TessError::Gpu`]).
+    pub fn run(
+        &self,
+        gpu: &Gpu,
+        patches: Patches<'_>,
+        domains: &[&Domain],
+    ) -> Result<GpuMesh, TessError> {
+        if domains.len() != patches.len() {
+            return Err(TessError::Invalid(format!(
+                "{} patches but {} domains",
+                patches.len(),
+                domains.len()
+            )));
+        }
+        if domains
+            .iter()
+            .any(|d| d.points.iter().any(|p| !p.is_finite()))
+        {
+            return Err(TessError::Invalid("a domain point is not finite".into()));
+        }
+        let mut jobs = Vec::with_capacity(domains.len());
+        let mut points: Vec<Vec4> = Vec::new();
+        let mut triangles = Vec::new();
+        let mut max_points = 0;
+        for domain in domains {
+            let offset = points.len() as u32;
+            jobs.push(Job {
+                domain_offset: offset,
+                point_count: domain.points.len() as u32,
+                vertex_offset: offset,
+                pad: 0,
+            });
+            max_points = max_points.max(domain.points.len() as u32);
+            points.extend(domain.points.iter().map(|p: &Vec3| p.extend(0.0)));
+            triangles.extend(domain.triangles.iter().map(|t| t.map(|k| k + offset)));
+        }
+        let vertex_count = points.len() as u32;
+        let zeros = vec![GpuVertex::default(); points.len()];
+        let vertices = storage(
+            gpu,
+            "vertices",
+            bytemuck::cast_slice(&zeros),
+            wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
+        );
+        if jobs.is_empty() || max_points == 0 {
+            return Ok(GpuMesh {
+                vertices,
+                vertex_count,
+                triangles,
+            });
+        }
+        let none = wgpu::BufferUsages::empty();
+        let domain_buffer = storage(gpu, "domain", bytemuck::cast_slice(&points), none);
+        let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);
+        let (pipeline, patch_binding, patch_buffer) = match patches {
+            Patches::Quads(p) => {
+                let data: Vec<[Vec4; 16]> = p.iter().map(BezierPatch::to_gpu).collect();
+                let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
+                (&self.quads, 0, buffer)
+            }
+            Patches::Triangles(t) => {
+                let data: Vec<[Vec4; 10]> = t.iter().map(BezierTriangle::to_gpu).collect();
+                let buffer = storage(gpu, "triangles", bytemuck::cast_slice(&data), none);
+                (&self.triangles, 1, buffer)
+            }
+        };
+        let group = bind(
+            gpu,
+            pipeline,
+            &[
+                (patch_binding, &patch_buffer),
+                (2, &domain_buffer),
+                (3, &job_buffer),
+                (4, &vertices),
+            ],
+        )?;
+        dispatch(gpu, pipeline, &group, [max_points, jobs.len() as u32]);
+        Ok(GpuMesh {
             vertices,
             vertex_count,
             triangles,
-        });
+        })
     }
-    let source = crate::wgsl::compose(&[
-        Part::Yours(evaluation),
-        Part::Given("crate::shaders::COMMON", shaders::COMMON),
-        Part::Given("crate::shaders::EVALUATION", shaders::EVALUATION),
-    ])?;
-    let none = wgpu::BufferUsages::empty();
-    let domain_buffer = storage(gpu, "domain", bytemuck::cast_slice(&points), none);
-    let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);
-    let (entry, patch_binding, patch_buffer) = match patches {
-        Patches::Quads(p) => {
-            let data: Vec<[Vec4; 16]> = p.iter().map(BezierPatch::to_gpu).collect();
-            let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
-            ("evaluate_quads", 0, buffer)
-        }
-        Patches::Triangles(t) => {
-            let data: Vec<[Vec4; 10]> = t.iter().map(BezierTriangle::to_gpu).collect();
-            let buffer = storage(gpu, "triangles", bytemuck::cast_slice(&data), none);
-            ("evaluate_triangles", 1, buffer)
-        }
-    };
-    let pipeline = compute_pipeline(gpu, &source, entry)?;
-    let group = bind(
-        gpu,
-        &pipeline,
-        &[
-            (patch_binding, &patch_buffer),
-            (2, &domain_buffer),
-            (3, &job_buffer),
-            (4, &vertices),
-        ],
-    )?;
-    dispatch(gpu, &pipeline, &group, [max_points, jobs.len() as u32]);
-    Ok(GpuMesh {
-        vertices,
-        vertex_count,
-        triangles,
-    })
 }

@@ -5,20 +5,23 @@
 //!
 //! The adapter is printed first: on a machine without a GPU it is a
 //! software rasterizer (lavapipe, device type `Cpu`), and its figures are
-//! CPU figures, not GPU figures. The GPU timing is a whole call: upload,
-//! shader compilation and pipeline creation, dispatch, readback.
+//! CPU figures, not GPU figures. The one-time set-up (the device, the
+//! shader's check and compilation, the pipelines) is timed apart from the
+//! per-frame work (upload, dispatch, readback), which is measured at
+//! several levels up to two million triangles, in triangles per second.
 //!
 //! ```text
 //! cargo xtask bench --features gpu --bench gpu
 //! ```
 
 use std::hint::black_box;
+use std::time::Instant;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{DVec3, Vec3, Vec4};
 use gpu::Gpu;
 use gpu_tessellation::domain::{Domain, QuadLevels, Spacing, quad_domain};
-use gpu_tessellation::passes::{Patches, run_evaluation};
+use gpu_tessellation::passes::{EvaluationPass, Patches};
 use gpu_tessellation::patch::{BezierPatch, GpuVertex};
 use gpu_tessellation::wgsl;
 
@@ -66,10 +69,11 @@ fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> {
         .collect()
 }
 
-/// Patches per run.
+/// Patches per frame.
 const PATCHES: usize = 256;
-/// Uniform tessellation level: 2·L² triangles, (L + 1)² vertices per patch.
-const LEVEL: f32 = 32.0;
+/// Uniform tessellation levels measured: 2·L² triangles, (L + 1)² vertices
+/// per patch; at 64, 256 patches make 2.1 million triangles.
+const LEVELS: [f32; 4] = [8.0, 16.0, 32.0, 64.0];
 
 /// A fixed set of patches (a linear congruential generator keeps it the
 /// same in every run).
@@ -88,26 +92,10 @@ fn patch_set() -> Vec<BezierPatch> {
 
 fn tessellation(c: &mut Criterion) {
     let patches = patch_set();
-    let domain = quad_domain(QuadLevels::uniform(LEVEL), Spacing::Equal);
-    let triangles = (domain.triangles.len() * PATCHES) as u64;
-    println!(
-        "{PATCHES} patches at level {LEVEL}: {} triangles and {} vertices per patch; \
-         throughput below is in triangles (patches/s = triangles/s ÷ {})",
-        domain.triangles.len(),
-        domain.points.len(),
-        domain.triangles.len()
-    );
-    let mut group = c.benchmark_group("bicubic tessellation, 256 patches at level 32");
-    group.throughput(Throughput::Elements(triangles));
-    group.sample_size(10);
-    group.bench_function("cpu tessellate_patch (f64 de Casteljau)", |b| {
-        b.iter(|| {
-            for p in &patches {
-                black_box(tessellate_patch(p, &domain.points));
-            }
-        });
-    });
-    match Gpu::new() {
+    let started = Instant::now();
+    let gpu = Gpu::new();
+    let device_ms = started.elapsed().as_secs_f64() * 1e3;
+    let gpu = match gpu {
         Ok(gpu) => {
             let kind = if gpu.is_software() {
                 "SOFTWARE adapter, not a GPU figure"
@@ -115,20 +103,60 @@ fn tessellation(c: &mut Criterion) {
                 "hardware adapter"
             };
             println!("adapter: {} [{kind}]", gpu.describe());
+            println!("set-up: the device in {device_ms:.1} ms (once)");
+            Some(gpu)
+        }
+        Err(e) => {
+            println!("no GPU benchmark: {e}");
+            None
+        }
+    };
+    let pass = gpu.as_ref().map(|gpu| {
+        let mut setup = c.benchmark_group("gpu set-up");
+        setup.sample_size(10);
+        setup.bench_function("check and compile the evaluation pass (naga, pipelines)", |b| {
+            b.iter(|| {
+                black_box(EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles"))
+            });
+        });
+        setup.finish();
+        EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles")
+    });
+    for level in LEVELS {
+        let domain = quad_domain(QuadLevels::uniform(level), Spacing::Equal);
+        let triangles = (domain.triangles.len() * PATCHES) as u64;
+        println!(
+            "{PATCHES} patches at level {level}: {triangles} triangles, {} vertices; \
+             throughput in triangles (patches/s = triangles/s ÷ {})",
+            domain.points.len() * PATCHES,
+            domain.triangles.len()
+        );
+        let mut group = c.benchmark_group(format!(
+            "bicubic tessellation per frame, {PATCHES} patches at level {level}"
+        ));
+        group.throughput(Throughput::Elements(triangles));
+        group.sample_size(10);
+        group.bench_function("cpu tessellate_patch (f64 de Casteljau)", |b| {
+            b.iter(|| {
+                for p in &patches {
+                    black_box(tessellate_patch(p, &domain.points));
+                }
+            });
+        });
+        if let (Some(gpu), Some(pass)) = (&gpu, &pass) {
             let domains: Vec<&Domain> = vec![&domain; PATCHES];
-            let name = format!("gpu evaluation pass + readback on {}", gpu.info.name);
+            let name = format!("gpu evaluation pass: upload, dispatch, readback on {}", gpu.info.name);
             group.bench_function(name, |b| {
                 b.iter(|| {
-                    let mesh =
-                        run_evaluation(&gpu, wgsl::EVALUATION, Patches::Quads(&patches), &domains)
-                            .expect("the reference evaluation runs");
-                    black_box(mesh.read(&gpu).expect("readback"));
+                    let mesh = pass
+                        .run(gpu, Patches::Quads(&patches), &domains)
+                        .expect("the reference evaluation runs");
+                    black_box(mesh.read(gpu).expect("readback"));
                 });
             });
         }
-        Err(e) => println!("no GPU benchmark: {e}"),
+        group.finish();
     }
-    group.finish();
 }
 
 criterion_group!(benches, tessellation);
