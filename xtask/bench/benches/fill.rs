@@ -8,16 +8,24 @@
 //! Contenders: the reference scanline fill with its active edge table
 //! (writing spans, and pixel by pixel through `fill_polygon`), the
 //! reference edge-function rasterizer (which also interpolates depth
-//! and colour per pixel), imageproc's `draw_polygon_mut`, and tiny-skia's
-//! `fill_path` without antialiasing. tiny-skia samples pixel centres at
-//! +0.5, so its paths are shifted by half a pixel to cover the same
-//! pixels.
+//! and colour per pixel), the reference blocked rasterizer (task 03/6: 8 × 8
+//! blocks, trivially accepted and rejected, eight lanes per row; coverage
+//! only), euc (a software renderer: a pipeline whose vertex stage passes
+//! clip positions through and whose fragment stage writes the
+//! interpolated colour, no depth test), imageproc's `draw_polygon_mut`,
+//! and tiny-skia's `fill_path` without antialiasing. tiny-skia samples
+//! pixel centres at +0.5, so its paths are shifted by half a pixel to
+//! cover the same pixels.
 
 use std::hint::black_box;
 
 use canvas::{Canvas, Rgba, Vec2, Vertex};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main};
+use euc::buffer::Buffer2d;
+use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
+use euc::{DepthStrategy, Pipeline};
+use fill::blocked::fill_triangle_blocked;
 use fill::edge_function::fill_triangle;
 use fill::scanline::{fill_polygon, fill_spans};
 use image::RgbaImage;
@@ -80,6 +88,35 @@ fn skia_path(tri: &[Vec2; 3]) -> Path {
         .expect("a non-degenerate triangle makes a path")
 }
 
+/// euc's pipeline for the benchmark: positions in clip space as given, the
+/// vertex colour interpolated, no depth test.
+struct Gouraud;
+
+impl Pipeline for Gouraud {
+    type Vertex = ([f32; 4], [f32; 3]);
+    type VsOut = (f32, f32, f32);
+    type Pixel = u32;
+
+    fn vert(&self, (position, [r, g, b]): &Self::Vertex) -> ([f32; 4], Self::VsOut) {
+        (*position, (*r, *g, *b))
+    }
+
+    fn frag(&self, &(r, g, b): &Self::VsOut) -> Self::Pixel {
+        let byte = |c: f32| (c.clamp(0.0, 1.0) * 255.0) as u32;
+        (byte(r) << 16) | (byte(g) << 8) | byte(b) | 0xFF00_0000
+    }
+
+    fn get_depth_strategy(&self) -> DepthStrategy {
+        DepthStrategy::None
+    }
+}
+
+/// A pixel position as euc's clip space (y down in euc's screen).
+fn euc_position(v: Vec2) -> [f32; 4] {
+    let side = SIDE as f32;
+    [2.0 * (v.x + 0.5) / side - 1.0, 1.0 - 2.0 * (v.y + 0.5) / side, 0.5, 1.0]
+}
+
 /// Runs all contenders on one triangle set.
 fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]]) {
     let mut canvas = Canvas::new(SIDE, SIDE);
@@ -124,6 +161,41 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
                     fill_triangle(*tri, viewport, |f, _| canvas.plot(f));
                 }
                 black_box(&canvas);
+            });
+        },
+    );
+    group.bench_function(
+        "reference fill_triangle_blocked (8 × 8 blocks, lanes; coverage only)",
+        |b| {
+            b.iter(|| {
+                for tri in triangles {
+                    fill_triangle_blocked(*tri, viewport, |p| canvas.set(p, Rgba::WHITE), |_| {});
+                }
+                black_box(&canvas);
+            });
+        },
+    );
+    let euc_vertices: Vec<([f32; 4], [f32; 3])> = triangles
+        .iter()
+        .flat_map(|tri| {
+            [
+                (euc_position(tri[0]), [1.0, 0.0, 0.0]),
+                (euc_position(tri[1]), [0.0, 1.0, 0.0]),
+                (euc_position(tri[2]), [0.0, 0.0, 1.0]),
+            ]
+        })
+        .collect();
+    let mut colour = Buffer2d::new([SIDE as usize, SIDE as usize], 0_u32);
+    group.bench_function(
+        "euc Triangles (colour interpolated, no depth test)",
+        |b| {
+            b.iter(|| {
+                Gouraud.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+                    &euc_vertices,
+                    &mut colour,
+                    None,
+                );
+                black_box(&colour);
             });
         },
     );
