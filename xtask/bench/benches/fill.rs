@@ -114,7 +114,12 @@ impl Pipeline for Gouraud {
 /// A pixel position as euc's clip space (y down in euc's screen).
 fn euc_position(v: Vec2) -> [f32; 4] {
     let side = SIDE as f32;
-    [2.0 * (v.x + 0.5) / side - 1.0, 1.0 - 2.0 * (v.y + 0.5) / side, 0.5, 1.0]
+    [
+        2.0 * (v.x + 0.5) / side - 1.0,
+        1.0 - 2.0 * (v.y + 0.5) / side,
+        0.5,
+        1.0,
+    ]
 }
 
 /// Runs all contenders on one triangle set.
@@ -186,19 +191,16 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
         })
         .collect();
     let mut colour = Buffer2d::new([SIDE as usize, SIDE as usize], 0_u32);
-    group.bench_function(
-        "euc Triangles (colour interpolated, no depth test)",
-        |b| {
-            b.iter(|| {
-                Gouraud.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
-                    &euc_vertices,
-                    &mut colour,
-                    None,
-                );
-                black_box(&colour);
-            });
-        },
-    );
+    group.bench_function("euc Triangles (colour interpolated, no depth test)", |b| {
+        b.iter(|| {
+            Gouraud.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+                &euc_vertices,
+                &mut colour,
+                None,
+            );
+            black_box(&colour);
+        });
+    });
     let polygons: Vec<[Point<i32>; 3]> = triangles
         .iter()
         .map(|tri| tri.map(|v| Point::new(v.x as i32, v.y as i32)))

@@ -114,11 +114,16 @@ fn tessellation(c: &mut Criterion) {
     let pass = gpu.as_ref().map(|gpu| {
         let mut setup = c.benchmark_group("gpu set-up");
         setup.sample_size(10);
-        setup.bench_function("check and compile the evaluation pass (naga, pipelines)", |b| {
-            b.iter(|| {
-                black_box(EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles"))
-            });
-        });
+        setup.bench_function(
+            "check and compile the evaluation pass (naga, pipelines)",
+            |b| {
+                b.iter(|| {
+                    black_box(
+                        EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles"),
+                    )
+                });
+            },
+        );
         setup.finish();
         EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles")
     });
@@ -145,7 +150,10 @@ fn tessellation(c: &mut Criterion) {
         });
         if let (Some(gpu), Some(pass)) = (&gpu, &pass) {
             let domains: Vec<&Domain> = vec![&domain; PATCHES];
-            let name = format!("gpu evaluation pass: upload, dispatch, readback on {}", gpu.info.name);
+            let name = format!(
+                "gpu evaluation pass: upload, dispatch, readback on {}",
+                gpu.info.name
+            );
             group.bench_function(name, |b| {
                 b.iter(|| {
                     let mesh = pass
