@@ -612,6 +612,13 @@ fn grade_class(
         .target_dir
         .clone()
         .unwrap_or_else(|| stage::home(official).join("build"));
+    // Every slot's folder exists before the first test runs, so that each
+    // slot's sandbox hides all the others (`stage::hidden_beside` hides
+    // what it finds).
+    for index in 0..slots {
+        let home = stage::class_home(official, index);
+        fs::create_dir_all(&home).with_context(|| format!("cannot create {}", home.display()))?;
+    }
     let turn = Mutex::new(());
     let permits = Arc::new(Permits::new(options.jobs));
     let bar = ProgressBar::new(submissions.len() as u64).with_style(
