@@ -15,6 +15,7 @@
 //!   definitions, exactly (what topics 01–03 compare with);
 //! - [`oracles`]: values by their definitions (binomials, Bernstein
 //!   polynomials), never by the algorithms the tasks teach;
+//! - [`topology`]: how the triangles of a mesh meet (directed edge counts);
 //! - [`test`]: `#[testkit::test]`, the `#[test]` of every graded test: it
 //!   tells the grader that the test ran to its end over a channel the code
 //!   under test cannot forge.
@@ -26,6 +27,7 @@ pub mod oracles;
 pub mod pixels;
 pub mod raster;
 pub mod strategies;
+pub mod topology;
 
 pub use raster::{
     RASTER_DIFF_BEGIN, RASTER_DIFF_END, assert_canvas_eq, assert_pixels_eq, canvas_from_pixels,

@@ -1,7 +1,6 @@
 //! Topic 09: tessellation of freeform surfaces on the CPU — uniform and
 //! per-patch adaptive tessellation of Bézier patches, fully adaptive
-//! refinement with the seed's edge tests, the OpenGL primitive generator as
-//! a pure function, and PN triangles. The task sheet is `README.md` next to
+//! refinement with the seed's edge tests, and PN triangles. The task sheet is `README.md` next to
 //! this crate.
 //!
 //! Modules marked *Given* are course code you read and use; the others are
@@ -23,9 +22,6 @@ pub mod patch_grid;
 /// Given: the indexed triangle mesh, with OBJ and ASCII PLY output.
 pub mod mesh;
 
-/// Given: the zipper that triangulates the strip between two polylines.
-pub mod stitch;
-
 /// Given: a small CPU z-buffer renderer (shaded and wireframe) for pictures.
 pub mod render;
 
@@ -41,8 +37,5 @@ pub mod edge_tests;
 /// Task 3, part 2: fully adaptive refinement with a work list and midpoint insertion.
 pub mod fully_adaptive;
 
-/// Task 4: the OpenGL primitive generator for the quad and triangle domains.
-pub mod primitive_generator;
-
-/// Task 5: cubic Bézier triangles and PN triangles.
+/// Task 4: cubic Bézier triangles and PN triangles.
 pub mod bezier_triangle;

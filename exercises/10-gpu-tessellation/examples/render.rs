@@ -14,7 +14,7 @@ use std::path::PathBuf;
 
 use glam::{Vec2, Vec3};
 use gpu::Gpu;
-use gpu_tessellation::domain::{Spacing, quad_domain};
+use gpu_tessellation::domain::Spacing;
 use gpu_tessellation::passes::{ControlSettings, LevelMode, Patches, run_control, run_evaluation};
 use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, TrimCurve, TrimShape, Trimming, render};
@@ -155,10 +155,7 @@ fn main() -> Result<(), TessError> {
             mode: figure.level,
         };
         let levels = run_control(&gpu, wgsl::CONTROL, &figure.patches, &settings)?;
-        let domains: Vec<_> = levels
-            .iter()
-            .map(|l| quad_domain(*l, Spacing::Equal))
-            .collect();
+        let domains: Vec<_> = levels.iter().map(|l| l.domain(Spacing::Equal)).collect();
         let domain_refs: Vec<_> = domains.iter().collect();
         let mesh = run_evaluation(
             &gpu,

@@ -5,20 +5,21 @@
 //! and trimming in the fragment shader. The task sheet is `README.md` next
 //! to this crate.
 //!
-//! Your code is WGSL in four `.wgsl` files (and one Rust function): the
-//! given modules put it together with their own WGSL ([`wgsl::compose`]),
+//! Your code is WGSL in four `.wgsl` files and Rust in two (the primitive
+//! generator and the wireframe's edges): the given modules put the WGSL
+//! together with their own ([`wgsl::compose`]),
 //! check it, run it on the GPU (or on a software adapter such as
 //! lavapipe) and read the results back. What you build, test and grade is
 //! always your own code, and a shader error names your file and line.
 //!
 //! ```text
-//!  patches ─▶ control pass (src/control.wgsl) ─▶ levels ─▶ domain (given, CPU)
+//!  patches ─▶ control pass (src/control.wgsl) ─▶ levels ─▶ src/domain.rs (CPU)
 //!          ─▶ evaluation pass (src/evaluation.wgsl) ─▶ vertices ─▶ render pass:
 //!             src/shading.wgsl + src/trimming.wgsl + wireframe (shading.rs)
 //! ```
 #![warn(missing_docs)]
 
-/// Given: the primitive generator (domain points and triangles).
+/// Task 2: the primitive generator (domain points and triangles).
 pub mod domain;
 /// Given: the compute passes around tasks 1 and 3.
 pub mod passes;

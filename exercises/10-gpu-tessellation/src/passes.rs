@@ -3,6 +3,11 @@
 //! (surface points per domain point, your task 3). Given code: it puts
 //! your WGSL file and the given WGSL of [`crate::shaders`] together
 //! ([`crate::wgsl::compose`]), runs it and reads the results back.
+//!
+//! Between the two sits the primitive generator (your task 2,
+//! [`crate::domain`]): the control pass's [`QuadLevels`] go in, a domain
+//! comes out, and [`Domain`] is its points as the evaluation pass reads
+//! them (what GLSL calls `gl_TessCoord`).
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -10,10 +15,84 @@ use gpu::{Gpu, read_buffer, wgpu};
 use wgpu::util::DeviceExt;
 
 use crate::TessError;
-use crate::domain::{Domain, QuadLevels};
+use crate::domain::{QuadDomain, Spacing, TriangleDomain, quad_domain};
 use crate::patch::{BezierPatch, BezierTriangle, GpuVertex};
 use crate::shaders;
 use crate::wgsl::{Part, Piece};
+
+/// The largest tessellation level the control pass gives
+/// (`GL_MAX_TESS_GEN_LEVEL`'s minimum; `MAX_TESS_LEVEL` in the WGSL).
+pub const MAX_TESS_LEVEL: f32 = 64.0;
+
+/// Levels of a quad patch, as the control pass writes them (GLSL
+/// `gl_TessLevelOuter[0..4]`, `gl_TessLevelInner[0..2]`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuadLevels {
+    /// Edges `u = 0`, `v = 0`, `u = 1`, `v = 1`.
+    pub outer: [f32; 4],
+    /// Interior cuts along `u` and along `v`.
+    pub inner: [f32; 2],
+}
+
+impl QuadLevels {
+    /// All six levels equal to `level` (the seed's TCS, Listing 1).
+    #[must_use]
+    pub const fn uniform(level: f32) -> Self {
+        Self {
+            outer: [level; 4],
+            inner: [level; 2],
+        }
+    }
+
+    /// The domain the primitive generator ([`crate::domain::quad_domain`],
+    /// your task 2) makes of these levels, as the evaluation pass reads it.
+    #[must_use]
+    pub fn domain(self, spacing: Spacing) -> Domain {
+        let quads = quad_domain(
+            self.inner.map(f64::from),
+            self.outer.map(f64::from),
+            spacing,
+        );
+        Domain::from(&quads)
+    }
+}
+
+/// Domain points as the evaluation pass reads them: `(u, v, 0)` for quads,
+/// barycentric `(u, v, w)` for triangles (`gl_TessCoord`), and the
+/// domain's counter-clockwise triangles.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Domain {
+    /// Domain points.
+    pub points: Vec<Vec3>,
+    /// Counter-clockwise triangles as indices into `points`.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl From<&QuadDomain> for Domain {
+    fn from(domain: &QuadDomain) -> Self {
+        Self {
+            points: domain
+                .points
+                .iter()
+                .map(|p| p.as_vec2().extend(0.0))
+                .collect(),
+            triangles: domain.triangles.clone(),
+        }
+    }
+}
+
+impl From<&TriangleDomain> for Domain {
+    fn from(domain: &TriangleDomain) -> Self {
+        Self {
+            points: domain
+                .points
+                .iter()
+                .map(|&[u, v, w]| Vec3::new(u as f32, v as f32, w as f32))
+                .collect(),
+            triangles: domain.triangles.clone(),
+        }
+    }
+}
 
 /// How the control pass chooses levels.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -4,8 +4,8 @@
 mod common;
 
 use glam::{DMat4, DVec4, Mat4, Vec2, Vec3};
-use gpu_tessellation::domain::{MAX_TESS_LEVEL, QuadLevels};
 use gpu_tessellation::passes::{ControlSettings, LevelMode, run_control};
+use gpu_tessellation::passes::{MAX_TESS_LEVEL, QuadLevels};
 use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::wgsl;
 use proptest::prelude::*;

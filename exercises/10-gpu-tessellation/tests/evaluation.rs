@@ -5,10 +5,7 @@ mod common;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use gpu::Gpu;
-use gpu_tessellation::domain::{
-    Domain, QuadLevels, Spacing, TriangleLevels, quad_domain, triangle_domain,
-};
-use gpu_tessellation::passes::{Patches, run_evaluation};
+use gpu_tessellation::passes::{Domain, Patches, run_evaluation};
 use gpu_tessellation::patch::{BezierPatch, BezierTriangle, GpuVertex, SurfacePoint};
 use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
@@ -21,14 +18,6 @@ const NORMAL_TOLERANCE: f64 = 1e-3;
 /// Normals are compared only where the CPU's unnormalised cross product is
 /// at least this long: near a degenerate point f32 and f64 may disagree.
 const WELL_DEFINED_CROSS: f64 = 1e-2;
-
-fn spacing() -> impl Strategy<Value = Spacing> {
-    prop_oneof![
-        Just(Spacing::Equal),
-        Just(Spacing::FractionalOdd),
-        Just(Spacing::FractionalEven)
-    ]
-}
 
 fn evaluate_quads(
     gpu: &Gpu,
@@ -120,7 +109,7 @@ fn patch_corners_are_the_corner_control_points() {
         )
     });
     let patch = BezierPatch::new(points);
-    let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
+    let domain = common::grid(1);
     let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = match (d.x as u32, d.y as u32) {
@@ -140,7 +129,7 @@ fn flat_patch_has_the_planes_normal_everywhere() {
     let Some(gpu) = common::gpu() else { return };
     // The plane z = 0.5 seen from +z, u along x and v along y: normal +z.
     let patch = BezierPatch::flat(Vec2::new(-1.0, -0.5), Vec2::new(2.0, 1.5), 0.5);
-    let domain = quad_domain(QuadLevels::uniform(5.0), Spacing::Equal);
+    let domain = common::grid(5);
     let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = Vec3::new(-1.0 + 3.0 * d.x, -0.5 + 2.0 * d.y, 0.5);
@@ -162,7 +151,7 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
     for i in 0..4 {
         patch.points[i].z = i as f32 / 3.0;
     }
-    let domain = quad_domain(QuadLevels::uniform(1.0), Spacing::Equal);
+    let domain = common::grid(1);
     let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         // Central differences stay inside [0, 1]² away from the corners' sides.
@@ -189,7 +178,7 @@ fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
         Vec3::new(0.0, 1.0, 0.0),
     );
     let triangle = BezierTriangle::flat(a, b, c);
-    let domain = triangle_domain(TriangleLevels::uniform(3.0), Spacing::Equal);
+    let domain = common::lattice(3);
     let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let expected = a * d.x + b * d.y + c * d.z;
@@ -207,15 +196,14 @@ proptest! {
     #[testkit::test]
     fn random_patches_match_the_cpu_evaluation(
         patches in prop::collection::vec(common::patch(), 1..6),
-        levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0, 0.5f32..20.0), 6),
-        spacing in spacing(),
+        cuts in prop::collection::vec((common::random_cuts(), common::random_cuts()), 6),
     ) {
         let piece = wgsl::EVALUATION.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let domains: Vec<Domain> = patches
             .iter()
-            .zip(&levels)
-            .map(|(_, &(a, b, c))| quad_domain(QuadLevels { outer: [a, b, c, a], inner: [b, c] }, spacing))
+            .zip(&cuts)
+            .map(|(_, (us, vs))| common::grid_at(us, vs))
             .collect();
         let got = evaluate_quads(&gpu, piece, &patches, &domains);
         let mut k = 0;
@@ -231,15 +219,14 @@ proptest! {
     #[testkit::test]
     fn random_bezier_triangles_match_the_cpu_evaluation(
         triangles in prop::collection::vec(common::triangle(), 1..6),
-        levels in prop::collection::vec((0.5f32..20.0, 0.5f32..20.0), 6),
-        spacing in spacing(),
+        levels in prop::collection::vec(1u32..20, 6),
     ) {
         let piece = wgsl::EVALUATION.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let domains: Vec<Domain> = triangles
             .iter()
             .zip(&levels)
-            .map(|(_, &(o, i))| triangle_domain(TriangleLevels { outer: [o, i, o], inner: i }, spacing))
+            .map(|(_, &n)| common::lattice(n))
             .collect();
         let got = evaluate_triangles(&gpu, piece, &triangles, &domains);
         let mut k = 0;
@@ -285,7 +272,7 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
             Vec3::new(0.0, 1.0, 0.1),                    // P003
         ],
     };
-    let domain = triangle_domain(TriangleLevels::uniform(1.0), Spacing::Equal);
+    let domain = common::lattice(1);
     let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
         let corner = if d.x == 1.0 {

@@ -9,7 +9,6 @@ use canvas::{Canvas, Pixel, Rgba};
 use common::tessellate_patch;
 use glam::{DVec2, Vec2, Vec3};
 use gpu::Gpu;
-use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
 use gpu_tessellation::patch::BezierPatch;
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, brick_texture, render, vertex_buffer};
 use gpu_tessellation::shading::wireframe_edges;
@@ -23,7 +22,7 @@ use testkit::image::Tolerance;
 const SIZE: u32 = 128;
 /// Tessellation level of the shading tests: the GPU interpolates normals
 /// between vertices this far apart, the CPU uses the exact normal.
-const LEVEL: f32 = 32.0;
+const LEVEL: u32 = 32;
 /// Shading tolerance: 3/255 per channel on all but 1 % of the pixels
 /// (texel and highlight edges, where interpolated normals and `(u, v)`
 /// differ slightly from the exact ones).
@@ -54,7 +53,7 @@ fn bump(lo: Vec2, hi: Vec2, base: f32, scale: f32) -> BezierPatch {
 
 /// Renders height fields (CPU tessellated) with your shading.
 fn render_patches(gpu: &Gpu, piece: Piece, patches: &[BezierPatch]) -> Canvas {
-    let domain = quad_domain(QuadLevels::uniform(LEVEL), Spacing::Equal);
+    let domain = common::grid(LEVEL);
     let buffers: Vec<_> = patches
         .iter()
         .map(|p| vertex_buffer(gpu, &tessellate_patch(p, &domain.points)))
@@ -161,14 +160,28 @@ proptest! {
 
 #[testkit::test]
 fn wireframe_of_a_domain_obeys_eulers_formula() {
-    for level in [1.0, 2.0, 5.0, 7.5, 32.0] {
-        let d = quad_domain(QuadLevels::uniform(level), Spacing::Equal);
+    let domains = [
+        ("grid 1", common::grid(1)),
+        ("grid 2", common::grid(2)),
+        ("grid 5", common::grid(5)),
+        (
+            "grid 3 × 7",
+            common::grid_at(
+                &[0.0, 0.2, 0.7, 1.0],
+                &[0.0, 0.1, 0.15, 0.3, 0.6, 0.65, 0.9, 1.0],
+            ),
+        ),
+        ("grid 32", common::grid(32)),
+        ("lattice 1", common::lattice(1)),
+        ("lattice 7", common::lattice(7)),
+    ];
+    for (what, d) in &domains {
         let edges = wireframe_edges(&d.triangles);
         // A triangulated disk: V − E + F = 1.
         assert_eq!(
             d.points.len() + d.triangles.len(),
             edges.len() + 1,
-            "level {level}: {} points, {} triangles, {} edges",
+            "{what}: {} points, {} triangles, {} edges",
             d.points.len(),
             d.triangles.len(),
             edges.len()
@@ -184,7 +197,7 @@ fn segment_distance(p: Vec2, a: Vec2, b: Vec2) -> f32 {
 
 #[testkit::test]
 fn wireframe_lines_lie_on_the_tessellations_edges() {
-    let domain = quad_domain(QuadLevels::uniform(4.0), Spacing::Equal);
+    let domain = common::grid(4);
     let edges = wireframe_edges(&domain.triangles);
     let Some(gpu) = common::gpu() else { return };
     const WIRE_SIZE: u32 = 64;

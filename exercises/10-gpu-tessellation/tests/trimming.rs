@@ -10,7 +10,6 @@ use canvas::{Canvas, Rgba};
 use common::tessellate_patch;
 use glam::{DVec2, Mat4, Vec2};
 use gpu::Gpu;
-use gpu_tessellation::domain::{QuadLevels, Spacing, quad_domain};
 use gpu_tessellation::render::{
     DrawMesh, Scene, Shaders, TrimCurve, TrimShape, Trimming, render, vertex_buffer,
 };
@@ -29,7 +28,7 @@ const TRIMMED: Tolerance = Tolerance {
 const FLATTENING: usize = 256;
 
 fn trim_render(gpu: &Gpu, piece: Piece, trimming: &Trimming) -> Canvas {
-    let domain = quad_domain(QuadLevels::uniform(4.0), Spacing::Equal);
+    let domain = common::grid(4);
     let vertices = vertex_buffer(
         gpu,
         &tessellate_patch(&common::full_screen_patch(), &domain.points),

@@ -38,7 +38,7 @@ use glam::{DVec2, DVec3};
 use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
-use crate::primitive_generator::TriangleDomain;
+pub use surface::TriangleDomain;
 
 /// A cubic Bézier triangle: ten control points named by their exponents.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -129,8 +129,8 @@ pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTrian
     // END SOLUTION
 }
 
-/// Tessellates a PN triangle over a triangle domain (e.g. the primitive
-/// generator's): one vertex per domain point `[u, v, w]` at
+/// Tessellates a PN triangle over a triangle domain (a regular lattice, or
+/// what topic 10's primitive generator makes): one vertex per domain point `[u, v, w]` at
 /// `B(u, v, w)`, with the normal `normalize(u N1 + v N2 + w N3)` and the
 /// parameters `(u, v)`; the domain's triangles unchanged (so a
 /// counter-clockwise `P1, P2, P3` gives counter-clockwise triangles).

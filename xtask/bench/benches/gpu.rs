@@ -9,6 +9,8 @@
 //! shader's check and compilation, the pipelines) is timed apart from the
 //! per-frame work (upload, dispatch, readback), which is measured at
 //! several levels up to two million triangles, in triangles per second.
+//! The primitive generator (task 2, on the CPU) is measured on its own, in
+//! domain triangles per second.
 //!
 //! ```text
 //! cargo xtask bench --features gpu --bench gpu
@@ -20,7 +22,8 @@ use std::time::Instant;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{DVec3, Vec3, Vec4};
 use gpu::Gpu;
-use gpu_tessellation::domain::{Domain, QuadLevels, Spacing, quad_domain};
+use gpu_tessellation::domain::{Spacing, triangle_domain};
+use gpu_tessellation::passes::{Domain, QuadLevels};
 use gpu_tessellation::passes::{EvaluationPass, Patches};
 use gpu_tessellation::patch::{BezierPatch, GpuVertex};
 use gpu_tessellation::wgsl;
@@ -128,7 +131,7 @@ fn tessellation(c: &mut Criterion) {
         EvaluationPass::new(gpu, wgsl::EVALUATION).expect("the reference compiles")
     });
     for level in LEVELS {
-        let domain = quad_domain(QuadLevels::uniform(level), Spacing::Equal);
+        let domain = QuadLevels::uniform(level).domain(Spacing::Equal);
         let triangles = (domain.triangles.len() * PATCHES) as u64;
         println!(
             "{PATCHES} patches at level {level}: {triangles} triangles, {} vertices; \
@@ -167,5 +170,25 @@ fn tessellation(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, tessellation);
+fn primitive_generator(c: &mut Criterion) {
+    let mut group = c.benchmark_group("primitive generator, triangles");
+    for level in [8.0, 64.0] {
+        let count = triangle_domain(level, [level; 3], Spacing::Equal)
+            .triangles
+            .len();
+        group.throughput(Throughput::Elements(count as u64));
+        group.bench_function(format!("equal, inner = outer = {level}"), |b| {
+            b.iter(|| {
+                black_box(triangle_domain(
+                    black_box(level),
+                    [level; 3],
+                    Spacing::Equal,
+                ))
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, tessellation, primitive_generator);
 criterion_main!(benches);

@@ -1,6 +1,6 @@
 //! Uniform tessellation of Bézier patches by the reference solution, in
-//! triangles per second, at a few resolutions; and the primitive
-//! generator's triangle domain, in domain triangles per second.
+//! triangles per second, at a few resolutions (the primitive generator of
+//! topic 10 is measured in `gpu.rs`).
 //!
 //! Every triangle counts once: `2 n²` for `n × n` cells (each vertex is
 //! evaluated by de Casteljau with both tangents and a normal).
@@ -10,7 +10,6 @@ use std::hint::black_box;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use tessellation::bezier::BezierPatch;
 use tessellation::patch_grid::PatchGrid;
-use tessellation::primitive_generator::{Spacing, triangle_domain};
 use tessellation::uniform::tessellate_uniform;
 
 /// Cells per direction.
@@ -33,25 +32,5 @@ fn uniform(c: &mut Criterion) {
     }
 }
 
-fn primitive_generator(c: &mut Criterion) {
-    let mut group = c.benchmark_group("primitive generator, triangles");
-    for level in [8.0, 64.0] {
-        let count = triangle_domain(level, [level; 3], Spacing::Equal)
-            .triangles
-            .len();
-        group.throughput(Throughput::Elements(count as u64));
-        group.bench_function(format!("equal, inner = outer = {level}"), |b| {
-            b.iter(|| {
-                black_box(triangle_domain(
-                    black_box(level),
-                    [level; 3],
-                    Spacing::Equal,
-                ))
-            });
-        });
-    }
-    group.finish();
-}
-
-criterion_group!(benches, uniform, primitive_generator);
+criterion_group!(benches, uniform);
 criterion_main!(benches);

@@ -5,6 +5,8 @@
 
 use std::collections::HashMap;
 
+use testkit::topology::directed_edges;
+
 use tessellation::bezier::BezierPatch;
 use tessellation::mesh::Mesh;
 use tessellation::render::{Style, View, render};
@@ -77,17 +79,6 @@ pub fn uv_area2(mesh: &Mesh, [a, b, c]: [u32; 3]) -> f64 {
         mesh.uvs[c as usize],
     );
     (pb - pa).perp_dot(pc - pa)
-}
-
-/// How often each directed edge occurs.
-pub fn directed_edges(triangles: &[[u32; 3]]) -> HashMap<(u32, u32), usize> {
-    let mut count = HashMap::new();
-    for &[a, b, c] in triangles {
-        for e in [(a, b), (b, c), (c, a)] {
-            *count.entry(e).or_insert(0) += 1;
-        }
-    }
-    count
 }
 
 /// Checks that the mesh tiles the parameter rectangle `[0, width] ×
@@ -196,8 +187,8 @@ pub const SEED_VIEW: View = View {
 /// the primitive generator: the barycentric lattice `(i, j, n − i − j)/n`
 /// with its up and down triangles, counter-clockwise in the embedding
 /// `u·(1, 0) + v·(½, √3/2)`.
-pub fn lattice_domain(n: usize) -> tessellation::primitive_generator::TriangleDomain {
-    let mut domain = tessellation::primitive_generator::TriangleDomain::default();
+pub fn lattice_domain(n: usize) -> tessellation::bezier_triangle::TriangleDomain {
+    let mut domain = tessellation::bezier_triangle::TriangleDomain::default();
     let mut id = HashMap::new();
     for i in 0..=n {
         for j in 0..=n - i {

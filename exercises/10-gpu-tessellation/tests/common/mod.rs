@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use gpu::Gpu;
+use gpu_tessellation::passes::Domain;
 use gpu_tessellation::patch::{
     BezierPatch, BezierTriangle, GpuVertex, NORMAL_EPSILON, SurfacePoint,
 };
@@ -77,6 +78,84 @@ pub fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> 
 /// Control points in `[-1, 1]³`.
 pub fn point() -> impl Strategy<Value = Vec3> {
     (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+/// The tensor grid of the parameters `us × vs` (each from 0 to 1, rising)
+/// as a domain: points `(u, v, 0)` row by row, two counter-clockwise
+/// triangles per cell. Built here, independently of the primitive
+/// generator (task 2), so that the other tasks' tests never run it.
+pub fn grid_at(us: &[f32], vs: &[f32]) -> Domain {
+    let mut domain = Domain::default();
+    for &v in vs {
+        for &u in us {
+            domain.points.push(Vec3::new(u, v, 0.0));
+        }
+    }
+    let (n_u, n_v) = (us.len() as u32, vs.len() as u32);
+    let at = |i: u32, j: u32| j * n_u + i;
+    for j in 0..n_v.saturating_sub(1) {
+        for i in 0..n_u.saturating_sub(1) {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            domain.triangles.push([a, b, c]);
+            domain.triangles.push([a, c, d]);
+        }
+    }
+    domain
+}
+
+/// `0, 1/n, …, 1`.
+fn cuts(n: u32) -> Vec<f32> {
+    (0..=n).map(|i| i as f32 / n as f32).collect()
+}
+
+/// The regular grid of `n × n` cells (see [`grid_at`]): the domain of a
+/// uniform level `n` with equal spacing, though not triangulated the way
+/// the primitive generator does it.
+pub fn grid(n: u32) -> Domain {
+    grid_at(&cuts(n), &cuts(n))
+}
+
+/// The regular triangle lattice of level `n`: barycentric points
+/// `(a/n, b/n, 1 − (a + b)/n)`, `n²` counter-clockwise triangles (in the
+/// plane of `U = (1,0,0)`, `V = (0,1,0)`, `W = (0,0,1)`), built here
+/// independently of the primitive generator.
+pub fn lattice(n: u32) -> Domain {
+    let mut domain = Domain::default();
+    let mut ids = std::collections::HashMap::new();
+    for b in 0..=n {
+        for a in 0..=n - b {
+            ids.insert((a, b), domain.points.len() as u32);
+            let (u, v) = (a as f32 / n as f32, b as f32 / n as f32);
+            domain.points.push(Vec3::new(u, v, 1.0 - u - v));
+        }
+    }
+    let id = |a: u32, b: u32| ids[&(a, b)];
+    for b in 0..n {
+        for a in 0..n - b {
+            domain
+                .triangles
+                .push([id(a, b), id(a + 1, b), id(a, b + 1)]);
+            if a + b + 2 <= n {
+                domain
+                    .triangles
+                    .push([id(a + 1, b), id(a + 1, b + 1), id(a, b + 1)]);
+            }
+        }
+    }
+    domain
+}
+
+/// Parameters from 0 to 1, rising, at random places in between: the cuts
+/// of one side of a random [`grid_at`].
+pub fn random_cuts() -> impl Strategy<Value = Vec<f32>> {
+    prop::collection::vec(0.0f32..1.0, 0..20).prop_map(|mut inner| {
+        inner.sort_by(f32::total_cmp);
+        inner.dedup();
+        let mut cuts = vec![0.0];
+        cuts.extend(inner.into_iter().filter(|&t| t > 0.0));
+        cuts.push(1.0);
+        cuts
+    })
 }
 
 /// A random bicubic patch.

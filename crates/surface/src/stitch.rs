@@ -50,3 +50,61 @@ pub fn stitch(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Twice the signed area of the triangle at the points of `positions`.
+    fn area2(positions: &[[f64; 2]], [a, b, c]: [u32; 3]) -> f64 {
+        let [p, q, r] = [a, b, c].map(|k| positions[k as usize]);
+        (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    }
+
+    #[test]
+    fn a_strip_is_tiled_counter_clockwise() {
+        // outer a0..a3 on y = 0, inner b0..b2 on y = 1 (left of the outer
+        // polyline's direction +x), keys their x.
+        let positions = [
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [2.5, 0.0],
+            [4.0, 0.0],
+            [0.0, 1.0],
+            [1.5, 1.0],
+            [4.0, 1.0],
+        ];
+        let (outer, inner) = ([0, 1, 2, 3], [4, 5, 6]);
+        let key = |ids: &[u32]| {
+            ids.iter()
+                .map(|&k| positions[k as usize][0])
+                .collect::<Vec<_>>()
+        };
+        let mut triangles = Vec::new();
+        stitch(&outer, &key(&outer), &inner, &key(&inner), &mut triangles);
+        // One triangle per step: (4 − 1) + (3 − 1).
+        assert_eq!(triangles.len(), 5);
+        let total: f64 = triangles.iter().map(|&t| area2(&positions, t)).sum();
+        assert!(
+            triangles.iter().all(|&t| area2(&positions, t) > 0.0),
+            "{triangles:?}"
+        );
+        // The trapezoid's area, twice: no gap, no overlap.
+        assert!((total - 2.0 * 4.0).abs() < 1e-12, "{total}");
+    }
+
+    #[test]
+    fn a_single_inner_vertex_is_a_fan_apex() {
+        let mut triangles = Vec::new();
+        stitch(&[0, 1, 2], &[0.0, 1.0, 2.0], &[3], &[1.0], &mut triangles);
+        assert_eq!(triangles, vec![[0, 1, 3], [1, 2, 3]]);
+    }
+
+    #[test]
+    fn an_empty_polyline_gives_nothing() {
+        let mut triangles = Vec::new();
+        stitch(&[], &[], &[0, 1], &[0.0, 1.0], &mut triangles);
+        stitch(&[0], &[0.0], &[1], &[0.0], &mut triangles);
+        assert!(triangles.is_empty());
+    }
+}

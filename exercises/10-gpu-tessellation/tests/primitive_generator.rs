@@ -1,16 +1,14 @@
-//! Task 4: the OpenGL primitive generator (OpenGL 4.6 §11.2.2).
-
-mod common;
+//! Task 2: the primitive generator (OpenGL 4.6 §11.2.2).
 
 use std::collections::HashMap;
 
-use common::directed_edges;
-use proptest::prelude::*;
-use tessellation::DVec2;
-use tessellation::primitive_generator::{
+use glam::DVec2;
+use gpu_tessellation::domain::{
     MAX_TESS_GEN_LEVEL, QuadDomain, Spacing, TriangleDomain, clamp_level, embed, quad_domain,
     subdivide_edge, triangle_domain,
 };
+use proptest::prelude::*;
+use testkit::topology::directed_edges;
 
 const SPACINGS: [Spacing; 3] = [
     Spacing::Equal,

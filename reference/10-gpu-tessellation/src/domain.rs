@@ -1,10 +1,14 @@
-//! The OpenGL tessellation primitive generator as a pure function (seed 001
-//! §3.2 "Primitivni generator"; OpenGL 4.6 core specification §11.2.2,
+//! Task 2: the primitive generator, the fixed-function stage between the
+//! tessellation control and evaluation shaders, which turns tessellation
+//! levels into domain points and triangles (seed 001 §3.2 "Primitivni
+//! generator", seed 000 §4.1; OpenGL 4.6 core specification §11.2.2,
 //! "Tessellation Primitive Generation", and the same rules in Vulkan's
 //! "Tessellator Spacing", "Triangle Tessellation", "Quad Tessellation").
+//! wgpu has no tessellator, so it is a pure function here, on the CPU: the
+//! given passes upload its points for your evaluation stage.
 //!
 //! **Levels and spacing.** A level `f` is clamped and rounded to a segment
-//! count `n` (maximum level [`MAX_TESS_GEN_LEVEL`](crate::primitive_generator::MAX_TESS_GEN_LEVEL) = 64):
+//! count `n` (maximum level [`MAX_TESS_GEN_LEVEL`] = 64):
 //!
 //! | spacing            | clamp to | round up to        | segments                          |
 //! |--------------------|----------|--------------------|-----------------------------------|
@@ -45,52 +49,28 @@
 //!
 //! The strips between rings are filled "in an implementation-dependent
 //! manner" (the specification fixes only the vertices and that the
-//! triangles tile the domain): here by the zipper of [`crate::stitch`].
+//! triangles tile the domain): here by the zipper of [`surface::stitch`] (given).
 //! All triangles are counter-clockwise (`layout(ccw)`).
 
 use glam::DVec2;
+use surface::stitch;
 
-use crate::stitch::stitch;
+pub use surface::domain::{QuadDomain, TriangleDomain, embed};
 
 /// `GL_MAX_TESS_GEN_LEVEL`: the largest level (64 is the minimum every
 /// implementation must support and what this generator uses).
 pub const MAX_TESS_GEN_LEVEL: f64 = 64.0;
 
 /// The spacing of the subdivision (`layout(equal_spacing)` etc.).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Spacing {
     /// `equal_spacing`.
+    #[default]
     Equal,
     /// `fractional_even_spacing`.
     FractionalEven,
     /// `fractional_odd_spacing`.
     FractionalOdd,
-}
-
-/// The quad domain: points `(u, v)` in `[0, 1]²` and triangles.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct QuadDomain {
-    /// Domain points `(u, v)`, each once.
-    pub points: Vec<DVec2>,
-    /// Counter-clockwise triangles in `(u, v)`.
-    pub triangles: Vec<[u32; 3]>,
-}
-
-/// The triangle domain: barycentric points `[u, v, w]` and triangles.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct TriangleDomain {
-    /// Domain points `[u, v, w]`, `u + v + w = 1`, each once.
-    pub points: Vec<[f64; 3]>,
-    /// Counter-clockwise triangles in the embedding of [`embed`].
-    pub triangles: Vec<[u32; 3]>,
-}
-
-/// The plane position of a barycentric point in the equilateral triangle
-/// with `(1,0,0)` at `(1, 0)`, `(0,1,0)` at `(½, √3/2)` and `(0,0,1)` at the
-/// origin (area `√3/4`).
-#[must_use]
-pub fn embed([u, v, _]: [f64; 3]) -> DVec2 {
-    DVec2::new(u + 0.5 * v, 0.5 * 3.0_f64.sqrt() * v)
 }
 
 /// The clamped level `f` and segment count `n` of a level under `spacing`
