@@ -40,29 +40,13 @@ use glam::{DVec2, DVec3};
 use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
-pub use surface::TriangleDomain;
-
-/// A cubic Bézier triangle: ten control points named by their exponents.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[allow(missing_docs)] // the names are the documentation: b_ijk goes with uⁱ vʲ wᵏ
-pub struct CubicBezierTriangle {
-    pub b300: DVec3,
-    pub b030: DVec3,
-    pub b003: DVec3,
-    pub b210: DVec3,
-    pub b201: DVec3,
-    pub b120: DVec3,
-    pub b021: DVec3,
-    pub b102: DVec3,
-    pub b012: DVec3,
-    pub b111: DVec3,
-}
+pub use surface::{BezierTriangle, TriangleDomain};
 
 /// A PN triangle: its cubic geometry and the unit normals at its corners.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PnTriangle {
     /// The geometry.
-    pub geometry: CubicBezierTriangle,
+    pub geometry: BezierTriangle,
     /// Unit normals at `P1` (`u = 1`), `P2` (`v = 1`), `P3` (`w = 1`).
     pub normals: [DVec3; 3],
 }
@@ -70,7 +54,7 @@ pub struct PnTriangle {
 /// `B(u, v, w)` by equation (4.1). The coordinates are used as given (the
 /// caller keeps `u + v + w = 1`; other values extrapolate the polynomial).
 #[must_use]
-pub fn evaluate(t: &CubicBezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
+pub fn evaluate(t: &BezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
     // Unused until you write the body:
     let _ = (&t, &u, &v, &w);
     todo!("bezier_triangle: the ten Bernstein terms of (4.1)")

@@ -6,7 +6,7 @@ use common::{assert_picture, lattice_domain};
 use proptest::prelude::*;
 use tessellation::DVec3;
 use tessellation::bezier::curve;
-use tessellation::bezier_triangle::{CubicBezierTriangle, evaluate, pn_triangle, tessellate_pn};
+use tessellation::bezier_triangle::{BezierTriangle, evaluate, pn_triangle, tessellate_pn};
 use tessellation::error::TessError;
 use tessellation::mesh::Mesh;
 use tessellation::render::{Style, View};
@@ -14,9 +14,9 @@ use tessellation::render::{Style, View};
 const EXACT: f64 = 1e-12;
 
 /// Ten distinct, unrelated control points.
-fn lumpy() -> CubicBezierTriangle {
+fn lumpy() -> BezierTriangle {
     let p = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
-    CubicBezierTriangle {
+    BezierTriangle {
         b300: p(3.0, 0.0, 0.0),
         b030: p(0.0, 3.0, 0.5),
         b003: p(0.0, 0.0, -1.0),
@@ -32,9 +32,9 @@ fn lumpy() -> CubicBezierTriangle {
 
 /// The control points of the flat triangle `u P1 + v P2 + w P3`:
 /// `b_ijk = (i P1 + j P2 + k P3) / 3`.
-fn linear(p1: DVec3, p2: DVec3, p3: DVec3) -> CubicBezierTriangle {
+fn linear(p1: DVec3, p2: DVec3, p3: DVec3) -> BezierTriangle {
     let b = |i: f64, j: f64, k: f64| (i * p1 + j * p2 + k * p3) / 3.0;
-    CubicBezierTriangle {
+    BezierTriangle {
         b300: b(3.0, 0.0, 0.0),
         b030: b(0.0, 3.0, 0.0),
         b003: b(0.0, 0.0, 3.0),
@@ -265,7 +265,7 @@ proptest! {
 
     #[testkit::test]
     fn equal_control_points_give_a_constant(p in point(), b in barycentric()) {
-        let t = CubicBezierTriangle { b300: p, b030: p, b003: p, b210: p, b201: p, b120: p, b021: p, b102: p, b012: p, b111: p };
+        let t = BezierTriangle { b300: p, b030: p, b003: p, b210: p, b201: p, b120: p, b021: p, b102: p, b012: p, b111: p };
         prop_assert!(evaluate(&t, b).distance(p) < 1e-9, "the Bernstein weights sum to 1");
     }
 

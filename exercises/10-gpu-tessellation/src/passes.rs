@@ -16,7 +16,7 @@ use wgpu::util::DeviceExt;
 
 use crate::TessError;
 use crate::domain::{QuadDomain, Spacing, TriangleDomain, quad_domain};
-use crate::patch::{BezierPatch, BezierTriangle, GpuVertex};
+use crate::patch::{BezierPatch, BezierTriangle, GpuVertex, triangle_to_gpu};
 use crate::shaders;
 use crate::wgsl::{Part, Piece};
 
@@ -447,7 +447,7 @@ impl EvaluationPass {
                 (&self.quads, 0, buffer)
             }
             Patches::Triangles(t) => {
-                let data: Vec<[Vec4; 10]> = t.iter().map(BezierTriangle::to_gpu).collect();
+                let data: Vec<[Vec4; 10]> = t.iter().map(triangle_to_gpu).collect();
                 let buffer = storage(gpu, "triangles", bytemuck::cast_slice(&data), none);
                 (&self.triangles, 1, buffer)
             }

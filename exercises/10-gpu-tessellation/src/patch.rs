@@ -25,7 +25,8 @@
 //! `B(u, v, w) = Σ_{i+j+k=3} 3!/(i! j! k!) uⁱ vʲ wᵏ P_ijk` for barycentric
 //! `u + v + w = 1`, ten control points stored in the order
 //! `P300 P210 P201 P120 P111 P102 P030 P021 P012 P003`
-//! ([`BezierTriangle::index`]). Corners: `B(1,0,0) = P300`,
+//! ([`BezierTriangle::index`]; the type is the course library's,
+//! `surface::BezierTriangle`, the same as topic 09's). Corners: `B(1,0,0) = P300`,
 //! `B(0,1,0) = P030`, `B(0,0,1) = P003`. The normal is
 //! `(Q010 − Q100) × (Q001 − Q100)` of the three points of the last step
 //! but one, normalised: facing the viewer when `P300 → P030 → P003` runs
@@ -37,6 +38,8 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{DVec3, Vec3, Vec4};
 
+pub use surface::BezierTriangle;
+
 /// Cross products shorter than this give a zero normal instead of a
 /// direction made of rounding noise.
 pub const NORMAL_EPSILON: f64 = 1e-12;
@@ -46,13 +49,6 @@ pub const NORMAL_EPSILON: f64 = 1e-12;
 pub struct BezierPatch {
     /// `points[4j + i]`: column `i` (u), row `j` (v).
     pub points: [Vec3; 16],
-}
-
-/// A cubic Bézier triangle: 10 control points in [`BezierTriangle::index`] order.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BezierTriangle {
-    /// `P300 P210 P201 P120 P111 P102 P030 P021 P012 P003`.
-    pub points: [Vec3; 10],
 }
 
 /// A point of a surface with its unit normal (zero if degenerate).
@@ -115,36 +111,9 @@ impl BezierPatch {
     }
 }
 
-impl BezierTriangle {
-    /// The storage index of `P_ijk` (`i + j + k = 3`, so `k` is implied):
-    /// rows by falling `i`, then falling `j`.
-    ///
-    /// # Panics
-    /// If `i + j > 3`.
-    #[must_use]
-    pub const fn index(i: usize, j: usize) -> usize {
-        assert!(i + j <= 3, "P_ijk needs i + j + k = 3");
-        let row = 3 - i;
-        row * (row + 1) / 2 + (row - j)
-    }
-
-    /// The flat triangle with corners `a = P300`, `b = P030`, `c = P003`
-    /// and the other points at their linear positions `(i·a + j·b + k·c)/3`.
-    #[must_use]
-    pub fn flat(a: Vec3, b: Vec3, c: Vec3) -> Self {
-        let mut points = [Vec3::ZERO; 10];
-        for i in 0..=3 {
-            for j in 0..=3 - i {
-                let k = 3 - i - j;
-                points[Self::index(i, j)] = (a * i as f32 + b * j as f32 + c * k as f32) / 3.0;
-            }
-        }
-        Self { points }
-    }
-
-    /// The 10 points as the GPU reads them (`array<vec4<f32>, 10>`).
-    #[must_use]
-    pub fn to_gpu(&self) -> [Vec4; 10] {
-        self.points.map(|p| p.extend(1.0))
-    }
+/// The 10 points of a Bézier triangle as the GPU reads them
+/// (`array<vec4<f32>, 10>`, in [`BezierTriangle::index`] order).
+#[must_use]
+pub fn triangle_to_gpu(triangle: &BezierTriangle) -> [Vec4; 10] {
+    triangle.points().map(|p| p.as_vec3().extend(1.0))
 }

@@ -177,7 +177,7 @@ fn flat_bezier_triangle_has_corners_and_normal_of_its_plane() {
         Vec3::new(1.0, 0.0, 0.0),
         Vec3::new(0.0, 1.0, 0.0),
     );
-    let triangle = BezierTriangle::flat(a, b, c);
+    let triangle = BezierTriangle::flat(a.as_dvec3(), b.as_dvec3(), c.as_dvec3());
     let domain = common::lattice(3);
     let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
@@ -258,8 +258,8 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
     // points are the thirds of the edges moved into the nearest vertex's
     // tangent plane, the centre is E + (E − V)/2), its ten points written
     // out in storage order.
-    let triangle = BezierTriangle {
-        points: [
+    let triangle = BezierTriangle::from_points(
+        [
             Vec3::new(0.0, 0.0, 0.0),                    // P300
             Vec3::new(0.3333333, 0.0, 0.0666667),        // P210
             Vec3::new(-0.0061728, 0.3271605, 0.0641975), // P201
@@ -270,8 +270,9 @@ fn pn_triangle_interpolates_its_vertices_and_normals() {
             Vec3::new(0.7033639, 0.3333333, 0.2889908),  // P021
             Vec3::new(0.3333333, 0.6850153, 0.1944954),  // P012
             Vec3::new(0.0, 1.0, 0.1),                    // P003
-        ],
-    };
+        ]
+        .map(Vec3::as_dvec3),
+    );
     let domain = common::lattice(1);
     let got = evaluate_triangles(&gpu, piece, &[triangle], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {

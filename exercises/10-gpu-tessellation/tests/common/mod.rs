@@ -48,8 +48,7 @@ pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfacePoint {
 /// sheet: `(Q010 − Q100) × (Q001 − Q100)`, where `Q100 = ∂B/∂u / 3` and so
 /// on (the three points of the last step but one), normalised.
 pub fn triangle_point(triangle: &BezierTriangle, uvw: DVec3) -> SurfacePoint {
-    let control =
-        |i: usize, j: usize, _k: usize| triangle.points[BezierTriangle::index(i, j)].as_dvec3();
+    let control = |i: usize, j: usize, k: usize| triangle.point(i, j, k);
     let [position, bu, bv, bw] = triangle_bezier(3, control, uvw.to_array());
     let (qu, qv, qw) = (bu / 3.0, bv / 3.0, bw / 3.0);
     SurfacePoint {
@@ -165,7 +164,8 @@ pub fn patch() -> impl Strategy<Value = BezierPatch> {
 
 /// A random cubic Bézier triangle.
 pub fn triangle() -> impl Strategy<Value = BezierTriangle> {
-    prop::array::uniform10(point()).prop_map(|points| BezierTriangle { points })
+    prop::array::uniform10(point())
+        .prop_map(|points| BezierTriangle::from_points(points.map(Vec3::as_dvec3)))
 }
 
 /// Compares `yours` with a CPU rendering: both are written under the test
