@@ -12,8 +12,9 @@ use glam::{DVec2, DVec3};
 /// The binomial coefficients of degree 32 are below 2³¹, so every
 /// `C(n, i)` is an exact `f64`, and no figure of the course needs more.
 /// Higher degrees are rejected with [`BezierError::DegreeTooHigh`] rather
-/// than evaluated with a growing rounding error.
-pub const MAX_DEGREE: usize = 32;
+/// than evaluated with a growing rounding error. (The course library's
+/// [`freeform::patch::MAX_DEGREE`], which patches keep.)
+pub const MAX_DEGREE: usize = freeform::patch::MAX_DEGREE;
 
 /// Why a curve, surface or trim could not be built or evaluated.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -50,18 +51,6 @@ pub enum BezierError {
     NonFinitePoint {
         /// Its index in the input.
         index: usize,
-    },
-    /// A control net whose point count is not `n_u · n_v`.
-    #[error("a {n_u} × {n_v} control net needs {expected} points, got {got}")]
-    NetShape {
-        /// Points in u.
-        n_u: usize,
-        /// Points in v.
-        n_v: usize,
-        /// `n_u · n_v`.
-        expected: usize,
-        /// What was given.
-        got: usize,
     },
     /// The partial derivatives are zero or parallel at and next to (u, v).
     #[error("the normal at ({u}, {v}) is undefined: the partial derivatives are parallel")]

@@ -12,9 +12,6 @@
 /// Given: the error type, `MAX_DEGREE`, the point trait and the `Trim` trait.
 pub mod basics;
 
-/// Given: the control net of a tensor-product surface.
-pub mod control_net;
-
 /// Given: a pinhole camera and a z-buffered triangle rasterizer.
 pub mod zbuffer;
 
@@ -40,4 +37,4 @@ pub mod ray_parity;
 pub mod render;
 
 pub use basics::{BezierError, ControlPoint, MAX_DEGREE, Trim};
-pub use control_net::ControlNet;
+pub use freeform::{BezierPatch, PatchError};

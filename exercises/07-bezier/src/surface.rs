@@ -26,7 +26,7 @@ use glam::{DVec2, DVec3};
 
 #[allow(unused_imports)]
 use crate::basics::{BezierError, MAX_DEGREE, check_parameter};
-use crate::control_net::ControlNet;
+use freeform::BezierPatch;
 
 /// Below this ratio `|∂u × ∂v| / (|∂u| · |∂v|)` (the sine of the angle
 /// between the partial derivatives) the normal is taken as undefined.
@@ -57,7 +57,7 @@ pub struct SurfacePoint {
 /// # Errors
 /// [`BezierError::ParameterOutOfRange`] for `u` or `v` NaN or outside
 /// `[0, 1]` (the net itself is valid by construction).
-pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
     todo!("surface: check u, v; de Casteljau each column at u; de Casteljau the results at v")
@@ -69,7 +69,7 @@ pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
-pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
     todo!("surface: check u, v; de Casteljau each row at v; de Casteljau the results at u")
@@ -93,7 +93,7 @@ pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
-pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, BezierError> {
+pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
     todo!(
@@ -115,7 +115,7 @@ pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, 
 /// [`BezierError::ParameterOutOfRange`] as above;
 /// [`BezierError::DegenerateNormal`] if the normal is undefined at the
 /// nudged point too (a net collapsed to a curve or a point).
-pub fn normal(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn normal(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
     todo!(

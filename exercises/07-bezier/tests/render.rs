@@ -7,7 +7,7 @@ mod common;
 use bezier::render::{
     MAX_TESS_LEVEL, RenderSettings, SHININESS, SurfaceSample, phong, render_surface,
 };
-use bezier::{BezierError, ControlNet};
+use bezier::{BezierError, BezierPatch};
 use canvas::Canvas;
 use glam::{DVec2, DVec3};
 
@@ -21,7 +21,7 @@ fn settings(wireframe: bool) -> RenderSettings {
 }
 
 fn hill(uv: DVec2) -> Result<SurfaceSample, BezierError> {
-    Ok(common::sample_def(&ControlNet::seed_hill(), uv))
+    Ok(common::sample_def(&BezierPatch::seed_hill(), uv))
 }
 
 #[testkit::test]

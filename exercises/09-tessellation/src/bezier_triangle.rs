@@ -40,7 +40,7 @@ use glam::{DVec2, DVec3};
 use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
-pub use surface::{BezierTriangle, TriangleDomain};
+pub use freeform::{BezierTriangle, TriangleDomain};
 
 /// A PN triangle: its cubic geometry and the unit normals at its corners.
 #[derive(Clone, Copy, Debug, PartialEq)]

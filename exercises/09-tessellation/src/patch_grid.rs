@@ -181,10 +181,10 @@ impl PatchGrid {
     #[must_use]
     pub fn vertical_curve(&self, row: usize, col: usize) -> Vec<DVec3> {
         if col < self.cols {
-            self.patch(row, col).row(0)
+            self.patch(row, col).row(0).to_vec()
         } else {
             let patch = self.patch(row, col - 1);
-            patch.row(patch.degree_u())
+            patch.row(patch.degree_u()).to_vec()
         }
     }
 }

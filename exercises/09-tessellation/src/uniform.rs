@@ -15,7 +15,7 @@
 use glam::DVec2;
 
 #[allow(unused_imports)]
-use crate::bezier::{BezierPatch, MAX_RESOLUTION};
+use crate::bezier::{BezierPatch, Evaluate, MAX_RESOLUTION};
 use crate::error::TessError;
 use crate::mesh::Mesh;
 
@@ -24,7 +24,7 @@ use crate::mesh::Mesh;
 /// and cut as in the module's diagram (vertices row by row from `v = 0`,
 /// `u` running fastest; triangles cell by cell in the same order, the lower
 /// right triangle first). Every vertex lies on the surface, with the
-/// surface's unit normal ([`BezierPatch::sample`]); triangles are
+/// surface's unit normal ([`Evaluate::sample`]); triangles are
 /// counter-clockwise in the `(u, v)` plane.
 ///
 /// # Errors

@@ -23,19 +23,13 @@ use gpu_tessellation::{TessError, shading, wgsl};
 /// Picture size in pixels.
 const SIZE: u32 = 512;
 
-/// The seed's default surface (Listing 16's control point moves): a unit
-/// square patch at y = 0 whose four inner points are lifted to 0.5.
+/// The seed's default surface (Listing 16's control point moves), moved
+/// by `offset`: a unit square patch at y = 0 whose four inner points are
+/// lifted to 0.5.
 fn seed_patch(offset: Vec3) -> BezierPatch {
-    let mut points = [Vec3::ZERO; 16];
-    for j in 0..4 {
-        for i in 0..4 {
-            let x = -0.5 + i as f32 / 3.0;
-            let z = 0.5 - j as f32 / 3.0;
-            let lifted = (1..3).contains(&i) && (1..3).contains(&j);
-            points[4 * j + i] = Vec3::new(x, if lifted { 0.5 } else { 0.0 }, z) + offset;
-        }
-    }
-    BezierPatch::new(points)
+    BezierPatch::seed_hill()
+        .map(|p| p + offset.as_dvec3())
+        .expect("a finite offset")
 }
 
 struct Figure {

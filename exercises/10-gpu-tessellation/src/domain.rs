@@ -49,15 +49,15 @@
 //!
 //! The strips between rings are filled "in an implementation-dependent
 //! manner" (the specification fixes only the vertices and that the
-//! triangles tile the domain): here by the zipper of [`surface::stitch`] (given).
+//! triangles tile the domain): here by the zipper of [`freeform::stitch`] (given).
 //! All triangles are counter-clockwise (`layout(ccw)`).
 
 #[allow(unused_imports)]
-use glam::DVec2;
+use freeform::stitch;
 #[allow(unused_imports)]
-use surface::stitch;
+use glam::DVec2;
 
-pub use surface::domain::{QuadDomain, TriangleDomain, embed};
+pub use freeform::domain::{QuadDomain, TriangleDomain, embed};
 
 /// `GL_MAX_TESS_GEN_LEVEL`: the largest level (64 is the minimum every
 /// implementation must support and what this generator uses).

@@ -16,7 +16,7 @@ use wgpu::util::DeviceExt;
 
 use crate::TessError;
 use crate::domain::{QuadDomain, Spacing, TriangleDomain, quad_domain};
-use crate::patch::{BezierPatch, BezierTriangle, GpuVertex, triangle_to_gpu};
+use crate::patch::{BezierPatch, BezierTriangle, GpuVertex, patch_to_gpu, triangle_to_gpu};
 use crate::shaders;
 use crate::wgsl::{Part, Piece};
 
@@ -92,6 +92,25 @@ impl From<&TriangleDomain> for Domain {
             triangles: domain.triangles.clone(),
         }
     }
+}
+
+/// The patches as the GPU reads them ([`patch_to_gpu`]).
+///
+/// Errors: a patch that is not bicubic ([`TessError::Invalid`]).
+fn bicubic(patches: &[BezierPatch]) -> Result<Vec<[Vec4; 16]>, TessError> {
+    patches
+        .iter()
+        .enumerate()
+        .map(|(k, patch)| {
+            patch_to_gpu(patch).ok_or_else(|| {
+                TessError::Invalid(format!(
+                    "patch {k} has degree {} × {}; the GPU stages take bicubic patches",
+                    patch.degree_u(),
+                    patch.degree_v()
+                ))
+            })
+        })
+        .collect()
 }
 
 /// How the control pass chooses levels.
@@ -255,7 +274,7 @@ pub fn run_control(
     ])?;
     let module = gpu.shader("control", &source)?;
     let pipeline = compute_pipeline(gpu, &module, "control_main")?;
-    let gpu_patches: Vec<[Vec4; 16]> = patches.iter().map(BezierPatch::to_gpu).collect();
+    let gpu_patches = bicubic(patches)?;
     let patch_buffer = storage(
         gpu,
         "patches",
@@ -442,7 +461,7 @@ impl EvaluationPass {
         let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);
         let (pipeline, patch_binding, patch_buffer) = match patches {
             Patches::Quads(p) => {
-                let data: Vec<[Vec4; 16]> = p.iter().map(BezierPatch::to_gpu).collect();
+                let data = bicubic(p)?;
                 let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
                 (&self.quads, 0, buffer)
             }

@@ -8,7 +8,10 @@
 //! `P(u, v) = Σᵢ Σⱼ Bᵢ,₃(u) Bⱼ,₃(v) P[4j + i]` for `(u, v) ∈ [0,1]²`, with
 //! the Bernstein polynomials `Bᵢ,₃(t) = C(3,i) tⁱ (1 − t)³⁻ⁱ`. Control
 //! point `P[4j + i]` is column `i` (along u) of row `j` (along v): the rows
-//! are the four u-curves of the seed's Listing 5 (`gl_in[i..i+3]`).
+//! are the four u-curves of the seed's Listing 5 (`gl_in[i..i+3]`). The
+//! patch itself is the course library's `freeform::BezierPatch`, the one
+//! topics 07 and 09 use, which stores its points the other way round (row
+//! `i` along v, `P_ij` at `4i + j`): [`patch_to_gpu`] transposes.
 //!
 //! ```text
 //!  v ^  P12 P13 P14 P15      corners: P(0,0) = P0,  P(1,0) = P3,
@@ -26,7 +29,7 @@
 //! `u + v + w = 1`, ten control points stored in the order
 //! `P300 P210 P201 P120 P111 P102 P030 P021 P012 P003`
 //! ([`BezierTriangle::index`]; the type is the course library's,
-//! `surface::BezierTriangle`, the same as topic 09's). Corners: `B(1,0,0) = P300`,
+//! `freeform::BezierTriangle`, the same as topic 09's). Corners: `B(1,0,0) = P300`,
 //! `B(0,1,0) = P030`, `B(0,0,1) = P003`. The normal is
 //! `(Q010 − Q100) × (Q001 − Q100)` of the three points of the last step
 //! but one, normalised: facing the viewer when `P300 → P030 → P003` runs
@@ -36,20 +39,13 @@
 //! (a collapsed edge, a degenerate patch) is returned as zero.
 
 use bytemuck::{Pod, Zeroable};
-use glam::{DVec3, Vec3, Vec4};
+use glam::{DVec3, Vec4};
 
-pub use surface::BezierTriangle;
+pub use freeform::{BezierPatch, BezierTriangle};
 
 /// Cross products shorter than this give a zero normal instead of a
 /// direction made of rounding noise.
 pub const NORMAL_EPSILON: f64 = 1e-12;
-
-/// A bicubic Bézier patch: 16 control points, row-major, rows along u.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BezierPatch {
-    /// `points[4j + i]`: column `i` (u), row `j` (v).
-    pub points: [Vec3; 16],
-}
 
 /// A point of a surface with its unit normal (zero if degenerate).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,42 +69,17 @@ pub struct GpuVertex {
     pub param: Vec4,
 }
 
-impl BezierPatch {
-    /// A patch from 16 points.
-    #[must_use]
-    pub const fn new(points: [Vec3; 16]) -> Self {
-        Self { points }
+/// The 16 control points of a bicubic patch as the GPU reads them
+/// (`array<vec4<f32>, 16>`): `P_ij` at `4j + i`, the transpose of the
+/// patch's own row-by-row order. `None` unless the patch is bicubic.
+#[must_use]
+pub fn patch_to_gpu(patch: &BezierPatch) -> Option<[Vec4; 16]> {
+    if (patch.degree_u(), patch.degree_v()) != (3, 3) {
+        return None;
     }
-
-    /// The flat patch over `[x0, x1] × [y0, y1]` at height `z`, control
-    /// points evenly spaced, so that `P(u, v) = (lerp(x0, x1, u), lerp(y0, y1, v), z)`
-    /// exactly (Bernstein polynomials reproduce linear functions).
-    #[must_use]
-    pub fn flat(lo: glam::Vec2, hi: glam::Vec2, z: f32) -> Self {
-        Self::height_field(lo, hi, [[z; 4]; 4])
-    }
-
-    /// A height field over `[x0, x1] × [y0, y1]`: control point `(i, j)` at
-    /// `(lerp(x0, x1, i/3), lerp(y0, y1, j/3), heights[j][i])`, so that
-    /// `x` and `y` are linear in `u` and `v`.
-    #[must_use]
-    pub fn height_field(lo: glam::Vec2, hi: glam::Vec2, heights: [[f32; 4]; 4]) -> Self {
-        let mut points = [Vec3::ZERO; 16];
-        for j in 0..4 {
-            for i in 0..4 {
-                let s = glam::Vec2::new(i as f32, j as f32) / 3.0;
-                let xy = lo + (hi - lo) * s;
-                points[4 * j + i] = xy.extend(heights[j][i]);
-            }
-        }
-        Self { points }
-    }
-
-    /// The 16 points as the GPU reads them (`array<vec4<f32>, 16>`).
-    #[must_use]
-    pub fn to_gpu(&self) -> [Vec4; 16] {
-        self.points.map(|p| p.extend(1.0))
-    }
+    Some(std::array::from_fn(|k| {
+        patch.control_point(k % 4, k / 4).as_vec3().extend(1.0)
+    }))
 }
 
 /// The 10 points of a Bézier triangle as the GPU reads them

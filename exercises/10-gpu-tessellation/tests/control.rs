@@ -3,7 +3,7 @@
 
 mod common;
 
-use glam::{DMat4, DVec4, Mat4, Vec2, Vec3};
+use glam::{DMat4, DVec2, DVec4, Mat4, Vec2, Vec3};
 use gpu_tessellation::passes::{ControlSettings, LevelMode, run_control};
 use gpu_tessellation::passes::{MAX_TESS_LEVEL, QuadLevels};
 use gpu_tessellation::patch::BezierPatch;
@@ -31,7 +31,7 @@ fn camera(eye: Vec3) -> Mat4 {
 fn cpu_levels(patch: &BezierPatch, view_proj: Mat4, pixels_per_segment: f64) -> QuadLevels {
     let m: DMat4 = view_proj.as_dmat4();
     let project = |k: usize| {
-        let c = m * DVec4::from((patch.points[k].as_dvec3(), 1.0));
+        let c = m * DVec4::from((common::gl_points(patch)[k], 1.0));
         // The GPU's viewport transform: the same pixels the shader measures in.
         (c.w > 1e-6).then(|| {
             canvas::ndc_to_window(
@@ -65,7 +65,7 @@ fn close(gpu: f32, cpu: f32) -> bool {
 fn uniform_levels_are_clamped_to_one_and_64() {
     let piece = wgsl::CONTROL.written();
     let Some(gpu) = common::gpu() else { return };
-    let patches = [BezierPatch::flat(Vec2::ZERO, Vec2::ONE, 0.0)];
+    let patches = [BezierPatch::flat(DVec2::ZERO, DVec2::ONE, 0.0)];
     for (asked, expected) in [
         (7.25, 7.25),
         (0.5, 1.0),
@@ -92,8 +92,10 @@ fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
     let piece = wgsl::CONTROL.written();
     let Some(gpu) = common::gpu() else { return };
     // Eye at z = 3 looking at the origin; P0 lies behind it, at z = 4.
-    let mut patch = BezierPatch::flat(Vec2::splat(-0.5), Vec2::splat(0.5), 0.0);
-    patch.points[0].z = 4.0;
+    let flat = BezierPatch::flat(DVec2::splat(-0.5), DVec2::splat(0.5), 0.0);
+    let mut points = common::gl_points(&flat);
+    points[0].z = 4.0;
+    let patch = common::from_gl_points(points);
     let view_proj = camera(Vec3::new(0.0, 0.0, 3.0));
     let settings = ControlSettings {
         view_proj,
@@ -102,7 +104,7 @@ fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
             pixels_per_segment: 10.0,
         },
     };
-    let levels = run_control(&gpu, piece, &[patch], &settings).unwrap()[0];
+    let levels = run_control(&gpu, piece, std::slice::from_ref(&patch), &settings).unwrap()[0];
     assert_eq!(
         levels.outer[0], MAX_TESS_LEVEL,
         "u = 0 holds P0: {levels:?}"
@@ -129,11 +131,11 @@ fn a_boundary_at_or_behind_the_eye_gets_the_maximum_level() {
 ///      P0  ··· P3         P0  ··· P3      B.P0 = A.P15, ..., B.P12 = A.P3
 /// ```
 fn neighbour_sharing_reversed_boundary(a: &BezierPatch, rest: &BezierPatch) -> BezierPatch {
-    let mut b = *rest;
+    let (a, mut b) = (common::gl_points(a), common::gl_points(rest));
     for (bk, ak) in [(0, 15), (4, 11), (8, 7), (12, 3)] {
-        b.points[bk] = a.points[ak];
+        b[bk] = a[ak];
     }
-    b
+    common::from_gl_points(b)
 }
 
 proptest! {
@@ -173,7 +175,7 @@ proptest! {
         let Some(gpu) = common::gpu() else { return Ok(()) };
         let patches: Vec<BezierPatch> = pairs
             .iter()
-            .flat_map(|(a, rest)| [*a, neighbour_sharing_reversed_boundary(a, rest)])
+            .flat_map(|(a, rest)| [a.clone(), neighbour_sharing_reversed_boundary(a, rest)])
             .collect();
         let settings = ControlSettings {
             view_proj: camera(Vec3::new(eye.0, eye.1, eye.2)),

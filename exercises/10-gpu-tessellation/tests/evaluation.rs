@@ -3,7 +3,7 @@
 
 mod common;
 
-use glam::{DVec2, DVec3, Vec2, Vec3};
+use glam::{DVec2, DVec3, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::passes::{Domain, Patches, run_evaluation};
 use gpu_tessellation::patch::{BezierPatch, BezierTriangle, GpuVertex, SurfacePoint};
@@ -108,7 +108,7 @@ fn patch_corners_are_the_corner_control_points() {
             (k % 3) as f32 - 1.0,
         )
     });
-    let patch = BezierPatch::new(points);
+    let patch = common::from_gl_points(points.map(Vec3::as_dvec3));
     let domain = common::grid(1);
     let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
@@ -128,7 +128,7 @@ fn flat_patch_has_the_planes_normal_everywhere() {
     let piece = wgsl::EVALUATION.written();
     let Some(gpu) = common::gpu() else { return };
     // The plane z = 0.5 seen from +z, u along x and v along y: normal +z.
-    let patch = BezierPatch::flat(Vec2::new(-1.0, -0.5), Vec2::new(2.0, 1.5), 0.5);
+    let patch = BezierPatch::flat(DVec2::new(-1.0, -0.5), DVec2::new(2.0, 1.5), 0.5);
     let domain = common::grid(5);
     let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
     for (d, v) in domain.points.iter().zip(&got) {
@@ -147,12 +147,18 @@ fn normal_uses_the_surface_tangent_not_the_last_rows() {
     let Some(gpu) = common::gpu() else { return };
     // A twisted patch: row v = 1 runs along x, row v = 0 along x but rising
     // in z. At v = 0 the u tangent is (1, 0, 1)/√2-ish, not the last row's (1, 0, 0).
-    let mut patch = BezierPatch::flat(Vec2::ZERO, Vec2::ONE, 0.0);
-    for i in 0..4 {
-        patch.points[i].z = i as f32 / 3.0;
+    let mut points = common::gl_points(&BezierPatch::flat(DVec2::ZERO, DVec2::ONE, 0.0));
+    for (i, point) in points.iter_mut().take(4).enumerate() {
+        point.z = i as f64 / 3.0;
     }
+    let patch = common::from_gl_points(points);
     let domain = common::grid(1);
-    let got = evaluate_quads(&gpu, piece, &[patch], std::slice::from_ref(&domain));
+    let got = evaluate_quads(
+        &gpu,
+        piece,
+        std::slice::from_ref(&patch),
+        std::slice::from_ref(&domain),
+    );
     for (d, v) in domain.points.iter().zip(&got) {
         // Central differences stay inside [0, 1]² away from the corners' sides.
         let uv = d

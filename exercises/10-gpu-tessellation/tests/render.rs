@@ -48,7 +48,11 @@ fn bump(lo: Vec2, hi: Vec2, base: f32, scale: f32) -> BezierPatch {
         [0.0, 0.2, 0.8, 0.0],
         [0.0, 0.0, 0.0, 0.0],
     ];
-    BezierPatch::height_field(lo, hi, h.map(|row| row.map(|z| base + scale * z)))
+    BezierPatch::height_field(
+        lo.as_dvec2(),
+        hi.as_dvec2(),
+        h.map(|row| row.map(|z| f64::from(base + scale * z))),
+    )
 }
 
 /// Renders height fields (CPU tessellated) with your shading.
@@ -108,7 +112,7 @@ fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
     let Some(gpu) = common::gpu() else { return };
     let (lo, hi) = (Vec2::splat(-1.0), Vec2::splat(1.0));
     let patch = bump(lo, hi, 0.0, 0.8);
-    let yours = render_patches(&gpu, piece, &[patch]);
+    let yours = render_patches(&gpu, piece, &[patch.clone()]);
     let cpu = cpu_render(&[(patch, lo, hi)]);
     common::assert_matches_cpu("render_phong_bump", &yours, &cpu, SHADING);
 }
@@ -128,7 +132,7 @@ fn the_nearer_of_two_overlapping_patches_is_kept() {
     let (b_lo, b_hi) = (Vec2::splat(-0.5), Vec2::splat(0.5));
     let a = bump(a_lo, a_hi, 0.0, 0.4);
     let b = bump(b_lo, b_hi, 0.6, 0.3);
-    let yours = render_patches(&gpu, piece, &[b, a]);
+    let yours = render_patches(&gpu, piece, &[b.clone(), a.clone()]);
     let cpu = cpu_render(&[(a, a_lo, a_hi), (b, b_lo, b_hi)]);
     common::assert_matches_cpu("render_depth_two_patches", &yours, &cpu, SHADING);
 }

@@ -25,7 +25,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::basics::{BezierError, MAX_DEGREE, check_parameter};
-use crate::control_net::ControlNet;
+use freeform::BezierPatch;
 
 /// Below this ratio `|∂u × ∂v| / (|∂u| · |∂v|)` (the sine of the angle
 /// between the partial derivatives) the normal is taken as undefined.
@@ -56,16 +56,16 @@ pub struct SurfacePoint {
 /// # Errors
 /// [`BezierError::ParameterOutOfRange`] for `u` or `v` NaN or outside
 /// `[0, 1]` (the net itself is valid by construction).
-pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each column at u; de Casteljau the results at v
     check_uv(uv)?;
-    let (n_u, n_v) = (net.n_u(), net.n_v());
+    let (n_u, n_v) = (net.degree_u() + 1, net.degree_v() + 1);
     // Stack buffers: no allocation per surface point.
     let mut along_v = [DVec3::ZERO; MAX_POINTS];
     let mut column = [DVec3::ZERO; MAX_POINTS];
     for (j, q) in along_v[..n_v].iter_mut().enumerate() {
         for (i, c) in column[..n_u].iter_mut().enumerate() {
-            *c = net.point(i, j);
+            *c = net.control_point(i, j);
         }
         *q = reduce(&mut column[..n_u], uv.x).point;
     }
@@ -79,12 +79,12 @@ pub fn evaluate_u_then_v(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
-pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each row at v; de Casteljau the results at u
     check_uv(uv)?;
     let mut along_u = [DVec3::ZERO; MAX_POINTS];
     reduce_rows(net, uv.y, &mut along_u);
-    Ok(reduce(&mut along_u[..net.n_u()], uv.x).point)
+    Ok(reduce(&mut along_u[..=net.degree_u()], uv.x).point)
     // END SOLUTION
 }
 
@@ -106,10 +106,10 @@ pub fn evaluate_v_then_u(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierErr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
-pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, BezierError> {
+pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint, BezierError> {
     // BEGIN SOLUTION surface: reduce rows at v then at u (keep n·(r1 − r0)); columns at u then at v (keep m·(q1 − q0))
     check_uv(uv)?;
-    let (n_u, n_v) = (net.n_u(), net.n_v());
+    let (n_u, n_v) = (net.degree_u() + 1, net.degree_v() + 1);
     let mut rows = [DVec3::ZERO; MAX_POINTS];
     reduce_rows(net, uv.y, &mut rows);
     let in_u = reduce(&mut rows[..n_u], uv.x);
@@ -117,7 +117,7 @@ pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, 
     let mut column = [DVec3::ZERO; MAX_POINTS];
     for (j, q) in columns[..n_v].iter_mut().enumerate() {
         for (i, c) in column[..n_u].iter_mut().enumerate() {
-            *c = net.point(i, j);
+            *c = net.control_point(i, j);
         }
         *q = reduce(&mut column[..n_u], uv.x).point;
     }
@@ -144,7 +144,7 @@ pub fn partial_derivatives(net: &ControlNet, uv: DVec2) -> Result<SurfacePoint, 
 /// [`BezierError::ParameterOutOfRange`] as above;
 /// [`BezierError::DegenerateNormal`] if the normal is undefined at the
 /// nudged point too (a net collapsed to a curve or a point).
-pub fn normal(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
+pub fn normal(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: normalise ∂u × ∂v; if degenerate retry once nudged towards (½, ½); else DegenerateNormal
     check_uv(uv)?;
     let nudged = DVec2::new(
@@ -168,11 +168,11 @@ pub fn normal(net: &ControlNet, uv: DVec2) -> Result<DVec3, BezierError> {
 const MAX_POINTS: usize = MAX_DEGREE + 1;
 
 /// Reduces every row (v-curve) of the net at `v` into `out[..n_u]`.
-fn reduce_rows(net: &ControlNet, v: f64, out: &mut [DVec3; MAX_POINTS]) {
+fn reduce_rows(net: &BezierPatch, v: f64, out: &mut [DVec3; MAX_POINTS]) {
     let mut row = [DVec3::ZERO; MAX_POINTS];
-    for (i, r) in out[..net.n_u()].iter_mut().enumerate() {
-        row[..net.n_v()].copy_from_slice(net.row(i));
-        *r = reduce(&mut row[..net.n_v()], v).point;
+    for (i, r) in out[..=net.degree_u()].iter_mut().enumerate() {
+        row[..=net.degree_v()].copy_from_slice(net.row(i));
+        *r = reduce(&mut row[..=net.degree_v()], v).point;
     }
 }
 

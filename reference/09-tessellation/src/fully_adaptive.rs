@@ -32,7 +32,7 @@
 
 use std::collections::HashMap;
 
-use crate::bezier::{BezierPatch, SurfacePoint};
+use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
 use crate::mesh::Mesh;

@@ -8,7 +8,7 @@
 //! that do not touch the boundary become two triangles each as in the
 //! uniform tessellation; the ring of border cells is triangulated between
 //! the inner grid and the boundary curves' points (the zipper in
-//! [`surface::stitch`]). Two neighbours therefore meet in the very same
+//! [`freeform::stitch`]). Two neighbours therefore meet in the very same
 //! vertices: no T-junctions, no cracks.
 //!
 //! ```text
@@ -39,11 +39,11 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::bezier::{BezierPatch, SurfacePoint};
+use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
 use crate::error::TessError;
 use crate::mesh::Mesh;
 use crate::patch_grid::PatchGrid;
-use surface::stitch;
+use freeform::stitch;
 
 /// The most segments a curve or a patch direction gets, however curved.
 pub const MAX_SEGMENTS: usize = 64;

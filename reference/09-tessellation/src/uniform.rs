@@ -13,7 +13,7 @@
 
 use glam::DVec2;
 
-use crate::bezier::{BezierPatch, MAX_RESOLUTION};
+use crate::bezier::{BezierPatch, Evaluate, MAX_RESOLUTION};
 use crate::error::TessError;
 use crate::mesh::Mesh;
 
@@ -22,7 +22,7 @@ use crate::mesh::Mesh;
 /// and cut as in the module's diagram (vertices row by row from `v = 0`,
 /// `u` running fastest; triangles cell by cell in the same order, the lower
 /// right triangle first). Every vertex lies on the surface, with the
-/// surface's unit normal ([`BezierPatch::sample`]); triangles are
+/// surface's unit normal ([`Evaluate::sample`]); triangles are
 /// counter-clockwise in the `(u, v)` plane.
 ///
 /// # Errors

@@ -49,13 +49,13 @@
 //!
 //! The strips between rings are filled "in an implementation-dependent
 //! manner" (the specification fixes only the vertices and that the
-//! triangles tile the domain): here by the zipper of [`surface::stitch`] (given).
+//! triangles tile the domain): here by the zipper of [`freeform::stitch`] (given).
 //! All triangles are counter-clockwise (`layout(ccw)`).
 
 use glam::DVec2;
-use surface::stitch;
+use freeform::stitch;
 
-pub use surface::domain::{QuadDomain, TriangleDomain, embed};
+pub use freeform::domain::{QuadDomain, TriangleDomain, embed};
 
 /// `GL_MAX_TESS_GEN_LEVEL`: the largest level (64 is the minimum every
 /// implementation must support and what this generator uses).

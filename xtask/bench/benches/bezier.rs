@@ -10,7 +10,7 @@ use std::hint::black_box;
 use bezier::newton_trim::NewtonTrim;
 use bezier::ray_parity::{TrimLoop, TrimRegion};
 use bezier::surface::evaluate_u_then_v;
-use bezier::{ControlNet, Trim};
+use bezier::{BezierPatch, Trim};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{DVec2, DVec3};
 
@@ -24,7 +24,7 @@ fn grid() -> Vec<DVec2> {
 }
 
 /// The Bernstein double sum for a 4 × 4 net, written out (the baseline).
-fn bicubic_bernstein(net: &ControlNet, uv: DVec2) -> DVec3 {
+fn bicubic_bernstein(net: &BezierPatch, uv: DVec2) -> DVec3 {
     let basis = |t: f64| {
         let s = 1.0 - t;
         [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t]
@@ -33,14 +33,14 @@ fn bicubic_bernstein(net: &ControlNet, uv: DVec2) -> DVec3 {
     let mut sum = DVec3::ZERO;
     for (i, wu) in bu.iter().enumerate() {
         for (j, wv) in bv.iter().enumerate() {
-            sum += net.point(i, j) * (wu * wv);
+            sum += net.control_point(i, j) * (wu * wv);
         }
     }
     sum
 }
 
 fn surface(c: &mut Criterion) {
-    let net = ControlNet::seed_hill();
+    let net = BezierPatch::seed_hill();
     let points = grid();
     let mut group = c.benchmark_group("bicubic surface");
     group.throughput(Throughput::Elements(points.len() as u64));

@@ -45,7 +45,8 @@ fn de_casteljau_cubic(mut p: [DVec3; 4], t: f64) -> (DVec3, DVec3, DVec3) {
 /// The patch at every domain point on the CPU, in f64: de Casteljau along
 /// u on every row, then along v (and the u-tangent's points along v too).
 fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> {
-    let p = |k: usize| patch.points[k].as_dvec3();
+    // The GPU's order: `P_ij` at `4j + i`, row j a curve in u.
+    let p = |k: usize| patch.control_point(k % 4, k / 4);
     points
         .iter()
         .map(|d| {
@@ -89,7 +90,10 @@ fn patch_set() -> Vec<BezierPatch> {
         (state >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
     };
     (0..PATCHES)
-        .map(|_| BezierPatch::new(std::array::from_fn(|_| Vec3::new(next(), next(), next()))))
+        .map(|_| {
+            BezierPatch::from_fn(3, 3, |_, _| Vec3::new(next(), next(), next()).as_dvec3())
+                .expect("finite points")
+        })
         .collect()
 }
 

@@ -6,7 +6,7 @@
 
 use bezier::render::{SurfaceSample, checker};
 use bezier::zbuffer::{Camera, RasterVertex, rasterize_triangle};
-use bezier::{ControlNet, Trim};
+use bezier::{BezierPatch, Trim};
 use canvas::{Canvas, Rgba};
 use glam::{DVec2, DVec3};
 
@@ -46,25 +46,25 @@ pub fn derivative3(points: &[DVec3], t: f64) -> DVec3 {
 }
 
 /// Seed eq. (10): `Σ_i Σ_j B_{i,n}(u) B_{j,m}(v) P_{i,j}`.
-pub fn surface_def(net: &ControlNet, uv: DVec2) -> DVec3 {
+pub fn surface_def(net: &BezierPatch, uv: DVec2) -> DVec3 {
     let (n, m) = (net.degree_u(), net.degree_v());
     let mut sum = DVec3::ZERO;
     for i in 0..=n {
         for j in 0..=m {
-            sum += net.point(i, j) * bernstein_def(i, n, uv.x) * bernstein_def(j, m, uv.y);
+            sum += net.control_point(i, j) * bernstein_def(i, n, uv.x) * bernstein_def(j, m, uv.y);
         }
     }
     sum
 }
 
 /// `∂P/∂u` and `∂P/∂v` by differentiating eq. (10) term by term.
-pub fn surface_partials_def(net: &ControlNet, uv: DVec2) -> [DVec3; 2] {
+pub fn surface_partials_def(net: &BezierPatch, uv: DVec2) -> [DVec3; 2] {
     let (n, m) = (net.degree_u(), net.degree_v());
     let mut du = DVec3::ZERO;
     let mut dv = DVec3::ZERO;
     for i in 0..=n {
         for j in 0..=m {
-            let p = net.point(i, j);
+            let p = net.control_point(i, j);
             // d/dt B_{i,n}(t) = n (B_{i−1,n−1}(t) − B_{i,n−1}(t)).
             let db = |i: usize, n: usize, t: f64| {
                 if n == 0 {
@@ -91,7 +91,7 @@ pub fn surface_partials_def(net: &ControlNet, uv: DVec2) -> [DVec3; 2] {
 
 /// The surface sample the render task draws: eq. (10) and the normalised
 /// cross product of the partial derivatives.
-pub fn sample_def(net: &ControlNet, uv: DVec2) -> SurfaceSample {
+pub fn sample_def(net: &BezierPatch, uv: DVec2) -> SurfaceSample {
     let [du, dv] = surface_partials_def(net, uv);
     SurfaceSample {
         position: surface_def(net, uv),
@@ -141,7 +141,7 @@ impl Trim for Disc {
 pub fn trim_figure(trim: &dyn Trim) -> Canvas {
     const LEVEL: usize = 48;
     let [w, h] = FIGURE_SIZE;
-    let net = ControlNet::seed_hill();
+    let net = BezierPatch::seed_hill();
     let mut canvas = Canvas::new(w, h);
     canvas.clear(BACKGROUND);
     let vertex = |i: usize, j: usize| {

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 
 use testkit::topology::directed_edges;
 
-use tessellation::bezier::BezierPatch;
+use tessellation::bezier::{BezierPatch, Evaluate};
 use tessellation::mesh::Mesh;
 use tessellation::render::{Style, View, render};
 use tessellation::{DVec2, DVec3};

@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use canvas::{Canvas, Pixel, Rgba};
-use glam::{DVec2, DVec3, Vec2, Vec3};
+use glam::{DVec2, DVec3, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::passes::Domain;
 use gpu_tessellation::patch::{
@@ -36,7 +36,7 @@ fn unit_or_zero(n: DVec3) -> DVec3 {
 /// normal of the sheet: the cross product of the differences of the last
 /// step but one, `(∂P/∂u / 3) × (∂P/∂v / 3)`, normalised.
 pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfacePoint {
-    let control = |i: usize, j: usize| patch.points[4 * j + i].as_dvec3();
+    let control = |i: usize, j: usize| patch.control_point(i, j);
     let [position, du, dv] = tensor_bezier(3, 3, control, [uv.x, uv.y]);
     SurfacePoint {
         position,
@@ -157,9 +157,21 @@ pub fn random_cuts() -> impl Strategy<Value = Vec<f32>> {
     })
 }
 
+/// The control points of a bicubic patch in the GPU's order, `P_ij` at
+/// `4j + i` (the indices of the WGSL files and their comments).
+pub fn gl_points(patch: &BezierPatch) -> [DVec3; 16] {
+    std::array::from_fn(|k| patch.control_point(k % 4, k / 4))
+}
+
+/// The bicubic patch of 16 points given in the GPU's order (see
+/// [`gl_points`]).
+pub fn from_gl_points(points: [DVec3; 16]) -> BezierPatch {
+    BezierPatch::from_fn(3, 3, |i, j| points[4 * j + i]).expect("16 finite points")
+}
+
 /// A random bicubic patch.
 pub fn patch() -> impl Strategy<Value = BezierPatch> {
-    prop::array::uniform16(point()).prop_map(BezierPatch::new)
+    prop::array::uniform16(point()).prop_map(|points| from_gl_points(points.map(Vec3::as_dvec3)))
 }
 
 /// A random cubic Bézier triangle.
@@ -239,5 +251,5 @@ pub fn rgba(c: DVec3) -> Rgba {
 /// The patch filling `[-1, 1]²` at z = 0: with an identity view, pixel
 /// centre `(x, y)` sees `(u, v) = ((x + ½)/w, (y + ½)/h)`.
 pub fn full_screen_patch() -> BezierPatch {
-    BezierPatch::flat(Vec2::splat(-1.0), Vec2::splat(1.0), 0.0)
+    BezierPatch::flat(DVec2::splat(-1.0), DVec2::splat(1.0), 0.0)
 }

@@ -1,6 +1,10 @@
-//! The course library of the surface topics (09 and 10): what a
-//! tessellation cuts and how it joins the pieces, written once for both.
+//! The course library of the surface topics (07 to 10): the surfaces they
+//! evaluate, what a tessellation cuts and how it joins the pieces, written
+//! once for all of them.
 //!
+//! - [`BezierPatch`]: the tensor-product Bézier patch's control net, in the
+//!   one layout every topic uses (topic 07's de Casteljau, topic 09's
+//!   tessellations, topic 10's GPU buffer).
 //! - [`BezierTriangle`]: the cubic Bézier triangle's ten control points,
 //!   named by their exponents and stored in one order (topic 09's PN
 //!   triangles, topic 10's GPU buffer).
@@ -14,9 +18,11 @@
 #![warn(missing_docs)]
 
 pub mod domain;
+pub mod patch;
 pub mod stitch;
 pub mod triangle;
 
 pub use domain::{QuadDomain, TriangleDomain, embed};
+pub use patch::{BezierPatch, PatchError};
 pub use stitch::stitch;
 pub use triangle::BezierTriangle;
