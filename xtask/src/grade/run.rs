@@ -320,7 +320,12 @@ impl TestCommand {
                 FLOOD_KEPT >> 10,
                 &output[start..]
             );
-            fs::write(&self.log, &output)
+            // Into a new file renamed over the log: a process of the test
+            // that is still dying may write on into the old one (its file
+            // description keeps the old inode and offset), never into this.
+            let cut = self.log.with_extension("cut");
+            fs::write(&cut, &output)
+                .and_then(|()| fs::rename(&cut, &self.log))
                 .with_context(|| format!("cannot write {}", self.log.display()))?;
         }
         Ok(Finished {
