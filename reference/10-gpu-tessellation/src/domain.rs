@@ -52,8 +52,8 @@
 //! triangles tile the domain): here by the zipper of [`freeform::stitch`] (given).
 //! All triangles are counter-clockwise (`layout(ccw)`).
 
-use glam::DVec2;
 use freeform::stitch;
+use glam::DVec2;
 
 pub use freeform::domain::{QuadDomain, TriangleDomain, embed};
 
