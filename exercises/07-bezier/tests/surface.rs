@@ -166,6 +166,105 @@ fn invalid_input_is_a_clear_error() {
     );
 }
 
+/// A net of degree 24 in u whose points swing between ±1000: the power form
+/// `Σ a_k uᵏ` of its curves has coefficients near `C(24, k) · 2ᵏ · 1000`
+/// that cancel to a value near 1000, and loses all its digits doing so;
+/// de Casteljau only ever takes convex combinations of the points and
+/// stays within rounding of the definition.
+///
+/// ```text
+///   x ↑  P0    P2    P4   …  P24          (every column j the same swing,
+///     │                                    shifted in y and z)
+///     │     P1    P3    …  P23
+/// ```
+fn swinging_net() -> BezierPatch {
+    BezierPatch::from_fn(24, 2, |i, j| {
+        let swing = if i % 2 == 0 { 1000.0 } else { -1000.0 };
+        let (i, j) = (i as f64, j as f64);
+        DVec3::new(swing + 3.0 * i, 10.0 * j - 0.5 * swing, i * j)
+    })
+    .unwrap()
+}
+
+#[testkit::test]
+fn de_casteljau_stays_on_the_surface_of_a_swinging_net_of_degree_24() {
+    let net = swinging_net();
+    for (u, v) in [
+        (0.1, 0.3),
+        (0.37, 0.5),
+        (0.5, 0.9),
+        (0.77, 0.2),
+        (0.9, 0.65),
+    ] {
+        let expected = common::surface_def(&net, uv(u, v));
+        for (order, got) in [
+            ("evaluate_u_then_v", evaluate_u_then_v(&net, uv(u, v))),
+            ("evaluate_v_then_u", evaluate_v_then_u(&net, uv(u, v))),
+            (
+                "partial_derivatives' position",
+                partial_derivatives(&net, uv(u, v)).map(|p| p.position),
+            ),
+        ] {
+            let got = got.unwrap();
+            assert!(
+                got.abs_diff_eq(expected, 1e-9),
+                "{order} at ({u}, {v}) gives {got}, the definition {expected}: off by {:e} \
+                 (de Casteljau's convex combinations stay within 1e-9 of it; the power \
+                 form with Horner's rule loses its digits at this degree)",
+                (got - expected).length()
+            );
+        }
+    }
+}
+
+/// The net with u and v swapped: `P'_{j,i} = P_{i,j}`.
+fn transposed(net: &BezierPatch) -> BezierPatch {
+    BezierPatch::from_fn(net.degree_v(), net.degree_u(), |j, i| {
+        net.control_point(i, j)
+    })
+    .unwrap()
+}
+
+#[testkit::test]
+fn v_then_u_is_u_then_v_of_the_transposed_net() {
+    // Reducing the columns of a net at u and then the results at v is
+    // reducing the rows of its transpose at u (its second parameter) and
+    // then the results at v: the very same interpolations in the very same
+    // order, so the same bits. The two orders themselves differ in their
+    // last bits here, which is how a v then u that is not one shows.
+    let net = BezierPatch::from_fn(3, 2, |i, j| {
+        let (i, j) = (i as f64, j as f64);
+        DVec3::new(
+            0.1 * i + 0.7 * j,
+            (1.3 * i * j).sin(),
+            0.3 * i * i - 0.2 * j,
+        )
+    })
+    .unwrap();
+    let flipped = transposed(&net);
+    for (u, v) in [(0.1, 0.7), (0.3, 0.3), (0.77, 0.41), (0.9, 0.05)] {
+        let u_then_v = evaluate_u_then_v(&net, uv(u, v)).unwrap();
+        let v_then_u = evaluate_v_then_u(&net, uv(u, v)).unwrap();
+        let expected = common::surface_def(&net, uv(u, v));
+        for (order, got) in [("u then v", u_then_v), ("v then u", v_then_u)] {
+            assert!(
+                got.abs_diff_eq(expected, 1e-12),
+                "{order} at ({u}, {v}): {got}, the definition gives {expected}"
+            );
+        }
+        assert_eq!(
+            evaluate_v_then_u(&flipped, uv(v, u)).unwrap(),
+            u_then_v,
+            "evaluate_v_then_u of the transposed net at ({v}, {u}) is evaluate_u_then_v at ({u}, {v}), bit for bit (use one de Casteljau helper for both orders)"
+        );
+        assert_eq!(
+            evaluate_u_then_v(&flipped, uv(v, u)).unwrap(),
+            v_then_u,
+            "evaluate_u_then_v of the transposed net at ({v}, {u}) is evaluate_v_then_u at ({u}, {v}), bit for bit (use one de Casteljau helper for both orders)"
+        );
+    }
+}
+
 fn nets() -> impl Strategy<Value = BezierPatch> {
     (1..=5_usize, 1..=5_usize).prop_flat_map(|(n_u, n_v)| {
         prop::collection::vec(
@@ -191,6 +290,15 @@ proptest! {
         let expected = common::surface_def(&net, uv(u, v));
         prop_assert!(a.abs_diff_eq(b, 1e-12), "{} vs {}", a, b);
         prop_assert!(a.abs_diff_eq(expected, 1e-12), "{} vs {}", a, expected);
+    }
+
+    #[testkit::test]
+    fn both_orders_are_each_others_transpose(net in nets(), u in unit(), v in unit()) {
+        let flipped = transposed(&net);
+        let u_then_v = evaluate_u_then_v(&net, uv(u, v)).unwrap();
+        prop_assert!(u_then_v.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12), "{}", u_then_v);
+        prop_assert_eq!(evaluate_v_then_u(&flipped, uv(v, u)).unwrap(), u_then_v);
+        prop_assert_eq!(evaluate_u_then_v(&flipped, uv(v, u)).unwrap(), evaluate_v_then_u(&net, uv(u, v)).unwrap());
     }
 
     #[testkit::test]
