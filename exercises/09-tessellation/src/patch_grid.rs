@@ -81,8 +81,8 @@ impl PatchGrid {
                 let patch = grid.patch(row, col);
                 if col + 1 < cols
                     && !same(
-                        &patch.row(patch.degree_u()),
-                        &grid.patch(row, col + 1).row(0),
+                        patch.row(patch.degree_u()),
+                        grid.patch(row, col + 1).row(0),
                     )
                 {
                     return Err(TessError::NotContinuous {

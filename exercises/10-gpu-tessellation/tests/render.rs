@@ -112,7 +112,7 @@ fn phong_shading_of_a_bump_matches_the_cpu_rendering() {
     let Some(gpu) = common::gpu() else { return };
     let (lo, hi) = (Vec2::splat(-1.0), Vec2::splat(1.0));
     let patch = bump(lo, hi, 0.0, 0.8);
-    let yours = render_patches(&gpu, piece, &[patch.clone()]);
+    let yours = render_patches(&gpu, piece, std::slice::from_ref(&patch));
     let cpu = cpu_render(&[(patch, lo, hi)]);
     common::assert_matches_cpu("render_phong_bump", &yours, &cpu, SHADING);
 }
