@@ -80,10 +80,7 @@ impl PatchGrid {
             for col in 0..cols {
                 let patch = grid.patch(row, col);
                 if col + 1 < cols
-                    && !same(
-                        patch.row(patch.degree_u()),
-                        grid.patch(row, col + 1).row(0),
-                    )
+                    && !same(patch.row(patch.degree_u()), grid.patch(row, col + 1).row(0))
                 {
                     return Err(TessError::NotContinuous {
                         row,

@@ -453,18 +453,10 @@ impl ViewerApp {
     }
 
     fn picture(&mut self, ui: &mut egui::Ui) {
-        if let Some(busy) = self.worker.slow_for() {
-            ui.label(
-                RichText::new(format!(
-                    "Your stages have been drawing this frame for {:.1} s: an endless loop? \
-                     The window stays usable; fix the loop and restart the viewer.",
-                    busy.as_secs_f64()
-                ))
-                .color(Color32::YELLOW),
-            );
-        }
+        let slow = self.worker.slow_for();
         let Some(frame) = &self.frame else {
             ui.label("drawing …");
+            slow_notice(ui, "Your stages have been drawing this frame", slow);
             return;
         };
         let texture = self
@@ -479,7 +471,7 @@ impl ViewerApp {
             .clone();
         // The largest whole-pixel magnification that fits, so that every
         // pixel shows as a sharp square.
-        let available = ui.available_size();
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
         let (w, h) = (
             frame.canvas.width().max(1) as f32,
             frame.canvas.height().max(1) as f32,
@@ -503,6 +495,30 @@ impl ViewerApp {
                     (self.settings.distance * (1.0 - scroll * 0.002)).clamp(1.0, 12.0);
             }
         }
+        slow_notice(ui, "Your stages have been drawing this frame", slow);
+    }
+}
+
+/// The room kept below a picture or the pixel grid for [`slow_notice`]:
+/// the picture is laid out the same whether the notice shows or not, so
+/// that it never moves under the pointer (a handle being dragged stays
+/// where it was grabbed).
+fn notice_room(ui: &egui::Ui) -> f32 {
+    3.0 * ui.text_style_height(&egui::TextStyle::Body)
+}
+
+/// Below the picture: that the student's code has been drawing for long,
+/// perhaps in an endless loop, and that the window still answers.
+fn slow_notice(ui: &mut egui::Ui, what: &str, busy: Option<std::time::Duration>) {
+    if let Some(busy) = busy {
+        ui.label(
+            RichText::new(format!(
+                "{what} for {:.1} s: an endless loop? \
+                 The window stays usable; fix the loop and restart the viewer.",
+                busy.as_secs_f64()
+            ))
+            .color(Color32::YELLOW),
+        );
     }
 }
 
@@ -589,19 +605,10 @@ impl ViewerApp {
     }
 
     fn pixel_grid(&mut self, ui: &mut egui::Ui) {
-        if let Some(busy) = self.playground.worker.slow_for() {
-            ui.label(
-                RichText::new(format!(
-                    "Your code has been drawing for {:.1} s: an endless loop? \
-                     The window stays usable; fix the loop and restart the viewer.",
-                    busy.as_secs_f64()
-                ))
-                .color(Color32::YELLOW),
-            );
-        }
+        let slow = self.playground.worker.slow_for();
         let playground = &mut self.playground;
         let n = playground.setup.size;
-        let available = ui.available_size();
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
         let cell = (available.x.min(available.y) / n as f32).floor().max(4.0);
         let (response, painter) = ui.allocate_painter(
             egui::vec2(cell * n as f32, cell * n as f32),
@@ -722,6 +729,7 @@ impl ViewerApp {
                 Color32::BLACK,
             );
         }
+        slow_notice(ui, "Your code has been drawing", slow);
     }
 }
 
