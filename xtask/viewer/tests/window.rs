@@ -194,11 +194,14 @@ fn a_wrong_circle_is_marked_pixel_by_pixel() {
     harness.get_by_label(&note);
 }
 
-#[test]
-fn dragging_a_handle_moves_the_line_and_redraws_it() {
-    let mut harness = harness(Stages::yours());
+/// Drags handle 1 of the playground's line two cells right and one up,
+/// from pixel (13, 8) to (15, 9), in four moves with `pause` after each,
+/// and checks that the line followed. The grid is read off the window once,
+/// before the drag: the pointer moves as a person's hand does, whatever
+/// the window shows meanwhile.
+fn drag_the_line_end(harness: &mut Harness<'static, ViewerApp>, pause: Duration) {
     harness.state_mut().set_scene(course_viewer::Scene::Pixels);
-    settle_pixels(&mut harness);
+    settle_pixels(harness);
     let before = harness.state().drawing().unwrap().clone();
     let from = harness
         .state()
@@ -206,7 +209,6 @@ fn dragging_a_handle_moves_the_line_and_redraws_it() {
         .expect("the grid is drawn");
     let cell = harness.state().handle_on_screen(0).unwrap().distance(from)
         / before.setup.handles[0].distance(before.setup.handles[1]);
-    // Two cells right and one up: pixel (13, 8) to (15, 9).
     let to = from + egui::vec2(2.0 * cell, -cell);
     let input = harness.input_mut();
     input.events.push(egui::Event::PointerMoved(from));
@@ -223,6 +225,8 @@ fn dragging_a_handle_moves_the_line_and_redraws_it() {
             .events
             .push(egui::Event::PointerMoved(from + (to - from) * t));
         harness.run_steps(1);
+        std::thread::sleep(pause);
+        harness.run_steps(1);
     }
     harness.input_mut().events.push(egui::Event::PointerButton {
         pos: to,
@@ -231,7 +235,7 @@ fn dragging_a_handle_moves_the_line_and_redraws_it() {
         modifiers: egui::Modifiers::NONE,
     });
     harness.run_steps(2);
-    settle_pixels(&mut harness);
+    settle_pixels(harness);
     let after = harness.state().drawing().unwrap();
     assert_eq!(after.setup.handles[1], canvas::Vec2::new(15.0, 9.0));
     assert_eq!(
@@ -241,4 +245,32 @@ fn dragging_a_handle_moves_the_line_and_redraws_it() {
     assert!(after.expected.contains(&canvas::Pixel::new(15, 9)));
     assert!(after.summary().starts_with("all "), "{}", after.summary());
     assert_ne!(after.expected, before.expected);
+}
+
+#[test]
+fn dragging_a_handle_moves_the_line_and_redraws_it() {
+    let mut harness = harness(Stages::yours());
+    drag_the_line_end(&mut harness, Duration::ZERO);
+}
+
+#[test]
+fn a_slow_stage_does_not_move_the_grid_under_a_drag() {
+    // Each line takes 60 ms and counts as slow after 20: while the handle
+    // is dragged the notice of a slow stage comes and goes. The grid must
+    // stay where the pointer found it.
+    let mut stages = Stages::yours();
+    let dda = Stages::yours().line.run.expect("the solutions draw lines");
+    stages.line.run = Some(Arc::new(
+        move |from: &canvas::Vertex,
+              to: &canvas::Vertex,
+              plot: &mut dyn FnMut(canvas::Fragment)| {
+            std::thread::sleep(Duration::from_millis(60));
+            dda(from, to, plot);
+        },
+    ));
+    let mut harness = harness(stages);
+    harness
+        .state_mut()
+        .set_slow_after(Duration::from_millis(20));
+    drag_the_line_end(&mut harness, Duration::from_millis(40));
 }
