@@ -26,8 +26,11 @@
 //!   sheet's `round`: `0.5 → 1`, `−0.5 → −1`, `2.5 → 3`.
 //! - **Lines include both endpoints.** Tie-breaks are the rasterizer's to
 //!   state (the midpoint line takes the lower pixel of two equally near ones).
-//! - **Fills use the top-left rule** where an edge passes exactly through a
-//!   pixel centre (the fill topics define it precisely).
+//! - **A centre exactly on an edge belongs to one of the two shapes that
+//!   share the edge**, never both: the triangle fill gives it by the
+//!   top-left rule, the rectangle and polygon fills by half-open ranges
+//!   (left and bottom edges in, right and top edges out). Topic 03's sheet
+//!   defines each precisely.
 //! - **Writes outside the canvas are ignored**: rasterizers may emit pixels
 //!   anywhere; [`Canvas::set`] and friends clip them silently.
 //! - **Coordinates are limited to ±[`MAX_COORD`]**: beyond that an `f32`
