@@ -28,3 +28,7 @@ pub mod wu;
 
 /// Task 5d: intensity compensation for the slope of aliased lines.
 pub mod slope_intensity;
+
+/// Task 6 (bonus): the DDA in lanes of eight columns, each from the closed
+/// form (seed 004's vectorised bonus).
+pub mod vectorised_dda;

@@ -1,15 +1,20 @@
-//! The reference lines against imageproc, on a 1024² canvas, in one run.
+//! The reference lines against imageproc, on a 1024² canvas, in one run:
+//! the midpoint line, task 1's DDA and the bonus's DDA in lanes (both with
+//! colour and depth), imageproc's line; Wu against imageproc's antialiased
+//! line.
 //!
 //! Throughput is in pixels: every line of the set counts
 //! `max(|Δx|, |Δy|) + 1` pixels for both contenders.
 
 use std::hint::black_box;
 
-use canvas::{Canvas, Pixel, Rgba};
+use canvas::{Canvas, Pixel, Rgba, Vertex};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use image::RgbaImage;
 use imageproc::drawing::{draw_antialiased_line_segment_mut, draw_line_segment_mut};
 use imageproc::pixelops::interpolate;
+use lines::dda::dda_line;
+use lines::vectorised_dda::vectorised_dda_line;
 use lines::{midpoint::midpoint_line, wu::wu_line};
 
 const SIDE: u32 = 1024;
@@ -46,6 +51,27 @@ fn aliased(c: &mut Criterion) {
         b.iter(|| {
             for &[from, to] in &lines {
                 midpoint_line(from, to, |p| canvas.set(p, Rgba::WHITE));
+            }
+            black_box(&canvas);
+        });
+    });
+    // The DDAs interpolate colour and depth as well (white to white here).
+    let vertices: Vec<[Vertex; 2]> = lines
+        .iter()
+        .map(|&[a, b]| [a, b].map(|p| Vertex::new(p.centre(), 0.5, Rgba::WHITE)))
+        .collect();
+    group.bench_function("reference dda_line (running sum)", |b| {
+        b.iter(|| {
+            for [from, to] in &vertices {
+                dda_line(from, to, |f| canvas.plot(f));
+            }
+            black_box(&canvas);
+        });
+    });
+    group.bench_function("reference vectorised_dda_line (lanes of 8)", |b| {
+        b.iter(|| {
+            for [from, to] in &vertices {
+                vectorised_dda_line(from, to, |_| {}, |f| canvas.plot(f));
             }
             black_box(&canvas);
         });
