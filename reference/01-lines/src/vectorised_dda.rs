@@ -101,6 +101,7 @@ pub fn vectorised_dda_line(
             minor: [0.0; LANES],
         };
         let mut t = [0.0_f32; LANES];
+        let mut rounded = [0_i32; LANES];
         // The data-parallel loop: no lane reads another. Lanes past `len`
         // compute columns beyond the line, which are never plotted.
         for k in 0..LANES {
@@ -108,7 +109,15 @@ pub fn vectorised_dda_line(
             #[allow(clippy::cast_possible_truncation)] // within ±2·MAX_COORD + LANES
             let major = first + step * offset as i32;
             lanes.major[k] = major;
-            lanes.minor[k] = f64::from(a_minor) + slope * (f64::from(major) - f64::from(a_major));
+            let minor = f64::from(a_minor) + slope * (f64::from(major) - f64::from(a_major));
+            lanes.minor[k] = minor;
+            // Half away from zero without a call to `round` (which the
+            // vector units of a plain x86-64 target lack): truncate, then
+            // step one away from zero where the fraction reaches ½.
+            #[allow(clippy::cast_possible_truncation)] // within the limits
+            let whole = minor as i32;
+            let fraction = minor - f64::from(whole);
+            rounded[k] = whole + i32::from(fraction >= 0.5) - i32::from(fraction <= -0.5);
             t[k] = if d_major == 0.0 {
                 0.0
             } else {
@@ -117,9 +126,7 @@ pub fn vectorised_dda_line(
         }
         batch(&lanes);
         for k in 0..len {
-            // Half away from zero, as `round_half_away`; within the limits.
-            #[allow(clippy::cast_possible_truncation)]
-            let rounded = lanes.minor[k].round() as i32;
+            let rounded = rounded[k];
             let pixel = if x_major {
                 Pixel::new(lanes.major[k], rounded)
             } else {

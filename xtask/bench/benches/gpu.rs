@@ -45,8 +45,10 @@ fn de_casteljau_cubic(mut p: [DVec3; 4], t: f64) -> (DVec3, DVec3, DVec3) {
 /// The patch at every domain point on the CPU, in f64: de Casteljau along
 /// u on every row, then along v (and the u-tangent's points along v too).
 fn tessellate_patch(patch: &BezierPatch, points: &[Vec3]) -> Vec<GpuVertex> {
-    // The GPU's order: `P_ij` at `4j + i`, row j a curve in u.
-    let p = |k: usize| patch.control_point(k % 4, k / 4);
+    // The GPU's order: `P_ij` at `4j + i`, row j a curve in u; read once
+    // per patch, not once per vertex.
+    let net: [DVec3; 16] = std::array::from_fn(|k| patch.control_point(k % 4, k / 4));
+    let p = |k: usize| net[k];
     points
         .iter()
         .map(|d| {

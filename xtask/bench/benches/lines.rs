@@ -93,6 +93,52 @@ fn aliased(c: &mut Criterion) {
     group.finish();
 }
 
+/// The rasterizers alone: every fragment goes into a checksum instead of
+/// the canvas, so that what is measured is finding the pixels (and, for
+/// the DDAs, mixing colour and depth), not writing them.
+fn pixels_only(c: &mut Criterion) {
+    let lines = line_set();
+    let mut group = c.benchmark_group("aliased lines, pixels only");
+    group.throughput(Throughput::Elements(pixel_count(&lines)));
+    let vertices: Vec<[Vertex; 2]> = lines
+        .iter()
+        .map(|&[a, b]| [a, b].map(|p| Vertex::new(p.centre(), 0.5, Rgba::WHITE)))
+        .collect();
+    let sum = |sum: &mut u64, p: Pixel| {
+        *sum = sum
+            .wrapping_mul(31)
+            .wrapping_add((p.x ^ (p.y << 11)) as u64);
+    };
+    group.bench_function("reference midpoint_line", |b| {
+        b.iter(|| {
+            let mut checksum = 0_u64;
+            for &[from, to] in &lines {
+                midpoint_line(from, to, |p| sum(&mut checksum, p));
+            }
+            black_box(checksum)
+        });
+    });
+    group.bench_function("reference dda_line (running sum)", |b| {
+        b.iter(|| {
+            let mut checksum = 0_u64;
+            for [from, to] in &vertices {
+                dda_line(from, to, |f| sum(&mut checksum, f.pixel));
+            }
+            black_box(checksum)
+        });
+    });
+    group.bench_function("reference vectorised_dda_line (lanes of 8)", |b| {
+        b.iter(|| {
+            let mut checksum = 0_u64;
+            for [from, to] in &vertices {
+                vectorised_dda_line(from, to, |_| {}, |f| sum(&mut checksum, f.pixel));
+            }
+            black_box(checksum)
+        });
+    });
+    group.finish();
+}
+
 fn antialiased(c: &mut Criterion) {
     let lines = line_set();
     let mut group = c.benchmark_group("antialiased lines, 1024²");
@@ -124,5 +170,5 @@ fn antialiased(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, aliased, antialiased);
+criterion_group!(benches, aliased, pixels_only, antialiased);
 criterion_main!(benches);

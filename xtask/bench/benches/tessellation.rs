@@ -3,7 +3,8 @@
 //! topic 10 is measured in `gpu.rs`).
 //!
 //! Every triangle counts once: `2 n²` for `n × n` cells (each vertex is
-//! evaluated by de Casteljau with both tangents and a normal).
+//! evaluated with both tangents and a normal by topic 09's given
+//! `Evaluate`: the power form of every row, then of the curve they make).
 
 use std::hint::black_box;
 
