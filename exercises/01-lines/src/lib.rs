@@ -32,3 +32,7 @@ pub mod slope_intensity;
 /// Task 6 (bonus): the DDA in lanes of eight columns, each from the closed
 /// form (seed 004's vectorised bonus).
 pub mod vectorised_dda;
+
+/// Task 7 (bonus): the midpoint line from both endpoints at once (the
+/// slides' speed-up).
+pub mod two_ended;

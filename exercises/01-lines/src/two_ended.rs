@@ -1,0 +1,45 @@
+//! The midpoint line from both endpoints at once: the slides' speed-up
+//! ("Zur Beschleunigung kann der Algorithmus auch von beiden Endpunkten
+//! gleichzeitig gestartet werden", seed 002, "Midpoint Line Algorithmus").
+//!
+//! Two walkers share one loop: one steps from `from` towards `to`, the
+//! other from `to` towards `from`, and they meet in the middle, so the
+//! loop runs half as often. Each walker is task 2's midpoint line in its
+//! own direction. The second is not simply the first mirrored through the
+//! line's centre: at a tie the rule takes the smaller minor coordinate,
+//! and the mirror image of "smaller" is "larger". Walking the other way,
+//! the second walker's minor axis runs the other way too, so it takes the
+//! diagonal step at a tie exactly when the first does not.
+//!
+//! ```text
+//!   plot order:  0   n   1  n−1  2  n−2  …   (pixels numbered from `from`)
+//!                ■───────────────────────■
+//!                └─▶ walker from `from`  ◀─┘ walker from `to`
+//! ```
+//!
+//! Convention (see `canvas`): pixel centres at integers, y up; both
+//! endpoints are drawn; a tie (the midpoint exactly on the line) goes to
+//! the pixel with the smaller minor coordinate — the pixels of task 2.
+
+#[allow(unused_imports)]
+use canvas::{MAX_COORD, Pixel};
+
+/// Rasterizes the line from `from` to `to` as task 2's `midpoint_line`
+/// does, from both ends at once, and calls `plot` once per pixel in the
+/// order of the two walkers: `from`, `to`, then alternately the next
+/// pixel from `from`'s side and the next from `to`'s side, until they
+/// meet (the middle pixel of a line with an odd number of pixels comes
+/// last, from `from`'s side).
+///
+/// - With pixels `p₀ = from, p₁, …, p_n = to` (one per column of the major
+///   axis, `n = max(|Δx|, |Δy|)`), the order is
+///   `p₀, p_n, p₁, p_(n−1), p₂, …`: each exactly once.
+/// - A zero-length line plots one pixel.
+/// - Endpoints beyond ±[`MAX_COORD`] draw nothing.
+pub fn two_ended_midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+    // Unused until you write the body:
+    let _ = (&from, &to, &mut plot);
+    todo!(
+        "two_ended: one midpoint walker from each end, each with its own tie rule, stepped in turn until they meet"
+    )
+}
