@@ -15,6 +15,8 @@
 //!   definitions, exactly (what topics 01–03 compare with);
 //! - [`oracles`]: values by their definitions (binomials, Bernstein
 //!   polynomials), never by the algorithms the tasks teach;
+//! - [`domains`]: regular grids and lattices of parameters, built without
+//!   the primitive generator;
 //! - [`topology`]: how the triangles of a mesh meet (directed edge counts);
 //! - [`test`]: `#[testkit::test]`, the `#[test]` of every graded test: it
 //!   tells the grader that the test ran to its end over a channel the code
@@ -22,6 +24,7 @@
 #![warn(missing_docs)]
 
 pub mod definitions;
+pub mod domains;
 pub mod image;
 pub mod oracles;
 pub mod pixels;

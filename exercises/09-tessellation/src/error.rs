@@ -25,9 +25,6 @@ pub enum TessError {
         /// What was given.
         found: usize,
     },
-    /// A control net that is no patch (its degree, its count, a point).
-    #[error(transparent)]
-    Patch(#[from] freeform::PatchError),
     /// A resolution (number of cells or segments) that is zero or too large.
     #[error("resolution {0} is outside 1..={max}", max = crate::bezier::MAX_RESOLUTION)]
     Resolution(usize),

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{assert_picture, lattice_domain};
+use common::assert_picture;
 use proptest::prelude::*;
 use tessellation::DVec3;
 use tessellation::bezier::curve;
@@ -10,6 +10,7 @@ use tessellation::bezier_triangle::{BezierTriangle, evaluate, pn_triangle, tesse
 use tessellation::error::TessError;
 use tessellation::mesh::Mesh;
 use tessellation::render::{Style, View};
+use testkit::domains::lattice;
 
 const EXACT: f64 = 1e-12;
 
@@ -120,8 +121,8 @@ fn pn_triangle_interpolates_vertices_and_normals() {
         DVec3::new(0.0, 0.0, 1.0),
     ];
     let pn = pn_triangle(positions, positions).unwrap();
-    let mesh = tessellate_pn(&pn, &lattice_domain(6));
-    let domain = lattice_domain(6);
+    let mesh = tessellate_pn(&pn, &lattice(6));
+    let domain = lattice(6);
     for (k, b) in domain.points.iter().enumerate() {
         for corner in 0..3 {
             if b[corner] == 1.0 {
@@ -167,7 +168,7 @@ fn pn_octant_bulges_towards_the_sphere() {
     assert!(evaluate(&g, [0.0, 0.5, 0.5]).distance(DVec3::new(0.0, 0.625, 0.625)) < EXACT);
     assert!(evaluate(&g, [1.0 / 3.0; 3]).distance(DVec3::splat(4.0 / 9.0)) < EXACT);
     // Everywhere at least as far out as the flat triangle, never outside the sphere.
-    let domain = lattice_domain(12);
+    let domain = lattice(12);
     let mesh = tessellate_pn(&pn, &domain);
     for (p, b) in mesh.positions.iter().zip(&domain.points) {
         let flat = b[0] * DVec3::X + b[1] * DVec3::Y + b[2] * DVec3::Z;
@@ -201,7 +202,7 @@ fn zero_or_non_finite_input_is_an_error() {
 fn pn_sphere_matches_the_reference_image() {
     // The octahedron's eight faces as PN triangles with normals = positions.
     let axes = [DVec3::X, DVec3::Y, -DVec3::X, -DVec3::Y];
-    let domain = lattice_domain(8);
+    let domain = lattice(8);
     let mut sphere = Mesh::new();
     for k in 0..4 {
         for pole in [DVec3::Z, -DVec3::Z] {

@@ -20,9 +20,11 @@ use crate::patch::{BezierPatch, BezierTriangle, GpuVertex, patch_to_gpu, triangl
 use crate::shaders;
 use crate::wgsl::{Part, Piece};
 
-/// The largest tessellation level the control pass gives
-/// (`GL_MAX_TESS_GEN_LEVEL`'s minimum; `MAX_TESS_LEVEL` in the WGSL).
-pub const MAX_TESS_LEVEL: f32 = 64.0;
+/// The largest tessellation level the control pass gives: the primitive
+/// generator's [`MAX_TESS_GEN_LEVEL`](crate::domain::MAX_TESS_GEN_LEVEL)
+/// (`MAX_TESS_LEVEL` in the WGSL).
+#[allow(clippy::cast_possible_truncation)] // 64 is exact in f32
+pub const MAX_TESS_LEVEL: f32 = crate::domain::MAX_TESS_GEN_LEVEL as f32;
 
 /// Levels of a quad patch, as the control pass writes them (GLSL
 /// `gl_TessLevelOuter[0..4]`, `gl_TessLevelInner[0..2]`).

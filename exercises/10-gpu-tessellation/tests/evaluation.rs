@@ -225,7 +225,7 @@ proptest! {
     #[testkit::test]
     fn random_bezier_triangles_match_the_cpu_evaluation(
         triangles in prop::collection::vec(common::triangle(), 1..6),
-        levels in prop::collection::vec(1u32..20, 6),
+        levels in prop::collection::vec(1usize..20, 6),
     ) {
         let piece = wgsl::EVALUATION.written();
         let Some(gpu) = common::gpu() else { return Ok(()) };

@@ -22,7 +22,7 @@ use testkit::image::Tolerance;
 const SIZE: u32 = 128;
 /// Tessellation level of the shading tests: the GPU interpolates normals
 /// between vertices this far apart, the CPU uses the exact normal.
-const LEVEL: u32 = 32;
+const LEVEL: usize = 32;
 /// Shading tolerance: 3/255 per channel on all but 1 % of the pixels
 /// (texel and highlight edges, where interpolated normals and `(u, v)`
 /// differ slightly from the exact ones).

@@ -182,32 +182,3 @@ pub const SEED_VIEW: View = View {
     yaw: 2.4,
     pitch: -1.0,
 };
-
-/// A regular triangle domain of level `n`, built here independently of
-/// the primitive generator: the barycentric lattice `(i, j, n − i − j)/n`
-/// with its up and down triangles, counter-clockwise in the embedding
-/// `u·(1, 0) + v·(½, √3/2)`.
-pub fn lattice_domain(n: usize) -> tessellation::bezier_triangle::TriangleDomain {
-    let mut domain = tessellation::bezier_triangle::TriangleDomain::default();
-    let mut id = HashMap::new();
-    for i in 0..=n {
-        for j in 0..=n - i {
-            id.insert((i, j), domain.points.len() as u32);
-            let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
-            domain.points.push([u, v, 1.0 - u - v]);
-        }
-    }
-    for i in 0..n {
-        for j in 0..n - i {
-            domain
-                .triangles
-                .push([id[&(i, j)], id[&(i + 1, j)], id[&(i, j + 1)]]);
-            if i + j + 2 <= n {
-                domain
-                    .triangles
-                    .push([id[&(i + 1, j)], id[&(i + 1, j + 1)], id[&(i, j + 1)]]);
-            }
-        }
-    }
-    domain
-}

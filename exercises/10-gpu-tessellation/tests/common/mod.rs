@@ -79,76 +79,33 @@ pub fn point() -> impl Strategy<Value = Vec3> {
     (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0).prop_map(|(x, y, z)| Vec3::new(x, y, z))
 }
 
-/// The tensor grid of the parameters `us × vs` (each from 0 to 1, rising)
-/// as a domain: points `(u, v, 0)` row by row, two counter-clockwise
-/// triangles per cell. Built here, independently of the primitive
-/// generator (task 2), so that the other tasks' tests never run it.
-pub fn grid_at(us: &[f32], vs: &[f32]) -> Domain {
-    let mut domain = Domain::default();
-    for &v in vs {
-        for &u in us {
-            domain.points.push(Vec3::new(u, v, 0.0));
-        }
-    }
-    let (n_u, n_v) = (us.len() as u32, vs.len() as u32);
-    let at = |i: u32, j: u32| j * n_u + i;
-    for j in 0..n_v.saturating_sub(1) {
-        for i in 0..n_u.saturating_sub(1) {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            domain.triangles.push([a, b, c]);
-            domain.triangles.push([a, c, d]);
-        }
-    }
-    domain
+/// The tensor grid of the parameters `us × vs` (each rising from 0 to 1)
+/// as the evaluation pass reads it (`testkit::domains::grid`): built
+/// without the primitive generator (task 2), so that the other tasks'
+/// tests never run it.
+pub fn grid_at(us: &[f64], vs: &[f64]) -> Domain {
+    Domain::from(&testkit::domains::grid(us, vs))
 }
 
-/// `0, 1/n, …, 1`.
-fn cuts(n: u32) -> Vec<f32> {
-    (0..=n).map(|i| i as f32 / n as f32).collect()
+/// The regular grid of `n × n` cells: the domain of a uniform level `n`
+/// with equal spacing, though not triangulated the way the primitive
+/// generator does it.
+pub fn grid(n: usize) -> Domain {
+    let cuts = testkit::domains::cuts(n);
+    grid_at(&cuts, &cuts)
 }
 
-/// The regular grid of `n × n` cells (see [`grid_at`]): the domain of a
-/// uniform level `n` with equal spacing, though not triangulated the way
-/// the primitive generator does it.
-pub fn grid(n: u32) -> Domain {
-    grid_at(&cuts(n), &cuts(n))
-}
-
-/// The regular triangle lattice of level `n`: barycentric points
-/// `(a/n, b/n, 1 − (a + b)/n)`, `n²` counter-clockwise triangles (in the
-/// plane of `U = (1,0,0)`, `V = (0,1,0)`, `W = (0,0,1)`), built here
-/// independently of the primitive generator.
-pub fn lattice(n: u32) -> Domain {
-    let mut domain = Domain::default();
-    let mut ids = std::collections::HashMap::new();
-    for b in 0..=n {
-        for a in 0..=n - b {
-            ids.insert((a, b), domain.points.len() as u32);
-            let (u, v) = (a as f32 / n as f32, b as f32 / n as f32);
-            domain.points.push(Vec3::new(u, v, 1.0 - u - v));
-        }
-    }
-    let id = |a: u32, b: u32| ids[&(a, b)];
-    for b in 0..n {
-        for a in 0..n - b {
-            domain
-                .triangles
-                .push([id(a, b), id(a + 1, b), id(a, b + 1)]);
-            if a + b + 2 <= n {
-                domain
-                    .triangles
-                    .push([id(a + 1, b), id(a + 1, b + 1), id(a, b + 1)]);
-            }
-        }
-    }
-    domain
+/// The regular triangle lattice of level `n` (`testkit::domains::lattice`),
+/// built without the primitive generator.
+pub fn lattice(n: usize) -> Domain {
+    Domain::from(&testkit::domains::lattice(n))
 }
 
 /// Parameters from 0 to 1, rising, at random places in between: the cuts
 /// of one side of a random [`grid_at`].
-pub fn random_cuts() -> impl Strategy<Value = Vec<f32>> {
-    prop::collection::vec(0.0f32..1.0, 0..20).prop_map(|mut inner| {
-        inner.sort_by(f32::total_cmp);
+pub fn random_cuts() -> impl Strategy<Value = Vec<f64>> {
+    prop::collection::vec(0.0f64..1.0, 0..20).prop_map(|mut inner| {
+        inner.sort_by(f64::total_cmp);
         inner.dedup();
         let mut cuts = vec![0.0];
         cuts.extend(inner.into_iter().filter(|&t| t > 0.0));
