@@ -1,7 +1,8 @@
 //! Topic 05: buffers — the z-buffer with OpenGL's depth functions, depth
 //! along a scanline, the painter's algorithm, polygon offset for
-//! hidden-line drawing, the stencil buffer, double buffering and the
-//! accumulation buffer. The task sheet is `README.md` next to this crate.
+//! hidden-line drawing, the stencil buffer, double buffering, the
+//! accumulation buffer and stereo buffering. The task sheet is `README.md`
+//! next to this crate.
 //!
 //! Each task module below is one task. You edit the files in `src/`: what
 //! you build, test and grade is always your own code. `raster` is given
@@ -28,3 +29,6 @@ pub mod stencil;
 
 /// Task 6: double buffering and jittered accumulation for scene antialiasing.
 pub mod accumulation;
+
+/// Task 7: stereo buffering — one camera per eye (parallel axes, asymmetric frusta) and the anaglyph.
+pub mod stereo;
