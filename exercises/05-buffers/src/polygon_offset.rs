@@ -110,31 +110,76 @@ pub struct HiddenLineStyle {
     pub line: Rgba,
 }
 
+/// Which pass of a hidden-line drawing is offset, and by how much: the
+/// seed's two remedies for stitching.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum HiddenLineOffset {
+    /// No offset: the outline is stitched.
+    None,
+    /// `glEnable(GL_POLYGON_OFFSET_FILL)`: each triangle's fill moves back
+    /// by its offset ("Offset für gefülltes Polygon > 0", factor and
+    /// units positive).
+    Fill(PolygonOffset),
+    /// `glEnable(GL_POLYGON_OFFSET_LINE)`: each triangle's outline moves
+    /// forward by the triangle's offset ("Offset für Linie < 0", factor
+    /// and units negative).
+    Line(PolygonOffset),
+}
+
+/// Fills `triangle` with `colour` through the depth test, its depth moved
+/// by a polygon offset (`glPolygonOffset` for one filled polygon): every
+/// fragment of [`fill_triangle`] gets depth `z + o`, clamped to `[0, 1]`
+/// as OpenGL does, where `o` is [`PolygonOffset::offset`] of the
+/// triangle's [`max_depth_slope`] (`o = 0` for `None`); it passes where
+/// that depth is less than the stored one (`LESS`), and then writes depth
+/// and colour. Vertex colours are ignored.
+///
+/// A polygon drawn onto a coplanar one (a decal on a wall) fights it
+/// without an offset: both have the same plane, but their depths are
+/// interpolated from other vertices and round differently, so the test
+/// passes at some pixels and fails at others (z-fighting). A negative
+/// offset brings it in front everywhere. A degenerate or non-finite
+/// triangle draws nothing.
+pub fn fill_offset(
+    canvas: &mut Canvas,
+    triangle: [Vertex; 3],
+    colour: Rgba,
+    offset: Option<PolygonOffset>,
+) {
+    // Unused until you write the body:
+    let _ = (&canvas, &triangle, &colour, &offset);
+    todo!(
+        "polygon_offset: o from the triangle's slope, then every fragment of fill_triangle at depth clamp(z + o) through a LESS test that writes depth and colour"
+    )
+}
+
 /// Draws `triangles` as a hidden-line picture, the seed's two passes:
 ///
-/// 1. **Fill** (`GL_FILL`): every fragment of [`fill_triangle`], with the
-///    fill colour and its depth moved back by `offset` (when given):
-///    `z + o`, clamped to `[0, 1]` as OpenGL does, where `o` is
-///    [`PolygonOffset::offset`] of the triangle's [`max_depth_slope`].
+/// 1. **Fill** (`GL_FILL`): every triangle by [`fill_offset`] with the fill
+///    colour, moved back by the offset of [`HiddenLineOffset::Fill`].
 /// 2. **Outline** (`GL_LINE`): the three edges `V0–V1`, `V1–V2`, `V2–V0`
-///    of every triangle by [`draw_line`], with the line colour, not offset.
+///    of every triangle by [`draw_line`] with the line colour; for
+///    [`HiddenLineOffset::Line`] each fragment's depth is moved by the
+///    triangle's offset `o` (of its [`max_depth_slope`]) and clamped to
+///    `[0, 1]`, like the fill's.
 ///
 /// Both passes use the depth test `LESS` (OpenGL's default) and write
 /// depth and colour where it passes; vertex colours are ignored. Without
-/// an offset the outline shows stitching; with [`PolygonOffset::SLIDES`]
-/// it is whole, and edges behind other triangles stay hidden.
+/// an offset the outline shows stitching; with the fill pushed back by
+/// [`PolygonOffset::SLIDES`], or the outline pulled forward by its
+/// negative, it is whole, and edges behind other triangles stay hidden.
 ///
-/// Degenerate triangles have no fill and are outlined only; fragments
-/// outside the canvas or with a NaN depth are dropped.
+/// Degenerate triangles have no fill and are outlined without an offset;
+/// fragments outside the canvas or with a NaN depth are dropped.
 pub fn hidden_line(
     canvas: &mut Canvas,
     triangles: &[[Vertex; 3]],
     style: HiddenLineStyle,
-    offset: Option<PolygonOffset>,
+    offset: HiddenLineOffset,
 ) {
     // Unused until you write the body:
     let _ = (&canvas, &triangles, &style, &offset);
     todo!(
-        "polygon_offset: fill every triangle with its depth offset, then outline every triangle, both with a LESS depth test"
+        "polygon_offset: fill every triangle (offset if the fill is), then outline every triangle (offset if the line is), both with a LESS depth test"
     )
 }

@@ -3,7 +3,8 @@
 mod common;
 
 use buffers::polygon_offset::{
-    DEPTH_RESOLUTION, HiddenLineStyle, OffsetError, PolygonOffset, hidden_line, max_depth_slope,
+    DEPTH_RESOLUTION, HiddenLineOffset, HiddenLineStyle, OffsetError, PolygonOffset, fill_offset,
+    hidden_line, max_depth_slope,
 };
 use buffers::raster::{draw_line, fill_triangle};
 use canvas::{Canvas, Pixel, Rgba, Vertex};
@@ -40,7 +41,7 @@ fn outline_pixels(canvas: &Canvas, triangle: [Vertex; 3]) -> Vec<Pixel> {
     pixels
 }
 
-fn drawing(offset: Option<PolygonOffset>) -> Canvas {
+fn drawing(offset: HiddenLineOffset) -> Canvas {
     let mut canvas = Canvas::new(20, 12);
     hidden_line(&mut canvas, &[tilted()], STYLE, offset);
     canvas
@@ -138,7 +139,7 @@ proptest! {
 /// is missing. On the other two edges the inside is deeper and the line wins.
 #[testkit::test]
 fn without_offset_the_outline_is_stitched() {
-    let canvas = drawing(None);
+    let canvas = drawing(HiddenLineOffset::None);
     let outline = outline_pixels(&canvas, tilted());
     let hidden: Vec<Pixel> = outline
         .iter()
@@ -151,7 +152,7 @@ fn without_offset_the_outline_is_stitched() {
 
 #[testkit::test]
 fn with_the_slides_offset_the_outline_is_whole() {
-    let canvas = drawing(Some(PolygonOffset::SLIDES));
+    let canvas = drawing(HiddenLineOffset::Fill(PolygonOffset::SLIDES));
     let outline = outline_pixels(&canvas, tilted());
     testkit::assert_pixels_eq(
         &outline,
@@ -168,7 +169,7 @@ fn offset_moves_the_fill_back_by_o() {
         &mut canvas,
         &[tilted()],
         STYLE,
-        Some(PolygonOffset {
+        HiddenLineOffset::Fill(PolygonOffset {
             factor: 1.0,
             units: 0.0,
         }),
@@ -200,7 +201,12 @@ fn fill_depth_pulled_past_zero_is_clamped() {
         units: -33_554_432.0,
     };
     let mut canvas = Canvas::new(20, 12);
-    hidden_line(&mut canvas, &[tilted()], STYLE, Some(pull));
+    hidden_line(
+        &mut canvas,
+        &[tilted()],
+        STYLE,
+        HiddenLineOffset::Fill(pull),
+    );
     let mut checked = 0;
     fill_triangle(tilted(), canvas.viewport(), |f| {
         assert_eq!(canvas.depth(f.pixel), Some(0.0), "{}", f.pixel);
@@ -223,7 +229,7 @@ fn edges_behind_another_triangle_stay_hidden() {
         &mut canvas,
         &[tilted(), front],
         STYLE,
-        Some(PolygonOffset::SLIDES),
+        HiddenLineOffset::Fill(PolygonOffset::SLIDES),
     );
     let front_outline = outline_pixels(&canvas, front);
     let mut inside_front = 0;
@@ -270,9 +276,268 @@ fn degenerate_triangles_are_outlined_only_and_hostile_ones_ignored() {
         &mut canvas,
         &[line, hostile],
         STYLE,
-        Some(PolygonOffset::SLIDES),
+        HiddenLineOffset::Fill(PolygonOffset::SLIDES),
     );
     let drawn = canvas.pixels_not(Rgba::BLACK);
     let expected: Vec<Pixel> = (1..=6).map(|k| Pixel::new(k, k)).collect();
     testkit::assert_pixels_eq(&expected, &drawn, "a degenerate triangle's outline");
+}
+
+/// The slides' advice, "bei größerer Linienstärke sollte factor erhöht
+/// werden", rests on this: how far fill and line differ on one pixel
+/// grows with the slope `m`, so `units` alone (a fixed `r · units`) is
+/// too little for a steep triangle, while `factor = 1` is always enough.
+#[testkit::test]
+fn units_alone_leave_a_steep_outline_stitched_while_factor_cures_it() {
+    let outline = outline_pixels(&Canvas::new(20, 12), tilted());
+    let units_only = drawing(HiddenLineOffset::Fill(PolygonOffset {
+        factor: 0.0,
+        units: 1000.0,
+    }));
+    assert!(
+        outline
+            .iter()
+            .any(|&p| units_only.get(p) != Some(Rgba::WHITE)),
+        "with factor 0 and units 1000 (o = 1000 · 2⁻²⁴ ≈ 0.00006, far below the slope 0.06 \
+         per pixel) the outline of the steep triangle must still be stitched"
+    );
+    let factor_only = drawing(HiddenLineOffset::Fill(PolygonOffset {
+        factor: 1.0,
+        units: 0.0,
+    }));
+    testkit::assert_pixels_eq(
+        &outline,
+        &factor_only.pixels_not(Rgba::BLACK),
+        "outline with factor 1, units 0",
+    );
+}
+
+/// The seed's second remedy: "Offset für Linie < 0 → Linie erscheint
+/// weiter vorne". The fill stays where it is, each outline moves forward
+/// by its triangle's offset (negative), and the outline is whole.
+#[testkit::test]
+fn a_negative_line_offset_also_makes_the_outline_whole() {
+    let pull = PolygonOffset {
+        factor: -1.0,
+        units: -1.0,
+    };
+    let canvas = drawing(HiddenLineOffset::Line(pull));
+    let outline = outline_pixels(&canvas, tilted());
+    testkit::assert_pixels_eq(
+        &outline,
+        &canvas.pixels_not(Rgba::BLACK),
+        "outline pulled forward",
+    );
+    let o = pull.offset(max_depth_slope(tilted()).unwrap());
+    let mut line_depth = std::collections::HashMap::new();
+    for k in 0..3 {
+        draw_line(tilted()[k], tilted()[(k + 1) % 3], canvas.viewport(), |f| {
+            line_depth.entry(f.pixel).or_insert(f.depth);
+        });
+    }
+    // An outline pixel drawn once stores its line depth moved by o.
+    let mut checked = 0;
+    for (pixel, depth) in line_depth {
+        let stored = canvas.depth(pixel).unwrap();
+        if (stored - (depth + o)).abs() < 1e-6 {
+            checked += 1;
+        }
+    }
+    assert!(
+        checked >= outline.len() / 2,
+        "the outline's stored depths must be the line depths moved by o = {o} \
+         (only {checked} of {} are)",
+        outline.len()
+    );
+    // The fill is not offset: inside the triangle the stored depth is the plane's.
+    let mut inside = 0;
+    fill_triangle(tilted(), canvas.viewport(), |f| {
+        if !outline.contains(&f.pixel) {
+            assert_eq!(
+                canvas.depth(f.pixel),
+                Some(f.depth),
+                "{}: the fill must not be offset",
+                f.pixel
+            );
+            inside += 1;
+        }
+    });
+    assert!(inside > 20);
+}
+
+#[testkit::test]
+fn line_depth_pulled_past_zero_is_clamped() {
+    let pull = PolygonOffset {
+        factor: 0.0,
+        units: -33_554_432.0,
+    };
+    let canvas = drawing(HiddenLineOffset::Line(pull));
+    let outline = outline_pixels(&canvas, tilted());
+    for &p in &outline {
+        assert_eq!(
+            canvas.depth(p),
+            Some(0.0),
+            "{p}: an outline pulled past the viewer (o = −2) is clamped to depth 0"
+        );
+    }
+}
+
+#[testkit::test]
+fn a_pulled_outline_still_hides_behind_a_nearer_triangle() {
+    let front = [
+        grey(0.0, 4.0, 0.1),
+        grey(12.0, 4.0, 0.1),
+        grey(6.0, 12.0, 0.1),
+    ];
+    let mut canvas = Canvas::new(20, 12);
+    let pull = PolygonOffset {
+        factor: -1.0,
+        units: -1.0,
+    };
+    hidden_line(
+        &mut canvas,
+        &[tilted(), front],
+        STYLE,
+        HiddenLineOffset::Line(pull),
+    );
+    let front_outline = outline_pixels(&canvas, front);
+    let mut front_cover = Vec::new();
+    fill_triangle(front, canvas.viewport(), |f| {
+        front_cover.push(f.pixel);
+        if !front_outline.contains(&f.pixel) {
+            assert_eq!(
+                canvas.get(f.pixel),
+                Some(Rgba::BLACK),
+                "{} shows an edge of the triangle behind",
+                f.pixel
+            );
+        }
+    });
+    for p in outline_pixels(&canvas, tilted()) {
+        if !front_cover.contains(&p) {
+            assert_eq!(
+                canvas.get(p),
+                Some(Rgba::WHITE),
+                "{p} of the back outline is missing"
+            );
+        }
+    }
+}
+
+/// The plane `z = 0.3 + 0.004·x + 0.006·y` over a 64 × 48 canvas.
+fn on_plane(x: f32, y: f32, colour: Rgba) -> Vertex {
+    vertex(x, y, 0.3 + 0.004 * x + 0.006 * y, colour)
+}
+
+/// A grey floor of two triangles, and a red decal of two triangles on the
+/// same plane, split along the other diagonal: the same depths, each
+/// interpolated from other vertices.
+fn floor_and_decal() -> ([[Vertex; 3]; 2], [[Vertex; 3]; 2]) {
+    let g = Rgba::grey(0.6);
+    let r = Rgba::rgb(0.9, 0.2, 0.2);
+    let floor = [
+        [
+            on_plane(1.0, 1.0, g),
+            on_plane(62.0, 1.0, g),
+            on_plane(62.0, 46.0, g),
+        ],
+        [
+            on_plane(1.0, 1.0, g),
+            on_plane(62.0, 46.0, g),
+            on_plane(1.0, 46.0, g),
+        ],
+    ];
+    let decal = [
+        [
+            on_plane(16.0, 10.0, r),
+            on_plane(50.0, 14.0, r),
+            on_plane(12.0, 34.0, r),
+        ],
+        [
+            on_plane(50.0, 14.0, r),
+            on_plane(46.0, 38.0, r),
+            on_plane(12.0, 34.0, r),
+        ],
+    ];
+    (floor, decal)
+}
+
+const DECAL: Rgba = Rgba::rgb(0.9, 0.2, 0.2);
+
+/// The floor, then the decal with `offset`, by `fill_offset`; and the
+/// pixels the decal covers.
+fn decal_picture(offset: Option<PolygonOffset>) -> (Canvas, Vec<Pixel>) {
+    let (floor, decal) = floor_and_decal();
+    let mut canvas = Canvas::new(64, 48);
+    for triangle in floor {
+        fill_offset(&mut canvas, triangle, Rgba::grey(0.6), None);
+    }
+    for triangle in decal {
+        fill_offset(&mut canvas, triangle, DECAL, offset);
+    }
+    let mut covered = Vec::new();
+    for triangle in decal {
+        fill_triangle(triangle, canvas.viewport(), |f| covered.push(f.pixel));
+    }
+    (canvas, covered)
+}
+
+/// z-fighting: without an offset the decal shows only where its depth
+/// happens to round below the floor's.
+#[testkit::test]
+fn a_coplanar_decal_fights_the_floor_without_an_offset() {
+    let (canvas, covered) = decal_picture(None);
+    let shown = covered
+        .iter()
+        .filter(|&&p| canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)))
+        .count();
+    assert!(
+        shown > 0 && shown < covered.len(),
+        "without an offset the decal must show at some of its pixels and not at others \
+         (z-fighting); it shows at {shown} of {}",
+        covered.len()
+    );
+    testkit::image::assert_image_matches(
+        "zfighting_decal_without_offset",
+        &canvas,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/zfighting_decal_without_offset.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
+}
+
+/// A negative offset brings the decal in front at every pixel; a positive
+/// one hides it everywhere.
+#[testkit::test]
+fn a_negative_offset_brings_the_whole_decal_in_front() {
+    let pull = PolygonOffset {
+        factor: -1.0,
+        units: -1.0,
+    };
+    let (canvas, covered) = decal_picture(Some(pull));
+    for &p in &covered {
+        assert!(
+            canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)),
+            "{p}: the decal pulled forward by factor −1, units −1 must show"
+        );
+    }
+    testkit::image::assert_image_matches(
+        "zfighting_decal_with_offset",
+        &canvas,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/zfighting_decal_with_offset.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
+    let (pushed, covered) = decal_picture(Some(PolygonOffset::SLIDES));
+    for &p in &covered {
+        assert_eq!(
+            pushed.get(p).map(Rgba::to_rgba8),
+            Some(Rgba::grey(0.6).to_rgba8()),
+            "{p}: the decal pushed back by the slides' offset must hide behind the floor"
+        );
+    }
 }

@@ -127,52 +127,113 @@ pub struct HiddenLineStyle {
     pub line: Rgba,
 }
 
+/// Which pass of a hidden-line drawing is offset, and by how much: the
+/// seed's two remedies for stitching.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum HiddenLineOffset {
+    /// No offset: the outline is stitched.
+    None,
+    /// `glEnable(GL_POLYGON_OFFSET_FILL)`: each triangle's fill moves back
+    /// by its offset ("Offset für gefülltes Polygon > 0", factor and
+    /// units positive).
+    Fill(PolygonOffset),
+    /// `glEnable(GL_POLYGON_OFFSET_LINE)`: each triangle's outline moves
+    /// forward by the triangle's offset ("Offset für Linie < 0", factor
+    /// and units negative).
+    Line(PolygonOffset),
+}
+
+/// Fills `triangle` with `colour` through the depth test, its depth moved
+/// by a polygon offset (`glPolygonOffset` for one filled polygon): every
+/// fragment of [`fill_triangle`] gets depth `z + o`, clamped to `[0, 1]`
+/// as OpenGL does, where `o` is [`PolygonOffset::offset`] of the
+/// triangle's [`max_depth_slope`] (`o = 0` for `None`); it passes where
+/// that depth is less than the stored one (`LESS`), and then writes depth
+/// and colour. Vertex colours are ignored.
+///
+/// A polygon drawn onto a coplanar one (a decal on a wall) fights it
+/// without an offset: both have the same plane, but their depths are
+/// interpolated from other vertices and round differently, so the test
+/// passes at some pixels and fails at others (z-fighting). A negative
+/// offset brings it in front everywhere. A degenerate or non-finite
+/// triangle draws nothing.
+pub fn fill_offset(
+    canvas: &mut Canvas,
+    triangle: [Vertex; 3],
+    colour: Rgba,
+    offset: Option<PolygonOffset>,
+) {
+    // BEGIN SOLUTION polygon_offset: o from the triangle's slope, then every fragment of fill_triangle at depth clamp(z + o) through a LESS test that writes depth and colour
+    let o = triangle_offset(triangle, offset);
+    let viewport = canvas.viewport();
+    fill_triangle(triangle, viewport, |mut f| {
+        f.depth = (f.depth + o).clamp(0.0, 1.0);
+        test_and_write(canvas, f, colour);
+    });
+    // END SOLUTION
+}
+
 /// Draws `triangles` as a hidden-line picture, the seed's two passes:
 ///
-/// 1. **Fill** (`GL_FILL`): every fragment of [`fill_triangle`], with the
-///    fill colour and its depth moved back by `offset` (when given):
-///    `z + o`, clamped to `[0, 1]` as OpenGL does, where `o` is
-///    [`PolygonOffset::offset`] of the triangle's [`max_depth_slope`].
+/// 1. **Fill** (`GL_FILL`): every triangle by [`fill_offset`] with the fill
+///    colour, moved back by the offset of [`HiddenLineOffset::Fill`].
 /// 2. **Outline** (`GL_LINE`): the three edges `V0–V1`, `V1–V2`, `V2–V0`
-///    of every triangle by [`draw_line`], with the line colour, not offset.
+///    of every triangle by [`draw_line`] with the line colour; for
+///    [`HiddenLineOffset::Line`] each fragment's depth is moved by the
+///    triangle's offset `o` (of its [`max_depth_slope`]) and clamped to
+///    `[0, 1]`, like the fill's.
 ///
 /// Both passes use the depth test `LESS` (OpenGL's default) and write
 /// depth and colour where it passes; vertex colours are ignored. Without
-/// an offset the outline shows stitching; with [`PolygonOffset::SLIDES`]
-/// it is whole, and edges behind other triangles stay hidden.
+/// an offset the outline shows stitching; with the fill pushed back by
+/// [`PolygonOffset::SLIDES`], or the outline pulled forward by its
+/// negative, it is whole, and edges behind other triangles stay hidden.
 ///
-/// Degenerate triangles have no fill and are outlined only; fragments
-/// outside the canvas or with a NaN depth are dropped.
+/// Degenerate triangles have no fill and are outlined without an offset;
+/// fragments outside the canvas or with a NaN depth are dropped.
 pub fn hidden_line(
     canvas: &mut Canvas,
     triangles: &[[Vertex; 3]],
     style: HiddenLineStyle,
-    offset: Option<PolygonOffset>,
+    offset: HiddenLineOffset,
 ) {
-    // BEGIN SOLUTION polygon_offset: fill every triangle with its depth offset, then outline every triangle, both with a LESS depth test
-    let viewport = canvas.viewport();
-    let test_and_write = |canvas: &mut Canvas, f: Fragment, colour: Rgba| {
-        if canvas.depth(f.pixel).is_some_and(|stored| f.depth < stored) {
-            canvas.set_depth(f.pixel, f.depth);
-            canvas.set(f.pixel, colour);
-        }
+    // BEGIN SOLUTION polygon_offset: fill every triangle (offset if the fill is), then outline every triangle (offset if the line is), both with a LESS depth test
+    let (fill, line) = match offset {
+        HiddenLineOffset::None => (None, None),
+        HiddenLineOffset::Fill(o) => (Some(o), None),
+        HiddenLineOffset::Line(o) => (None, Some(o)),
     };
     for &triangle in triangles {
-        let o = match (offset, max_depth_slope(triangle)) {
-            (Some(po), Ok(m)) => po.offset(m),
-            _ => 0.0,
-        };
-        fill_triangle(triangle, viewport, |mut f| {
-            f.depth = (f.depth + o).clamp(0.0, 1.0);
-            test_and_write(canvas, f, style.fill);
-        });
+        fill_offset(canvas, triangle, style.fill, fill);
     }
-    for triangle in triangles {
+    let viewport = canvas.viewport();
+    for &triangle in triangles {
+        let o = triangle_offset(triangle, line);
         for k in 0..3 {
-            draw_line(triangle[k], triangle[(k + 1) % 3], viewport, |f| {
+            draw_line(triangle[k], triangle[(k + 1) % 3], viewport, |mut f| {
+                f.depth = (f.depth + o).clamp(0.0, 1.0);
                 test_and_write(canvas, f, style.line);
             });
         }
     }
     // END SOLUTION
 }
+
+// BEGIN SOLUTION
+/// The offset of `triangle`: `o` of its slope, 0 without an offset or for
+/// a triangle without a slope.
+fn triangle_offset(triangle: [Vertex; 3], offset: Option<PolygonOffset>) -> f32 {
+    match (offset, max_depth_slope(triangle)) {
+        (Some(offset), Ok(m)) => offset.offset(m),
+        _ => 0.0,
+    }
+}
+
+/// The `LESS` depth test with depth and colour writes.
+fn test_and_write(canvas: &mut Canvas, f: Fragment, colour: Rgba) {
+    if canvas.depth(f.pixel).is_some_and(|stored| f.depth < stored) {
+        canvas.set_depth(f.pixel, f.depth);
+        canvas.set(f.pixel, colour);
+    }
+}
+// END SOLUTION
