@@ -438,6 +438,24 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
 /// artifacts for this one's, see the module's documentation), every file
 /// of this stage is touched, so that cargo rebuilds whatever they make.
 pub fn claim_build(stage_root: &Path, target_dir: &Path) -> Result<()> {
+    claim_files(stage_root, &[], target_dir)
+}
+
+/// The folders of a checkout that the test executables are built from.
+const TESTED_FOLDERS: [&str; 2] = ["crates", "exercises"];
+
+/// [`claim_build`] for a checkout graded in place (`cargo xtask grade`),
+/// whose build folder may have built another copy of the course last (a
+/// `CARGO_TARGET_DIR` shared between checkouts): then cargo would run that
+/// copy's tests. Only the files the tests are built from are touched
+/// (`crates/` and `exercises/`), so the tooling is not rebuilt.
+pub fn claim_checkout_build(root: &Path, target_dir: &Path) -> Result<()> {
+    claim_files(root, &TESTED_FOLDERS, target_dir)
+}
+
+/// [`claim_build`] touching only the files under `folders` of
+/// `stage_root` (all of them for none).
+fn claim_files(stage_root: &Path, folders: &[&str], target_dir: &Path) -> Result<()> {
     let record = target_dir.join(BUILT_FROM);
     let ours = stage_root.to_string_lossy().into_owned();
     if fs::read_to_string(&record).is_ok_and(|last| last == ours) {
@@ -445,7 +463,10 @@ pub fn claim_build(stage_root: &Path, target_dir: &Path) -> Result<()> {
     }
     if record.exists() || target_dir.join("debug").exists() {
         let now = std::time::SystemTime::now();
-        for file in files_under(stage_root)? {
+        let touched = files_under(stage_root)?.into_iter().filter(|file| {
+            folders.is_empty() || folders.iter().any(|folder| file.starts_with(folder))
+        });
+        for file in touched {
             let path = stage_root.join(file);
             File::options()
                 .write(true)
@@ -499,6 +520,50 @@ mod tests {
     fn write(path: &Path, text: &str) {
         fs::create_dir_all(path.parent().unwrap()).unwrap();
         fs::write(path, text).unwrap();
+    }
+
+    #[test]
+    fn a_checkout_built_after_another_copy_has_its_tested_files_touched() {
+        let dir = scratch("claim-checkout");
+        let (a, b, target) = (dir.join("a"), dir.join("b"), dir.join("shared-target"));
+        let files = [
+            "crates/c/src/lib.rs",
+            "exercises/e/src/lib.rs",
+            "xtask/src/main.rs",
+        ];
+        let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
+        for checkout in [&a, &b] {
+            for file in files {
+                write(&checkout.join(file), "pub fn f() {}\n");
+                File::options()
+                    .write(true)
+                    .open(checkout.join(file))
+                    .unwrap()
+                    .set_modified(old)
+                    .unwrap();
+            }
+        }
+        let touched = |checkout: &Path| -> Vec<bool> {
+            files
+                .iter()
+                .map(|file| {
+                    fs::metadata(checkout.join(file))
+                        .unwrap()
+                        .modified()
+                        .unwrap()
+                        > old
+                })
+                .collect()
+        };
+        // A fresh build folder: nothing was built there, nothing to touch.
+        claim_checkout_build(&a, &target).unwrap();
+        assert_eq!(touched(&a), [false, false, false]);
+        fs::create_dir_all(target.join("debug")).unwrap();
+        // Another copy graded with the same build folder: its crates and
+        // exercises are touched, its tooling is not.
+        claim_checkout_build(&b, &target).unwrap();
+        assert_eq!(touched(&b), [true, true, false]);
+        fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -171,9 +171,14 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
     if options.reference {
         grade_staged(options, Overlay::Reference)
     } else {
-        let mut report = grade_tree(options, Edition::Student)?;
-        report.root = std::path::absolute(&options.root)
+        let root = std::path::absolute(&options.root)
             .with_context(|| format!("cannot find {}", options.root.display()))?;
+        // A build folder shared with another copy of the course must not
+        // run that copy's tests.
+        let target_dir = build::target_dir_of(&root, options.target_dir.as_deref());
+        stage::claim_checkout_build(&root, &target_dir)?;
+        let mut report = grade_tree(options, Edition::Student)?;
+        report.root = root;
         export::write_all(&report, &options.out)?;
         Ok(report)
     }
