@@ -41,3 +41,6 @@ pub mod goldfeather;
 
 /// Task 5: layered Goldfeather, depth complexity and layer extraction.
 pub mod layered;
+
+/// Task 6: affine transformations at the nodes of a CSG tree.
+pub mod transforms;

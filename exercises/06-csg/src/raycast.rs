@@ -19,7 +19,7 @@
 //! not edit it.
 
 use crate::csg::{Csg, Scene};
-use crate::primitive::{Primitive, Ray};
+use crate::primitive::{Primitive, Ray, RayInterval};
 use crate::raster::{Face, Framebuffer, Surface};
 
 /// One end of an interval: a depth and the face it lies on.
@@ -51,8 +51,14 @@ impl IntervalSet {
     /// Where `ray` runs through primitive `index`.
     #[must_use]
     pub fn of_primitive(index: usize, primitive: &Primitive, ray: &Ray) -> Self {
-        let intervals = primitive
-            .interval(ray)
+        Self::of_span(index, primitive.interval(ray))
+    }
+
+    /// The one interval `span` (if any) of primitive `index`, entered at
+    /// its front face and left at its back face.
+    #[must_use]
+    pub fn of_span(index: usize, span: Option<RayInterval>) -> Self {
+        let intervals = span
             .map(|span| Interval {
                 enter: Boundary {
                     t: span.near,
@@ -123,19 +129,21 @@ impl IntervalSet {
 /// Evaluates `tree` along `ray`.
 #[must_use]
 pub fn intervals(tree: &Csg, primitives: &[Primitive], ray: &Ray) -> IntervalSet {
+    intervals_by(tree, &|i| primitives.get(i).and_then(|p| p.interval(ray)))
+}
+
+/// Evaluates `tree` along a ray through whose leaf `i` it runs in
+/// `span(i)` (`None`: it misses that leaf).
+#[must_use]
+pub fn intervals_by(tree: &Csg, span: &impl Fn(usize) -> Option<RayInterval>) -> IntervalSet {
     match tree {
-        Csg::Primitive(i) => primitives
-            .get(*i)
-            .map(|p| IntervalSet::of_primitive(*i, p, ray))
-            .unwrap_or_default(),
-        Csg::Union(x, y) => {
-            intervals(x, primitives, ray).combine(&intervals(y, primitives, ray), |a, b| a || b)
-        }
+        Csg::Primitive(i) => IntervalSet::of_span(*i, span(*i)),
+        Csg::Union(x, y) => intervals_by(x, span).combine(&intervals_by(y, span), |a, b| a || b),
         Csg::Intersection(x, y) => {
-            intervals(x, primitives, ray).combine(&intervals(y, primitives, ray), |a, b| a && b)
+            intervals_by(x, span).combine(&intervals_by(y, span), |a, b| a && b)
         }
         Csg::Difference(x, y) => {
-            intervals(x, primitives, ray).combine(&intervals(y, primitives, ray), |a, b| a && !b)
+            intervals_by(x, span).combine(&intervals_by(y, span), |a, b| a && !b)
         }
     }
 }

@@ -1,0 +1,213 @@
+//! Affine transformations at the nodes of a CSG tree (seed 003, §2.1 "Der
+//! CSG-Baum": "jeder Knoten stellt eine CSG-Operation dar, die
+//! gegebenenfalls um eine affine Transformation ergänzt werden kann").
+//!
+//! A [`Node::Transform`] moves the solid below it: `M(X)` is the set of
+//! points `M·p` for `p ∈ X`. Nothing else changes, so the other tasks keep
+//! working on plain trees: [`flatten`] pushes the transforms down to the
+//! leaves, each leaf becoming an [`Instance`] (a primitive and the product
+//! of the transforms above it), and a plain [`Csg`] over the instances
+//! remains. Two questions are then answered in the primitive's own space:
+//!
+//! ```text
+//!   point:  P ∈ M(X)  ⟺  M⁻¹·P ∈ X
+//!   ray:    o + t·d meets M(X) at t  ⟺  M⁻¹o + t·(M⁻¹d) meets X at t
+//! ```
+//!
+//! An affine map keeps the ray's parameter, so depths need no
+//! transforming back, but `M⁻¹d` is not a unit vector where `M` scales,
+//! while [`Primitive::interval`] takes a unit direction: along
+//! `d' = M⁻¹d / |M⁻¹d|` the depth `t'` is `t · |M⁻¹d|`.
+//!
+//! Convention: glam's `Affine3A` maps column vectors, `(A · B)·p =
+//! A·(B·p)`: in `Transform(A, Transform(B, X))` the inner `B` moves `X`
+//! first, then `A` moves the result.
+
+use glam::{Affine3A, Vec3};
+
+use crate::csg::Csg;
+use crate::primitive::{Primitive, Ray, RayInterval};
+
+/// A CSG tree whose nodes may carry an affine transformation.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Node {
+    /// Primitive number `i` of the scene.
+    Leaf(usize),
+    /// `X ∪ Y`.
+    Union(Box<Node>, Box<Node>),
+    /// `X ∩ Y`.
+    Intersection(Box<Node>, Box<Node>),
+    /// `X − Y`.
+    Difference(Box<Node>, Box<Node>),
+    /// `M(X)`: the solid `X` moved by the affine map `M` (into the space
+    /// of the node above).
+    Transform(Affine3A, Box<Node>),
+}
+
+impl Node {
+    /// Primitive number `index`.
+    #[must_use]
+    pub fn leaf(index: usize) -> Self {
+        Self::Leaf(index)
+    }
+
+    /// `x ∪ y`.
+    #[must_use]
+    pub fn union(x: Self, y: Self) -> Self {
+        Self::Union(Box::new(x), Box::new(y))
+    }
+
+    /// `x ∩ y`.
+    #[must_use]
+    pub fn intersection(x: Self, y: Self) -> Self {
+        Self::Intersection(Box::new(x), Box::new(y))
+    }
+
+    /// `x − y`.
+    #[must_use]
+    pub fn difference(x: Self, y: Self) -> Self {
+        Self::Difference(Box::new(x), Box::new(y))
+    }
+
+    /// `m(x)`.
+    #[must_use]
+    pub fn transform(m: Affine3A, x: Self) -> Self {
+        Self::Transform(m, Box::new(x))
+    }
+
+    /// Whether every leaf names one of `primitives` primitives and every
+    /// transform is finite and invertible (`|det| > 1e-6` of its linear
+    /// part): what [`flatten`], [`instance_interval`] and [`contains`]
+    /// assume.
+    pub fn check(&self, primitives: usize) -> Result<(), TransformError> {
+        match self {
+            Self::Leaf(i) if *i < primitives => Ok(()),
+            Self::Leaf(i) => Err(TransformError::UnknownPrimitive(*i)),
+            Self::Union(x, y) | Self::Intersection(x, y) | Self::Difference(x, y) => {
+                x.check(primitives)?;
+                y.check(primitives)
+            }
+            Self::Transform(m, x) => {
+                if !m.is_finite() {
+                    return Err(TransformError::NotFinite);
+                }
+                if m.matrix3.determinant().abs() <= 1e-6 {
+                    return Err(TransformError::Singular);
+                }
+                x.check(primitives)
+            }
+        }
+    }
+}
+
+/// Why a tree with transforms cannot be used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum TransformError {
+    /// A leaf names a primitive the scene does not have.
+    #[error("the tree names primitive {0}, which the scene does not have")]
+    UnknownPrimitive(usize),
+    /// A transform has a NaN or infinite entry.
+    #[error("a transform has a NaN or infinite entry")]
+    NotFinite,
+    /// A transform flattens space (its determinant is about 0): it has no
+    /// inverse.
+    #[error("a transform is singular: it has no inverse")]
+    Singular,
+}
+
+/// A primitive placed by the transforms above its leaf.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Instance {
+    /// The primitive's index in the scene.
+    pub primitive: usize,
+    /// Its space to the root's: the product of the transforms on the path
+    /// from the root to the leaf, the root's leftmost.
+    pub to_world: Affine3A,
+}
+
+/// Pushes the transforms down to the leaves: every leaf becomes an
+/// [`Instance`] with the product of the transforms on its path (outermost
+/// leftmost: `Transform(A, Transform(B, leaf))` gives `A · B`, the
+/// identity for a leaf without any), numbered left to right as the leaves
+/// appear in the tree; the returned tree is `node` without its transforms,
+/// its leaves naming the instances. A primitive under two transforms
+/// becomes two instances.
+#[must_use]
+pub fn flatten(node: &Node) -> (Vec<Instance>, Csg) {
+    // BEGIN SOLUTION transforms: walk the tree carrying the product of the transforms so far (parent · node), each leaf becoming the next instance
+    fn walk(node: &Node, to_world: Affine3A, instances: &mut Vec<Instance>) -> Csg {
+        match node {
+            Node::Leaf(primitive) => {
+                instances.push(Instance {
+                    primitive: *primitive,
+                    to_world,
+                });
+                Csg::leaf(instances.len() - 1)
+            }
+            Node::Union(x, y) => {
+                let x = walk(x, to_world, instances);
+                Csg::union(x, walk(y, to_world, instances))
+            }
+            Node::Intersection(x, y) => {
+                let x = walk(x, to_world, instances);
+                Csg::intersection(x, walk(y, to_world, instances))
+            }
+            Node::Difference(x, y) => {
+                let x = walk(x, to_world, instances);
+                Csg::difference(x, walk(y, to_world, instances))
+            }
+            Node::Transform(m, x) => walk(x, to_world * *m, instances),
+        }
+    }
+    let mut instances = Vec::new();
+    let tree = walk(node, Affine3A::IDENTITY, &mut instances);
+    (instances, tree)
+    // END SOLUTION
+}
+
+/// Where `ray` runs through `primitive` moved by `to_world`, in the ray's
+/// own depths: the ray taken into the primitive's space by the inverse
+/// (`o' = M⁻¹·o` as a point, `M⁻¹·d` as a direction), made a unit
+/// direction `d'` for [`Primitive::interval`], and that interval's depths
+/// `t'` divided by `|M⁻¹·d|`. `None` where the ray misses (or `to_world`
+/// has no inverse).
+#[must_use]
+pub fn instance_interval(
+    primitive: &Primitive,
+    to_world: Affine3A,
+    ray: &Ray,
+) -> Option<RayInterval> {
+    // BEGIN SOLUTION transforms: the ray into the primitive's space by the inverse, its direction made unit, the interval's depths divided by that length
+    let to_local = to_world.inverse();
+    let direction = to_local.transform_vector3(ray.direction);
+    let scale = direction.length();
+    if !(scale.is_finite() && scale > 0.0) {
+        return None;
+    }
+    let local = Ray {
+        origin: to_local.transform_point3(ray.origin),
+        direction: direction / scale,
+    };
+    let span = primitive.interval(&local)?;
+    Some(RayInterval {
+        near: span.near / scale,
+        far: span.far / scale,
+    })
+    // END SOLUTION
+}
+
+/// Whether `p` belongs to the solid of `node`, by the seed's three rules
+/// (as `classify::contains`) and `P ∈ M(X) ⟺ M⁻¹·P ∈ X` at a transform;
+/// `inside(i, q)` says whether `q` belongs to primitive `i` in its own
+/// space.
+pub fn contains(node: &Node, p: Vec3, inside: &impl Fn(usize, Vec3) -> bool) -> bool {
+    // BEGIN SOLUTION transforms: recurse with the three rules; at a transform, ask the child about M⁻¹·p
+    match node {
+        Node::Leaf(i) => inside(*i, p),
+        Node::Union(x, y) => contains(x, p, inside) || contains(y, p, inside),
+        Node::Intersection(x, y) => contains(x, p, inside) && contains(y, p, inside),
+        Node::Difference(x, y) => contains(x, p, inside) && !contains(y, p, inside),
+        Node::Transform(m, x) => contains(x, m.inverse().transform_point3(p), inside),
+    }
+    // END SOLUTION
+}
