@@ -7,6 +7,7 @@ mod bench;
 mod cargo;
 mod class;
 mod classroom;
+mod figures;
 mod grade;
 mod gradescope;
 mod hint;
@@ -58,6 +59,15 @@ enum Command {
         /// Run only these steps (numbers as the summary shows them, e.g. `--step 7`).
         #[arg(long = "step", value_name = "N")]
         steps: Vec<usize>,
+    },
+    /// Draw the seeds' figures the course reproduces into target/figures/ with an index:
+    /// by the reference solutions, or by your code with --mine.
+    Figures {
+        /// Draw them with your own code (the student edition has no solutions).
+        #[arg(long)]
+        mine: bool,
+        /// Only the figures of these topics (names as for `grade`); default all.
+        topics: Vec<String>,
     },
     /// Write the solution workspace (the course with reference/ laid over the stubs) to DIR,
     /// to open in an editor.
@@ -217,6 +227,7 @@ fn main() -> ExitCode {
         Command::Class { dir, size, topics } => class::run(&root, &dir, size, &topics),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
+        Command::Figures { mine, topics } => figures::run(&root, mine, &topics),
         Command::Review {
             submission,
             out,
