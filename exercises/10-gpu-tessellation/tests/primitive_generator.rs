@@ -257,6 +257,71 @@ fn fractional_odd_inner_level_one_puts_inner_corners_on_the_edges() {
     );
 }
 
+/// Triangles of a triangle domain with every level `n` and equal
+/// spacing, from the structure of §11.2.2.1: `⌊n/2⌋` rings, the ring whose
+/// outer side has `m` segments holding `3·(m + m − 2)` triangles, and for
+/// odd `n` one triangle in the middle. That is `6k²` for `n = 2k` and
+/// `6k(k + 1) + 1` for `n = 2k + 1`.
+fn triangles_at_level(n: u32) -> usize {
+    let k = (n / 2) as usize;
+    if n % 2 == 0 {
+        6 * k * k
+    } else {
+        6 * k * (k + 1) + 1
+    }
+}
+
+/// Seed 001 §4.2 tessellates a cube (12 triangles) and a monkey head (968)
+/// with every level equal and reports the totals: 444, 1800 and 46812
+/// triangles for the cube at levels 5, 9 and 50; 968 and 35816 for the
+/// monkey at levels 1 and 5. Levels 1 and 5 follow from equal spacing
+/// (1 and 37 triangles per triangle); 1800 = 12 · 150 and 46812 = 12 · 3901
+/// do not (equal spacing gives 1452 and 45000): they are the counts of
+/// fractional-even spacing at 9 (rounded up to 10) and fractional-odd at
+/// 50 (rounded up to 51).
+#[testkit::test]
+fn the_seeds_object_counts_follow_from_the_triangles_per_level() {
+    let count = |level: f64, spacing| triangle_domain(level, [level; 3], spacing).triangles.len();
+    for n in 1..=64 {
+        assert_eq!(
+            count(f64::from(n), Spacing::Equal),
+            triangles_at_level(n),
+            "a triangle domain with every level {n}, equal spacing"
+        );
+    }
+    assert_eq!(12 * count(5.0, Spacing::Equal), 444, "the cube at level 5");
+    assert_eq!(
+        968 * count(1.0, Spacing::Equal),
+        968,
+        "the monkey at level 1"
+    );
+    assert_eq!(
+        968 * count(5.0, Spacing::Equal),
+        35816,
+        "the monkey at level 5"
+    );
+    assert_eq!(
+        12 * count(9.0, Spacing::Equal),
+        1452,
+        "the cube at level 9, equal spacing"
+    );
+    assert_eq!(
+        12 * count(9.0, Spacing::FractionalEven),
+        1800,
+        "the seed's cube at level 9: fractional-even spacing rounds 9 up to 10"
+    );
+    assert_eq!(
+        12 * count(50.0, Spacing::Equal),
+        45000,
+        "the cube at level 50, equal spacing"
+    );
+    assert_eq!(
+        12 * count(50.0, Spacing::FractionalOdd),
+        46812,
+        "the seed's cube at level 50: fractional-odd spacing rounds 50 up to 51"
+    );
+}
+
 /// Checks that a domain tiles its shape: every triangle counter-clockwise
 /// (zero area allowed only where the specification puts vertices on top
 /// of each other), areas summing to `area`, every edge shared by two
