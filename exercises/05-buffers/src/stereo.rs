@@ -160,9 +160,11 @@ impl StereoCamera {
         if right.length_squared() <= f32::EPSILON * (self.target - self.eye).length_squared() {
             return Err(StereoError::NoDirection);
         }
-        if !(self.fov_y > 0.0 && self.fov_y < std::f32::consts::PI)
-            || !(self.near > 0.0 && self.near < self.far)
-        {
+        let lens = self.fov_y > 0.0
+            && self.fov_y < std::f32::consts::PI
+            && self.near > 0.0
+            && self.near < self.far;
+        if !lens {
             return Err(StereoError::BadLens);
         }
         if self.separation < 0.0 || self.convergence <= 0.0 {

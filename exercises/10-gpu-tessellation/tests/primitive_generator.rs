@@ -264,7 +264,7 @@ fn fractional_odd_inner_level_one_puts_inner_corners_on_the_edges() {
 /// `6k(k + 1) + 1` for `n = 2k + 1`.
 fn triangles_at_level(n: u32) -> usize {
     let k = (n / 2) as usize;
-    if n % 2 == 0 {
+    if n.is_multiple_of(2) {
         6 * k * k
     } else {
         6 * k * (k + 1) + 1

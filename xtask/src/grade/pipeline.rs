@@ -31,13 +31,14 @@ pub const STAGES: [(&str, &str); 4] = [
 ];
 
 /// The viewer's features and topics in `cargo xtask view`: the pipeline's,
-/// and the pixel playground's circle.
-pub const VIEWER_TOPICS: [(&str, &str); 5] = [
+/// the pixel playground's circle and the curve scene's de Casteljau.
+pub const VIEWER_TOPICS: [(&str, &str); 6] = [
     STAGES[0],
     ("circles", "02-circles"),
     STAGES[1],
     STAGES[2],
     STAGES[3],
+    ("bezier", "07-bezier"),
 ];
 
 /// How long one picture may take.

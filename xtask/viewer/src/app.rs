@@ -1,6 +1,7 @@
 //! The window: the picture on the left, the controls and your stages on
-//! the right, as in seed 004's Figure 2. Two scenes: your pipeline
-//! ([`crate::render`]) and the pixel playground ([`crate::playground`]).
+//! the right, as in seed 004's Figure 2. Three scenes: your pipeline
+//! ([`crate::render`]), the pixel playground ([`crate::playground`]) and
+//! the curve scene ([`crate::curves`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -11,6 +12,7 @@ use eframe::egui;
 use egui::{Color32, RichText, TextureHandle, TextureOptions};
 use scene::Mode;
 
+use crate::curves::{self, CurveDrawing, CurveSetup, CurveWorker};
 use crate::meshes::MeshEntry;
 use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
 use crate::render::{Frame, FrameWorker, Settings, frame_worker};
@@ -23,6 +25,24 @@ pub enum Scene {
     Pipeline,
     /// One primitive on a magnified grid, beside its definition.
     Pixels,
+    /// A Bézier curve and its de Casteljau construction.
+    Curves,
+}
+
+/// The curve scene's state.
+struct Curves {
+    setup: CurveSetup,
+    worker: CurveWorker,
+    asked: Option<CurveSetup>,
+    drawing: Option<CurveDrawing>,
+    /// The control point being dragged.
+    dragging: Option<usize>,
+    /// Where the unit square was last drawn on screen.
+    area: Option<egui::Rect>,
+    /// Whether the construction at `t` shows.
+    construction: bool,
+    /// Whether the definition's curve shows.
+    definition: bool,
 }
 
 /// The pixel playground's state.
@@ -48,6 +68,7 @@ struct Playground {
 pub struct ViewerApp {
     scene: Scene,
     playground: Playground,
+    curves: Curves,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
@@ -98,6 +119,16 @@ impl ViewerApp {
                 primitive: Primitive::DdaLine,
                 grid: None,
             },
+            curves: Curves {
+                setup: CurveSetup::default(),
+                worker: curves::worker(stages.clone()),
+                asked: None,
+                drawing: None,
+                dragging: None,
+                area: None,
+                construction: true,
+                definition: true,
+            },
             meshes,
             selected: 0,
             settings: Settings::default(),
@@ -146,6 +177,7 @@ impl ViewerApp {
         let shown = match self.scene {
             Scene::Pipeline => self.texture.is_some(),
             Scene::Pixels => self.playground.drawing.is_some(),
+            Scene::Curves => self.curves.drawing.is_some(),
         };
         if shown && !self.screenshot_asked {
             let slot = Arc::clone(&self.screenshot);
@@ -182,6 +214,49 @@ impl ViewerApp {
         &mut self.playground.setup
     }
 
+    /// The curve scene's set-up, to change what it draws.
+    pub fn curves_mut(&mut self) -> &mut CurveSetup {
+        &mut self.curves.setup
+    }
+
+    /// The curve scene's drawing on screen, if one has been drawn.
+    #[must_use]
+    pub fn curve_drawing(&self) -> Option<&CurveDrawing> {
+        self.curves.drawing.as_ref()
+    }
+
+    /// Where control point `k` of the curve scene shows on screen, once
+    /// the scene has been drawn (for tests that drag it).
+    #[must_use]
+    pub fn curve_point_on_screen(&self, k: usize) -> Option<egui::Pos2> {
+        let area = self.curves.area?;
+        let p = *self.curves.setup.points.get(k)?;
+        Some(unit_to_screen(area, p))
+    }
+
+    /// Asks for the curve scene's drawing and waits for it, at most
+    /// `limit` (for tests); whether it arrived.
+    pub fn wait_for_curve(&mut self, limit: Duration) -> bool {
+        self.ask_curves();
+        match self.curves.worker.wait(limit) {
+            Some(drawing) => {
+                self.curves.drawing = Some(drawing);
+                true
+            }
+            None => self.curves.worker.busy_for().is_none(),
+        }
+    }
+
+    /// Asks for the curve scene's drawing if its set-up changed.
+    fn ask_curves(&mut self) {
+        let curves = &mut self.curves;
+        curves.setup.tidy();
+        if curves.asked.as_ref() != Some(&curves.setup) {
+            curves.worker.request(curves.setup.clone());
+            curves.asked = Some(curves.setup.clone());
+        }
+    }
+
     /// Where handle `k` of the playground shows on screen, once the grid
     /// has been drawn (for tests that drag it).
     #[must_use]
@@ -210,6 +285,7 @@ impl ViewerApp {
     pub fn set_slow_after(&mut self, limit: Duration) {
         self.worker.set_slow_after(limit);
         self.playground.worker.set_slow_after(limit);
+        self.curves.worker.set_slow_after(limit);
     }
 
     /// The settings the next frame is drawn with.
@@ -311,10 +387,18 @@ impl ViewerApp {
 
     /// Draws the window's contents into `ui`.
     pub fn show(&mut self, ui: &mut egui::Ui) {
-        if self.scene == Scene::Pixels {
-            self.show_playground(ui);
-            self.window_screenshot(ui);
-            return;
+        match self.scene {
+            Scene::Pixels => {
+                self.show_playground(ui);
+                self.window_screenshot(ui);
+                return;
+            }
+            Scene::Curves => {
+                self.show_curves(ui);
+                self.window_screenshot(ui);
+                return;
+            }
+            Scene::Pipeline => {}
         }
         self.ask();
         if let Some(frame) = self.worker.poll() {
@@ -338,6 +422,7 @@ impl ViewerApp {
         ui.horizontal(|ui| {
             ui.selectable_value(&mut self.scene, Scene::Pipeline, "Pipeline scene");
             ui.selectable_value(&mut self.scene, Scene::Pixels, "Pixel playground");
+            ui.selectable_value(&mut self.scene, Scene::Curves, "Curves");
         });
         ui.separator();
     }
@@ -430,12 +515,7 @@ impl ViewerApp {
             return;
         };
         for stage in &frame.stages {
-            let colour = match stage.status {
-                Status::Ok => Color32::LIGHT_GREEN,
-                Status::Unused | Status::NotReached => Color32::GRAY,
-                Status::NotYet(_) => Color32::YELLOW,
-                Status::Missing | Status::Panicked(_) | Status::Failed(_) => Color32::LIGHT_RED,
-            };
+            let colour = status_colour(&stage.status);
             ui.label(
                 RichText::new(format!("{}: {}", stage.name, stage.status.describe())).color(colour),
             );
@@ -570,12 +650,7 @@ impl ViewerApp {
             return;
         };
         let (name, source) = drawing.stage;
-        let colour = match drawing.status {
-            Status::Ok => Color32::LIGHT_GREEN,
-            Status::Unused | Status::NotReached => Color32::GRAY,
-            Status::NotYet(_) => Color32::YELLOW,
-            Status::Missing | Status::Panicked(_) | Status::Failed(_) => Color32::LIGHT_RED,
-        };
+        let colour = status_colour(&drawing.status);
         ui.label(RichText::new(format!("{name}: {}", drawing.status.describe())).color(colour));
         ui.label(RichText::new(source).small().weak());
         ui.label(drawing.summary());
@@ -732,6 +807,190 @@ impl ViewerApp {
         slow_notice(ui, "Your code has been drawing", slow);
     }
 }
+
+impl ViewerApp {
+    /// The curve scene: its controls on the right, the curve on the left.
+    fn show_curves(&mut self, ui: &mut egui::Ui) {
+        self.ask_curves();
+        if let Some(drawing) = self.curves.worker.poll() {
+            self.curves.drawing = Some(drawing);
+        }
+        if self.curves.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    self.curve_controls(ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.curve_area(ui));
+    }
+
+    fn curve_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your curve");
+        ui.label(
+            "Your de Casteljau draws the curve and the construction of one point; drag the control points. Beside it, the curve of the definition (the Bernstein sum).",
+        );
+        ui.separator();
+        let curves = &mut self.curves;
+        let mut count = curves.setup.points.len();
+        ui.add(
+            egui::Slider::new(&mut count, curves::MIN_POINTS..=curves::MAX_POINTS)
+                .text("control points"),
+        );
+        if count != curves.setup.points.len() {
+            curves.setup.set_count(count);
+        }
+        ui.add(egui::Slider::new(&mut curves.setup.t, 0.0..=1.0).text("t"));
+        ui.checkbox(&mut curves.construction, "Construction at t");
+        ui.checkbox(&mut curves.definition, "The definition's curve");
+        if ui.button("Reset").clicked() {
+            curves.setup = CurveSetup::default();
+        }
+        ui.separator();
+        ui.heading("Your stage");
+        let stages = crate::stages::Stages::default();
+        let Some(drawing) = &curves.drawing else {
+            ui.label("drawing …");
+            return;
+        };
+        ui.label(
+            RichText::new(format!(
+                "{}: {}",
+                stages.curve.name,
+                drawing.status.describe()
+            ))
+            .color(status_colour(&drawing.status)),
+        );
+        ui.label(RichText::new(stages.curve.source).small().weak());
+        if let Some(deviation) = drawing.deviation {
+            ui.label(format!(
+                "largest distance from the definition: {deviation:.1e}"
+            ));
+        }
+        if let Some(point) = drawing.levels.last().filter(|l| l.len() == 1).map(|l| l[0]) {
+            ui.label(format!(
+                "C({:.2}) = ({:.4}, {:.4})",
+                drawing.setup.t, point.x, point.y
+            ));
+        }
+    }
+
+    fn curve_area(&mut self, ui: &mut egui::Ui) {
+        let slow = self.curves.worker.slow_for();
+        let curves = &mut self.curves;
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
+        let side = available.x.min(available.y).max(100.0);
+        let (response, painter) = ui.allocate_painter(egui::vec2(side, side), egui::Sense::drag());
+        let area = response.rect.shrink(side * 0.04);
+        curves.area = Some(area);
+        let to_unit = |s: egui::Pos2| {
+            glam::DVec2::new(
+                f64::from((s.x - area.left()) / area.width()),
+                f64::from((area.bottom() - s.y) / area.height()),
+            )
+        };
+        if response.drag_started()
+            && let Some(at) = response.interact_pointer_pos()
+        {
+            let at = to_unit(at);
+            curves.dragging = curves
+                .setup
+                .points
+                .iter()
+                .enumerate()
+                .map(|(k, p)| (k, p.distance(at)))
+                .filter(|(_, d)| *d < 0.05)
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(k, _)| k);
+        }
+        if let (Some(k), Some(at)) = (curves.dragging, response.interact_pointer_pos())
+            && response.dragged()
+            && let Some(p) = curves.setup.points.get_mut(k)
+        {
+            *p = to_unit(at).clamp(glam::DVec2::ZERO, glam::DVec2::ONE);
+        }
+        if response.drag_stopped() {
+            curves.dragging = None;
+        }
+        painter.rect_filled(response.rect, 0.0, EMPTY);
+        let screen = |p: glam::DVec2| unit_to_screen(area, p);
+        let polyline = |points: &[glam::DVec2], stroke: egui::Stroke| {
+            if points.len() >= 2 {
+                painter.add(egui::Shape::line(
+                    points.iter().map(|&p| screen(p)).collect(),
+                    stroke,
+                ));
+            }
+        };
+        // The control polygon, as it is now (also while a drag waits for
+        // its drawing).
+        polyline(&curves.setup.points, egui::Stroke::new(1.5, Color32::GRAY));
+        if let Some(drawing) = &curves.drawing {
+            if curves.definition {
+                polyline(&drawing.expected, egui::Stroke::new(5.0, DEFINITION));
+            }
+            polyline(&drawing.yours, egui::Stroke::new(2.0, Color32::WHITE));
+            if curves.construction {
+                for (k, level) in drawing.levels.iter().enumerate().skip(1) {
+                    let colour = LEVELS[(k - 1) % LEVELS.len()];
+                    polyline(level, egui::Stroke::new(1.5, colour));
+                    for &p in level {
+                        painter.circle_filled(screen(p), 3.5, colour);
+                    }
+                }
+                if let Some(&[point]) = drawing.levels.last().map(Vec::as_slice)
+                    && drawing.levels.len() == drawing.setup.points.len()
+                {
+                    painter.circle_filled(screen(point), 6.0, ONLY_YOURS);
+                }
+            }
+        }
+        for (k, &p) in curves.setup.points.iter().enumerate() {
+            let centre = screen(p);
+            painter.circle_filled(centre, 9.0, HANDLE);
+            painter.text(
+                centre,
+                egui::Align2::CENTER_CENTER,
+                k.to_string(),
+                egui::FontId::proportional(11.0),
+                Color32::BLACK,
+            );
+        }
+        slow_notice(ui, "Your de Casteljau has been drawing", slow);
+    }
+}
+
+/// A point of the unit square on screen, in `area` (y up).
+fn unit_to_screen(area: egui::Rect, p: glam::DVec2) -> egui::Pos2 {
+    egui::pos2(
+        area.left() + p.x as f32 * area.width(),
+        area.bottom() - p.y as f32 * area.height(),
+    )
+}
+
+/// A stage's status in its colour.
+fn status_colour(status: &Status) -> Color32 {
+    match status {
+        Status::Ok => Color32::LIGHT_GREEN,
+        Status::Unused | Status::NotReached => Color32::GRAY,
+        Status::NotYet(_) => Color32::YELLOW,
+        Status::Missing | Status::Panicked(_) | Status::Failed(_) => Color32::LIGHT_RED,
+    }
+}
+
+/// The definition's curve, under yours.
+const DEFINITION: Color32 = Color32::from_rgb(70, 110, 70);
+/// The levels of the construction, one colour each.
+const LEVELS: [Color32; 4] = [
+    Color32::from_rgb(90, 170, 255),
+    Color32::from_rgb(255, 170, 60),
+    Color32::from_rgb(190, 120, 255),
+    Color32::from_rgb(80, 220, 200),
+];
 
 /// A pixel you plotted (where your code gives it no colour).
 const INK: Color32 = Color32::from_rgb(200, 200, 210);

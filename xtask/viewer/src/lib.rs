@@ -16,6 +16,7 @@
 
 #[cfg(feature = "window")]
 pub mod app;
+pub mod curves;
 pub mod meshes;
 pub mod playground;
 pub mod render;

@@ -52,8 +52,12 @@ struct Args {
     time_limit: f64,
     /// Open the window on the pixel playground (your lines, circle and
     /// triangle on a magnified grid, beside their definitions).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "curves")]
     pixels: bool,
+    /// Open the window on the curve scene (your de Casteljau drawing a
+    /// Bézier curve and its construction, beside the definition's curve).
+    #[arg(long)]
+    curves: bool,
     /// Topics left out of this build because they do not compile (set by
     /// `cargo xtask view`).
     #[arg(long = "not-compiling", value_name = "TOPIC")]
@@ -100,7 +104,13 @@ fn main() -> Result<()> {
             settings,
             args.not_compiling,
             args.window_screenshot,
-            args.pixels,
+            if args.pixels {
+                Start::Pixels
+            } else if args.curves {
+                Start::Curves
+            } else {
+                Start::Pipeline
+            },
         ),
     }
 }
@@ -134,6 +144,14 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
     Ok(())
 }
 
+/// The scene the window opens on.
+#[derive(Clone, Copy)]
+enum Start {
+    Pipeline,
+    Pixels,
+    Curves,
+}
+
 /// Opens the window.
 #[cfg(feature = "window")]
 fn window(
@@ -142,7 +160,7 @@ fn window(
     settings: Settings,
     not_compiling: Vec<String>,
     window_screenshot: Option<PathBuf>,
-    pixels: bool,
+    start: Start,
 ) -> Result<()> {
     use eframe::egui;
     let display = ["DISPLAY", "WAYLAND_DISPLAY"]
@@ -159,8 +177,10 @@ fn window(
     let mut app = course_viewer::ViewerApp::new(meshes, Stages::yours(), not_compiling);
     app.select_mesh(&name);
     *app.settings_mut() = settings;
-    if pixels {
-        app.set_scene(course_viewer::Scene::Pixels);
+    match start {
+        Start::Pipeline => {}
+        Start::Pixels => app.set_scene(course_viewer::Scene::Pixels),
+        Start::Curves => app.set_scene(course_viewer::Scene::Curves),
     }
     if let Some(path) = window_screenshot {
         app.screenshot_window_to(path);
@@ -183,7 +203,7 @@ fn window(
     _: Settings,
     _: Vec<String>,
     _: Option<PathBuf>,
-    _: bool,
+    _: Start,
 ) -> Result<()> {
     bail!("this viewer was built without its window (feature `window`): use --screenshot FILE")
 }

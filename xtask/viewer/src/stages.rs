@@ -10,7 +10,8 @@
 //! | depth test | `05-buffers`: `zbuffer::depth_test` with OpenGL's defaults (`LESS`, writes on) |
 //!
 //! and, for the pixel playground, `01-lines`' `midpoint::midpoint_line`
-//! and `02-circles`' `midpoint_circle::midpoint_circle`.
+//! and `02-circles`' `midpoint_circle::midpoint_circle`; for the curve
+//! scene, `07-bezier`'s `de_casteljau::de_casteljau`.
 //!
 //! A topic that does not compile is left out of the build (`cargo xtask
 //! view` checks each one first) and its stage is shown as missing.
@@ -35,6 +36,8 @@ pub type CircleStage = dyn Fn(Pixel, i32, &mut dyn FnMut(Pixel)) + Send + Sync;
 pub type ClipStage = dyn Fn(&[ClipVertex]) -> Result<Vec<ClipVertex>, String> + Send + Sync;
 /// Runs a fragment through the depth test; whether it was written.
 pub type DepthStage = dyn Fn(&mut Canvas, Fragment) -> bool + Send + Sync;
+/// A point of a Bézier curve: `(control points, t)`, or why not.
+pub type CurveStage = dyn Fn(&[glam::DVec2], f64) -> Result<glam::DVec2, String> + Send + Sync;
 
 /// One stage: where it comes from, and the code if its topic is built in.
 pub struct Stage<F: ?Sized> {
@@ -72,6 +75,8 @@ pub struct Stages {
     pub midpoint: Stage<PixelLineStage>,
     /// The midpoint circle (the playground).
     pub circle: Stage<CircleStage>,
+    /// De Casteljau's algorithm (the curve scene).
+    pub curve: Stage<CurveStage>,
 }
 
 /// The four stages without code: what a build without any topic shows.
@@ -106,6 +111,11 @@ impl Default for Stages {
             circle: Stage {
                 name: "midpoint circle",
                 source: "02-circles · midpoint_circle::midpoint_circle",
+                run: None,
+            },
+            curve: Stage {
+                name: "de Casteljau",
+                source: "07-bezier · de_casteljau::de_casteljau",
                 run: None,
             },
         }
@@ -165,6 +175,12 @@ impl Stages {
                     fragment,
                     &buffers::zbuffer::DepthState::DEFAULT,
                 )
+            }));
+        }
+        #[cfg(feature = "bezier")]
+        {
+            stages.curve.run = Some(Arc::new(|points: &[glam::DVec2], t: f64| {
+                bezier::de_casteljau::de_casteljau(points, t).map_err(|e| e.to_string())
             }));
         }
         stages

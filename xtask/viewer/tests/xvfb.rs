@@ -94,4 +94,21 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
         orange > 100,
         "{orange} orange pixels: the playground's line is not in the window"
     );
+    // The curve scene: the red dot of C(t) and the blue first level of
+    // the construction.
+    let picture = window_screenshot(&xvfb_run, "curves.png", &["--curves"]);
+    let count = |(r, g, b): (f32, f32, f32)| {
+        picture
+            .enumerate()
+            .filter(|(_, c)| {
+                (c.r - r).abs() < 0.05 && (c.g - g).abs() < 0.05 && (c.b - b).abs() < 0.05
+            })
+            .count()
+    };
+    let dot = count((1.0, 60.0 / 255.0, 60.0 / 255.0));
+    let level = count((90.0 / 255.0, 170.0 / 255.0, 1.0));
+    assert!(
+        dot > 20 && level > 20,
+        "{dot} red and {level} blue pixels: the curve scene's construction is not in the window"
+    );
 }
