@@ -5,6 +5,9 @@
 //! - [`BezierPatch`]: the tensor-product Bézier patch's control net, in the
 //!   one layout every topic uses (topic 07's de Casteljau, topic 09's
 //!   tessellations, topic 10's GPU buffer).
+//! - [`RationalPatch`]: a Bézier patch with weights, the piece a NURBS
+//!   surface splits into, with [`RationalPatch::torus`] as 16 of them
+//!   (topic 09 tessellates rational patches too).
 //! - [`BezierTriangle`]: the cubic Bézier triangle's ten control points,
 //!   named by their exponents and stored in one order (topic 09's PN
 //!   triangles, topic 10's GPU buffer).
@@ -19,10 +22,12 @@
 
 pub mod domain;
 pub mod patch;
+pub mod rational;
 pub mod stitch;
 pub mod triangle;
 
 pub use domain::{QuadDomain, TriangleDomain, embed};
 pub use patch::{BezierPatch, PatchError};
+pub use rational::RationalPatch;
 pub use stitch::stitch;
 pub use triangle::BezierTriangle;

@@ -59,6 +59,12 @@ pub enum PatchError {
         /// Its index in the row-by-row order.
         index: usize,
     },
+    /// A weight of a rational patch that is not finite and positive.
+    #[error("weight {index} is not finite and positive")]
+    Weight {
+        /// Its index in the row-by-row order.
+        index: usize,
+    },
 }
 
 /// A tensor-product Bézier patch: degree `p × q` and its control points,

@@ -16,10 +16,21 @@
 //! A patch is a curve of curves: each row evaluated at `v` gives the
 //! control points `R_i(v)` of the curve in `u` through `S(u, v)`, and the
 //! rows' derivatives `R_i'(v)` those of the curve through `S_v`.
+//!
+//! A rational patch ([`RationalPatch`], the piece a NURBS surface splits
+//! into) is the quotient of two such patches, `S = A / W` (see
+//! `freeform::rational`); its tangents follow by the quotient rule:
+//!
+//! ```text
+//!   S_u = (A_u − S·W_u) / W,    S_v = (A_v − S·W_v) / W
+//! ```
+//!
+//! Every tessellation of this crate takes any surface that can
+//! [`Evaluate`], polynomial or rational.
 
 use glam::{DVec2, DVec3};
 
-pub use freeform::BezierPatch;
+pub use freeform::{BezierPatch, RationalPatch};
 
 /// The largest number of cells or segments per direction any function of
 /// this crate accepts or produces: bounds memory and time on hostile input.
@@ -156,6 +167,17 @@ impl Evaluate for BezierPatch {
     }
 }
 
+impl Evaluate for RationalPatch {
+    /// `S = A / W`, its tangents by the quotient rule (module
+    /// documentation); `A` and `W` evaluated as polynomial patches.
+    fn derivatives(&self, uv: DVec2) -> [DVec3; 3] {
+        let [a, a_u, a_v] = self.numerator().derivatives(uv);
+        let [w, w_u, w_v] = self.denominator().derivatives(uv).map(|d| d.x);
+        let s = a / w;
+        [s, (a_u - s * w_u) / w, (a_v - s * w_v) / w]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -208,5 +230,41 @@ mod tests {
         }
         assert_eq!(patch.position(DVec2::ZERO), patch.control_point(0, 0));
         assert_eq!(patch.position(DVec2::ONE), patch.control_point(3, 2));
+    }
+
+    #[test]
+    fn a_rational_torus_is_evaluated_on_the_torus_with_its_tangents() {
+        let (major, minor) = (2.0, 0.6);
+        for patch in RationalPatch::torus(major, minor) {
+            for (u, v) in [(0.0, 0.0), (0.25, 0.7), (0.5, 0.5), (0.9, 0.1), (1.0, 1.0)] {
+                let uv = DVec2::new(u, v);
+                let [s, s_u, s_v] = patch.derivatives(uv);
+                let off = ((s.x.hypot(s.y) - major).hypot(s.z) - minor).abs();
+                assert!(off < 1e-12, "{s} is {off} off the torus");
+                // The normal points away from the tube's centre line.
+                let centre = major * DVec3::new(s.x, s.y, 0.0).normalize();
+                let radial = (s - centre).normalize();
+                let normal = patch.normal(uv);
+                assert!(
+                    (normal.dot(radial) - 1.0).abs() < 1e-9,
+                    "normal {normal}, radial {radial}"
+                );
+                // The tangents against central differences.
+                let h = 1e-6;
+                for (tangent, step) in [(s_u, DVec2::X * h), (s_v, DVec2::Y * h)] {
+                    let (a, b) = (
+                        patch.position((uv - step).max(DVec2::ZERO)),
+                        patch.position((uv + step).min(DVec2::ONE)),
+                    );
+                    let width =
+                        ((uv + step).min(DVec2::ONE) - (uv - step).max(DVec2::ZERO)).length();
+                    let difference = (b - a) / width;
+                    assert!(
+                        (tangent - difference).length() < 1e-5 * difference.length().max(1.0),
+                        "tangent {tangent} against {difference}"
+                    );
+                }
+            }
+        }
     }
 }

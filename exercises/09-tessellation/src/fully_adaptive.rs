@@ -34,7 +34,7 @@
 use std::collections::HashMap;
 
 #[allow(unused_imports)]
-use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
+use crate::bezier::{Evaluate, SurfacePoint};
 #[allow(unused_imports)]
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
@@ -62,7 +62,8 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// The result keeps the initial vertices, in order, and appends the new
 /// ones; triangles keep their orientation in the parameter plane. An edge
 /// is split on both of its sides or on neither, so a watertight initial
-/// mesh stays watertight.
+/// mesh stays watertight. `patch` is any surface that can [`Evaluate`],
+/// polynomial or rational.
 ///
 /// # Errors
 /// [`TessError::Mesh`] for an invalid initial mesh,
@@ -71,7 +72,7 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// [`TessError::Resolution`] for `max_depth` above [`MAX_DEPTH`], or when
 /// the refinement would exceed [`MAX_TRIANGLES`].
 pub fn refine(
-    patch: &BezierPatch,
+    patch: &impl Evaluate,
     initial: &Mesh,
     test: EdgeTest,
     max_depth: u32,

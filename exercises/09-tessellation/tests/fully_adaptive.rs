@@ -6,7 +6,7 @@ use common::{
     POSITION_TOLERANCE, SEED_VIEW, assert_picture, assert_tiles_rectangle, bernstein_surface,
     max_deviation, patch_from, sample_grid, unit_plane,
 };
-use tessellation::bezier::{BezierPatch, Evaluate, SurfacePoint};
+use tessellation::bezier::{BezierPatch, Evaluate, RationalPatch, SurfacePoint};
 use tessellation::edge_tests::{
     EdgeContext, EdgeTest, first_order_neighbour, local_flat, one_edge_complementary,
     one_edge_normal, two_triangle, umbrella_flat, vector_deviation_flat,
@@ -412,6 +412,29 @@ fn table_of_triangle_counts() {
         above(0.2)
     ));
     insta::assert_snapshot!(table);
+}
+
+/// A NURBS surface refined adaptively: one of the rational patches of the
+/// torus (`RationalPatch::torus`), every vertex new or old on the torus.
+#[testkit::test]
+fn a_rational_patch_is_refined_onto_its_surface() {
+    let (major, minor) = (2.0, 0.6);
+    let patch = &RationalPatch::torus(major, minor)[5];
+    let initial = sample_grid(patch, 5);
+    let mesh = refine(patch, &initial, EdgeTest::OneEdgeNormal { t1: 0.1 }, 3).unwrap();
+    assert!(
+        mesh.triangle_count() > 2 * initial.triangle_count(),
+        "a quarter of a torus is curved everywhere: {} triangles from {}",
+        mesh.triangle_count(),
+        initial.triangle_count()
+    );
+    for (k, p) in mesh.positions.iter().enumerate() {
+        let off = ((p.x.hypot(p.y) - major).hypot(p.z) - minor).abs();
+        assert!(
+            off < 1e-9,
+            "vertex {k} at {p} is {off} off the torus: sample the new vertices on the patch"
+        );
+    }
 }
 
 #[testkit::test]

@@ -32,7 +32,7 @@
 
 use std::collections::HashMap;
 
-use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
+use crate::bezier::{Evaluate, SurfacePoint};
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
 use crate::mesh::Mesh;
@@ -59,7 +59,8 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// The result keeps the initial vertices, in order, and appends the new
 /// ones; triangles keep their orientation in the parameter plane. An edge
 /// is split on both of its sides or on neither, so a watertight initial
-/// mesh stays watertight.
+/// mesh stays watertight. `patch` is any surface that can [`Evaluate`],
+/// polynomial or rational.
 ///
 /// # Errors
 /// [`TessError::Mesh`] for an invalid initial mesh,
@@ -68,7 +69,7 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// [`TessError::Resolution`] for `max_depth` above [`MAX_DEPTH`], or when
 /// the refinement would exceed [`MAX_TRIANGLES`].
 pub fn refine(
-    patch: &BezierPatch,
+    patch: &impl Evaluate,
     initial: &Mesh,
     test: EdgeTest,
     max_depth: u32,

@@ -97,7 +97,11 @@ pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2
             .fold(0.0, f64::max)
     };
     let m_u = largest((0..=patch.degree_v()).map(|j| patch.column(j)).collect());
-    let m_v = largest((0..=patch.degree_u()).map(|i| patch.row(i).to_vec()).collect());
+    let m_v = largest(
+        (0..=patch.degree_u())
+            .map(|i| patch.row(i).to_vec())
+            .collect(),
+    );
     Ok([
         segments(patch.degree_u(), m_u, tolerance).max(MIN_INNER_SEGMENTS),
         segments(patch.degree_v(), m_v, tolerance).max(MIN_INNER_SEGMENTS),

@@ -13,7 +13,7 @@
 
 use glam::DVec2;
 
-use crate::bezier::{BezierPatch, Evaluate, MAX_RESOLUTION};
+use crate::bezier::{Evaluate, MAX_RESOLUTION};
 use crate::error::TessError;
 use crate::mesh::Mesh;
 
@@ -23,12 +23,18 @@ use crate::mesh::Mesh;
 /// `u` running fastest; triangles cell by cell in the same order, the lower
 /// right triangle first). Every vertex lies on the surface, with the
 /// surface's unit normal ([`Evaluate::sample`]); triangles are
-/// counter-clockwise in the `(u, v)` plane.
+/// counter-clockwise in the `(u, v)` plane. `patch` is any surface that
+/// can [`Evaluate`]: a Bézier patch, or a rational one (a piece of a NURBS
+/// surface).
 ///
 /// # Errors
 /// [`TessError::Resolution`] if `n_u` or `n_v` is 0 or above
 /// [`MAX_RESOLUTION`].
-pub fn tessellate_uniform(patch: &BezierPatch, n_u: usize, n_v: usize) -> Result<Mesh, TessError> {
+pub fn tessellate_uniform(
+    patch: &impl Evaluate,
+    n_u: usize,
+    n_v: usize,
+) -> Result<Mesh, TessError> {
     // BEGIN SOLUTION uniform: sample the (n_u+1)×(n_v+1) grid, then two triangles per cell
     for n in [n_u, n_v] {
         if n == 0 || n > MAX_RESOLUTION {

@@ -46,7 +46,7 @@ pub fn unit_plane() -> BezierPatch {
 /// The initial mesh of the fully adaptive tessellation, built here
 /// independently: `samples × samples` points, two triangles per cell
 /// (the cell's diagonal from `(i, j + 1)` to `(i + 1, j)`).
-pub fn sample_grid(patch: &BezierPatch, samples: usize) -> Mesh {
+pub fn sample_grid(patch: &impl Evaluate, samples: usize) -> Mesh {
     let n = samples - 1;
     let mut mesh = Mesh::new();
     let mut id = HashMap::new();
