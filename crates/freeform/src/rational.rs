@@ -118,6 +118,47 @@ impl RationalPatch {
         &self.denominator
     }
 
+    /// The same surface with both degrees raised by one (degree
+    /// elevation, exact in homogeneous coordinates): with `h_i = (w_i P_i,
+    /// w_i)` along each direction of degree `n`,
+    ///
+    /// ```text
+    ///   h'_i = i/(n+1) · h_(i−1) + (1 − i/(n+1)) · h_i,   i = 0 … n+1
+    /// ```
+    ///
+    /// so that, say, the biquadratic torus patches become the bicubic ones
+    /// a GPU buffer of 16 points holds.
+    ///
+    /// # Errors
+    /// [`PatchError::DegreeTooHigh`] above [`crate::patch::MAX_DEGREE`].
+    pub fn elevated(&self) -> Result<Self, PatchError> {
+        let (p, q) = (self.points.degree_u(), self.points.degree_v());
+        let h = |i: usize, j: usize| {
+            let w = self.weight(i, j);
+            (w * self.points.control_point(i, j), w)
+        };
+        // Raise one index of degree n: the point at i of the raised curve.
+        let raise = |n: usize, i: usize, at: &dyn Fn(usize) -> (DVec3, f64)| {
+            let a = i as f64 / (n + 1) as f64;
+            let (lo, hi) = (
+                if i > 0 { at(i - 1) } else { (DVec3::ZERO, 0.0) },
+                if i <= n { at(i) } else { (DVec3::ZERO, 0.0) },
+            );
+            (a * lo.0 + (1.0 - a) * hi.0, a * lo.1 + (1.0 - a) * hi.1)
+        };
+        let both = |i: usize, j: usize| raise(p, i, &|k| raise(q, j, &|l| h(k, l)));
+        let homogeneous: Vec<(DVec3, f64)> = (0..=p + 1)
+            .flat_map(|i| (0..=q + 1).map(move |j| (i, j)))
+            .map(|(i, j)| both(i, j))
+            .collect();
+        let points = BezierPatch::try_new(
+            p + 1,
+            q + 1,
+            homogeneous.iter().map(|&(a, w)| a / w).collect(),
+        )?;
+        Self::try_new(points, homogeneous.iter().map(|&(_, w)| w).collect())
+    }
+
     /// A torus around the `z` axis, `major` from the axis to the tube's
     /// centre and `minor` the tube's radius (`0 < minor < major`), as the
     /// 16 biquadratic rational patches a NURBS torus splits into: patch
@@ -234,6 +275,24 @@ mod tests {
                     ] {
                         assert!(a.distance(b) < 1e-12 && wa == wb, "patch ({row}, {col})");
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn an_elevated_patch_is_the_same_surface() {
+        for patch in RationalPatch::torus(2.0, 0.6).iter().step_by(5) {
+            let raised = patch.elevated().unwrap();
+            assert_eq!(
+                (raised.points().degree_u(), raised.points().degree_v()),
+                (3, 3)
+            );
+            for k in 0..=6 {
+                for l in 0..=6 {
+                    let (u, v) = (f64::from(k) / 6.0, f64::from(l) / 6.0);
+                    let (a, b) = (evaluate(patch, u, v), evaluate(&raised, u, v));
+                    assert!(a.distance(b) < 1e-12, "at ({u}, {v}): {a} against {b}");
                 }
             }
         }

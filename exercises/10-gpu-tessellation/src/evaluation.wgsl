@@ -29,6 +29,11 @@
 //   more cubic evaluations). The seed takes the u tangent from the last
 //   row only (Listing 4, `index == 0`), which is the tangent of the
 //   boundary curve `v = 1`, not of the surface at `v`: do not copy that.
+//   The points are homogeneous, `(w·P, w)` (`w = 1` for a polynomial
+//   patch, other weights for a piece of a NURBS surface): run the scheme
+//   on all four coordinates, then `P = A.xyz / A.w`, and a tangent `T` of
+//   `A` becomes `T.xyz − P·T.w` (the quotient rule without its positive
+//   factor `1/A.w`, which the normal does not need).
 // - `evaluate_triangle`: three barycentric de Casteljau steps, 10 → 6 → 3
 //   → 1 points, `Q_ijk ← u·Q_(i+1)jk + v·Q_i(j+1)k + w·Q_ij(k+1)`; with
 //   the last-but-one step's points `Q100, Q010, Q001` the normal is

@@ -16,7 +16,10 @@ use wgpu::util::DeviceExt;
 
 use crate::TessError;
 use crate::domain::{QuadDomain, Spacing, TriangleDomain, quad_domain};
-use crate::patch::{BezierPatch, BezierTriangle, GpuVertex, patch_to_gpu, triangle_to_gpu};
+use crate::patch::{
+    BezierPatch, BezierTriangle, GpuVertex, RationalPatch, patch_to_gpu, rational_patch_to_gpu,
+    triangle_to_gpu,
+};
 use crate::shaders;
 use crate::wgsl::{Part, Piece};
 
@@ -347,6 +350,10 @@ impl GpuMesh {
 pub enum Patches<'a> {
     /// Bicubic patches, `evaluate_patch`.
     Quads(&'a [BezierPatch]),
+    /// Rational patches (pieces of a NURBS surface), bicubic or raised to
+    /// it, uploaded homogeneous ([`rational_patch_to_gpu`]),
+    /// `evaluate_patch`.
+    Rational(&'a [RationalPatch]),
     /// Cubic Bézier triangles, `evaluate_triangle`.
     Triangles(&'a [BezierTriangle]),
 }
@@ -355,6 +362,7 @@ impl Patches<'_> {
     fn len(&self) -> usize {
         match self {
             Patches::Quads(p) => p.len(),
+            Patches::Rational(p) => p.len(),
             Patches::Triangles(t) => t.len(),
         }
     }
@@ -464,6 +472,23 @@ impl EvaluationPass {
         let (pipeline, patch_binding, patch_buffer) = match patches {
             Patches::Quads(p) => {
                 let data = bicubic(p)?;
+                let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
+                (&self.quads, 0, buffer)
+            }
+            Patches::Rational(p) => {
+                let data = p
+                    .iter()
+                    .enumerate()
+                    .map(|(k, patch)| {
+                        rational_patch_to_gpu(patch).ok_or_else(|| {
+                            TessError::Invalid(format!(
+                                "rational patch {k} has degree {} × {}; the GPU stages take bicubic (or n × n below, raised)",
+                                patch.points().degree_u(),
+                                patch.points().degree_v()
+                            ))
+                        })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
                 let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
                 (&self.quads, 0, buffer)
             }

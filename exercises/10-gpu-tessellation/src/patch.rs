@@ -24,6 +24,15 @@
 //! The normal is `∂P/∂u × ∂P/∂v`, normalised: facing the viewer when the
 //! patch is seen with u to the right and v up.
 //!
+//! # Rational patches
+//! A rational patch (`freeform::RationalPatch`, a piece of a NURBS
+//! surface) is uploaded homogeneous, each control point `(w·P, w)`
+//! ([`rational_patch_to_gpu`]); a polynomial patch is the case `w = 1`
+//! ([`patch_to_gpu`]). Its surface is `A(u, v) / W(u, v)`, the bicubic
+//! formula above applied to the four coordinates, then divided:
+//! `P = A.xyz / A.w`, and `∂P/∂u = (∂A.xyz/∂u − P·∂A.w/∂u) / A.w`
+//! (likewise for v), whose direction is all the normal needs.
+//!
 //! # Cubic Bézier triangle
 //! `B(u, v, w) = Σ_{i+j+k=3} 3!/(i! j! k!) uⁱ vʲ wᵏ P_ijk` for barycentric
 //! `u + v + w = 1`, ten control points stored in the order
@@ -41,7 +50,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{DVec3, Vec4};
 
-pub use freeform::{BezierPatch, BezierTriangle};
+pub use freeform::{BezierPatch, BezierTriangle, RationalPatch};
 
 /// Cross products shorter than this give a zero normal instead of a
 /// direction made of rounding noise.
@@ -71,7 +80,8 @@ pub struct GpuVertex {
 
 /// The 16 control points of a bicubic patch as the GPU reads them
 /// (`array<vec4<f32>, 16>`): `P_ij` at `4j + i`, the transpose of the
-/// patch's own row-by-row order. `None` unless the patch is bicubic.
+/// patch's own row-by-row order, each homogeneous with weight 1:
+/// `(x, y, z, 1)`. `None` unless the patch is bicubic.
 #[must_use]
 pub fn patch_to_gpu(patch: &BezierPatch) -> Option<[Vec4; 16]> {
     if (patch.degree_u(), patch.degree_v()) != (3, 3) {
@@ -79,6 +89,29 @@ pub fn patch_to_gpu(patch: &BezierPatch) -> Option<[Vec4; 16]> {
     }
     Some(std::array::from_fn(|k| {
         patch.control_point(k % 4, k / 4).as_vec3().extend(1.0)
+    }))
+}
+
+/// The 16 control points of a rational patch as the GPU reads them:
+/// homogeneous, `(w·x, w·y, w·z, w)`, in the order of [`patch_to_gpu`]. A
+/// patch of degree `n × n` below 3 (the torus's biquadratic pieces) is
+/// raised to bicubic first (degree elevation, `RationalPatch::elevated`,
+/// the same surface); `None` for any other degree than bicubic.
+#[must_use]
+pub fn rational_patch_to_gpu(patch: &RationalPatch) -> Option<[Vec4; 16]> {
+    let mut patch = patch.clone();
+    while patch.points().degree_u().max(patch.points().degree_v()) < 3 {
+        patch = patch.elevated().ok()?;
+    }
+    if (patch.points().degree_u(), patch.points().degree_v()) != (3, 3) {
+        return None;
+    }
+    Some(std::array::from_fn(|k| {
+        let (i, j) = (k % 4, k / 4);
+        let w = patch.weight(i, j);
+        (w * patch.points().control_point(i, j))
+            .as_vec3()
+            .extend(w as f32)
     }))
 }
 

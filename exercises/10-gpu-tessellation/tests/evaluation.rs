@@ -6,7 +6,9 @@ mod common;
 use glam::{DVec2, DVec3, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::passes::{Domain, Patches, run_evaluation};
-use gpu_tessellation::patch::{BezierPatch, BezierTriangle, GpuVertex, SurfacePoint};
+use gpu_tessellation::patch::{
+    BezierPatch, BezierTriangle, GpuVertex, RationalPatch, SurfacePoint,
+};
 use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
 
@@ -243,6 +245,46 @@ proptest! {
                 k += 1;
             }
         }
+    }
+}
+
+/// A NURBS surface on the GPU: the torus's 16 rational patches (raised
+/// to bicubic, uploaded homogeneous as `(w·P, w)`). Every point lies on
+/// the torus and carries its normal; with the weights ignored (`.xyz`
+/// alone) the points leave the torus by up to a fifth of its tube.
+#[testkit::test]
+fn rational_torus_patches_lie_on_the_torus() {
+    let piece = wgsl::EVALUATION.written();
+    let Some(gpu) = common::gpu() else { return };
+    let (major, minor) = (0.7, 0.25);
+    let patches = RationalPatch::torus(major, minor);
+    let domains = vec![common::grid(6); patches.len()];
+    let refs: Vec<&Domain> = domains.iter().collect();
+    let got = run_evaluation(&gpu, piece, Patches::Rational(&patches), &refs)
+        .unwrap()
+        .read(&gpu)
+        .unwrap();
+    assert_eq!(got.len(), 16 * 49);
+    for (k, v) in got.iter().enumerate() {
+        let p = v.position.truncate().as_dvec3();
+        let centre = major * DVec3::new(p.x, p.y, 0.0).normalize();
+        let off = ((p - centre).length() - minor).abs();
+        assert!(
+            off < 2e-5,
+            "patch {}, vertex {}: {p} is {off} off the torus; the control points are \
+             homogeneous (w·P, w): run de Casteljau on all four coordinates and divide by w",
+            k / 49,
+            k % 49
+        );
+        let normal = v.normal.truncate().as_dvec3();
+        let expected = (p - centre).normalize();
+        assert!(
+            normal.distance(expected) < 1e-3,
+            "patch {}, vertex {}: normal {normal}, the torus's {expected} (a tangent T of the \
+             homogeneous patch is T.xyz − P·T.w)",
+            k / 49,
+            k % 49
+        );
     }
 }
 

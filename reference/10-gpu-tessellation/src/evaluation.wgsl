@@ -29,6 +29,11 @@
 //   more cubic evaluations). The seed takes the u tangent from the last
 //   row only (Listing 4, `index == 0`), which is the tangent of the
 //   boundary curve `v = 1`, not of the surface at `v`: do not copy that.
+//   The points are homogeneous, `(w·P, w)` (`w = 1` for a polynomial
+//   patch, other weights for a piece of a NURBS surface): run the scheme
+//   on all four coordinates, then `P = A.xyz / A.w`, and a tangent `T` of
+//   `A` becomes `T.xyz − P·T.w` (the quotient rule without its positive
+//   factor `1/A.w`, which the normal does not need).
 // - `evaluate_triangle`: three barycentric de Casteljau steps, 10 → 6 → 3
 //   → 1 points, `Q_ijk ← u·Q_(i+1)jk + v·Q_i(j+1)k + w·Q_ij(k+1)`; with
 //   the last-but-one step's points `Q100, Q010, Q001` the normal is
@@ -42,7 +47,7 @@
 // BEGIN SOLUTION evaluation: write the WGSL fns evaluate_patch and evaluate_triangle (de Casteljau)
 // One cubic curve by de Casteljau: returns the point in [0] and the
 // last-but-one points in [1] and [2] (their difference is B'(t) / 3).
-fn cubic(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, p3: vec3<f32>, t: f32) -> array<vec3<f32>, 3> {
+fn cubic(p0: vec4<f32>, p1: vec4<f32>, p2: vec4<f32>, p3: vec4<f32>, t: f32) -> array<vec4<f32>, 3> {
     let a = mix(p0, p1, t);
     let b = mix(p1, p2, t);
     let c = mix(p2, p3, t);
@@ -58,11 +63,11 @@ fn unit_or_zero(n: vec3<f32>) -> vec3<f32> {
 
 fn evaluate_patch(patch_index: u32, uv: vec2<f32>) -> SurfacePoint {
     let p = patches[patch_index].points;
-    var on_rows: array<vec3<f32>, 4>;
-    var row_a: array<vec3<f32>, 4>;
-    var row_b: array<vec3<f32>, 4>;
+    var on_rows: array<vec4<f32>, 4>;
+    var row_a: array<vec4<f32>, 4>;
+    var row_b: array<vec4<f32>, 4>;
     for (var j = 0u; j < 4u; j++) {
-        let r = cubic(p[4u * j].xyz, p[4u * j + 1u].xyz, p[4u * j + 2u].xyz, p[4u * j + 3u].xyz, uv.x);
+        let r = cubic(p[4u * j], p[4u * j + 1u], p[4u * j + 2u], p[4u * j + 3u], uv.x);
         on_rows[j] = r[0];
         row_a[j] = r[1];
         row_b[j] = r[2];
@@ -70,8 +75,14 @@ fn evaluate_patch(patch_index: u32, uv: vec2<f32>) -> SurfacePoint {
     let v_pass = cubic(on_rows[0], on_rows[1], on_rows[2], on_rows[3], uv.y);
     let ua = cubic(row_a[0], row_a[1], row_a[2], row_a[3], uv.y)[0];
     let ub = cubic(row_b[0], row_b[1], row_b[2], row_b[3], uv.y)[0];
-    let normal = unit_or_zero(cross(ub - ua, v_pass[2] - v_pass[1]));
-    return SurfacePoint(v_pass[0], normal);
+    // Homogeneous: divide, and take the tangents by the quotient rule.
+    let position = v_pass[0].xyz / v_pass[0].w;
+    let du = ub - ua;
+    let dv = v_pass[2] - v_pass[1];
+    let tangent_u = du.xyz - position * du.w;
+    let tangent_v = dv.xyz - position * dv.w;
+    let normal = unit_or_zero(cross(tangent_u, tangent_v));
+    return SurfacePoint(position, normal);
 }
 
 // Index of Q_ijk (k = degree - i - j) in a triangle array of that degree.
