@@ -111,3 +111,13 @@ proptest! {
         prop_assert!(!area(b, b + Vec2::new(3.0, 1.0)).is_empty(), "{b} -> {b} + (3, 1) drew nothing");
     }
 }
+
+/// The fan of the seed's antialiasing comparison, by unweighted area
+/// sampling (the ends at the pixel centres).
+#[testkit::test]
+fn the_fan_of_lines_matches_the_reference_image() {
+    let canvas = common::fan_picture(|from, to, plot| {
+        area_sampling_line(from.centre(), to.centre(), plot);
+    });
+    common::assert_fan("area_sampling_fan", &canvas);
+}

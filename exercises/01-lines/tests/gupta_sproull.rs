@@ -174,3 +174,10 @@ proptest! {
         prop_assert!(sum(gs(from, longer)) > sum(gs(from, to)));
     }
 }
+
+/// The fan of the seed's antialiasing comparison, by Gupta and Sproull.
+#[testkit::test]
+fn the_fan_of_lines_matches_the_reference_image() {
+    let canvas = common::fan_picture(|from, to, plot| gupta_sproull_line(from, to, plot));
+    common::assert_fan("gupta_sproull_fan", &canvas);
+}

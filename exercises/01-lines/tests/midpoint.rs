@@ -141,3 +141,11 @@ proptest! {
         assert_pixels_eq(&expected, &midpoint(from, to), &format!("midpoint_line({from}, {to})"));
     }
 }
+
+/// The fan of the seed's antialiasing comparison, aliased: every pixel of
+/// a line full white (the picture the antialiased ones improve on).
+#[testkit::test]
+fn the_fan_of_lines_matches_the_reference_image() {
+    let canvas = common::fan_picture(|from, to, plot| midpoint_line(from, to, |p| plot(p, 1.0)));
+    common::assert_fan("midpoint_fan", &canvas);
+}

@@ -131,3 +131,10 @@ proptest! {
         prop_assert!(sum(wu(from, longer)) > sum(wu(from, to)));
     }
 }
+
+/// The fan of the seed's antialiasing comparison, by Wu's line.
+#[testkit::test]
+fn the_fan_of_lines_matches_the_reference_image() {
+    let canvas = common::fan_picture(|from, to, plot| wu_line(from, to, plot));
+    common::assert_fan("wu_fan", &canvas);
+}

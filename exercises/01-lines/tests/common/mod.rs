@@ -75,3 +75,54 @@ pub fn one_step_per_column(pixels: &[Pixel], x_major: bool) -> Result<(), String
 
 /// The colour used for aliased test lines.
 pub const INK: Rgba = Rgba::WHITE;
+
+/// Side of the fan pictures.
+pub const FAN_SIDE: u32 = 64;
+
+/// The seed's comparison of antialiasing (slides 002, "Antialiasing"): 24
+/// spokes around the centre of a 64 × 64 canvas, from radius 5 to 29,
+/// their ends rounded to pixel centres.
+pub fn fan() -> Vec<(Pixel, Pixel)> {
+    (0..24)
+        .map(|k| {
+            let angle = f64::from(k) * std::f64::consts::TAU / 24.0;
+            let at = |r: f64| {
+                Pixel::new(
+                    (31.5 + r * angle.cos()).round() as i32,
+                    (31.5 + r * angle.sin()).round() as i32,
+                )
+            };
+            (at(5.0), at(29.0))
+        })
+        .collect()
+}
+
+/// The fan drawn with an antialiasing line, white over black: each
+/// `plot(pixel, intensity)` blends white with that coverage.
+pub fn fan_picture(draw: impl Fn(Pixel, Pixel, &mut dyn FnMut(Pixel, f32))) -> Canvas {
+    let mut canvas = Canvas::new(FAN_SIDE, FAN_SIDE);
+    for (from, to) in fan() {
+        draw(from, to, &mut |p, coverage| {
+            canvas.blend(p, Rgba::WHITE, coverage)
+        });
+    }
+    canvas
+}
+
+/// Pictures of lines may differ in a few pixels where an intensity rounds
+/// the other way (f32 against f64), never in the lines' shape.
+pub const FAN_TOLERANCE: testkit::image::Tolerance = testkit::image::Tolerance {
+    channel: 3.0 / 255.0,
+    mismatched_fraction: 0.01,
+};
+
+/// Compares a fan picture with `tests/images/<name>.png`.
+#[track_caller]
+pub fn assert_fan(name: &str, canvas: &Canvas) {
+    testkit::image::assert_image_matches(
+        name,
+        canvas,
+        format!("{}/tests/images/{name}.png", env!("CARGO_MANIFEST_DIR")),
+        FAN_TOLERANCE,
+    );
+}
