@@ -75,6 +75,22 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
         assert_eq!(buffer.stencil(p), Some(count as u8), "{p:?}");
         assert_eq!(buffer.surface(p), None, "colour writes are off");
     }
+    // The seed's Abbildung 10 ("Tiefenkomplexität"): each pixel's count as
+    // a grey level, 0 black and k white.
+    let mut picture = canvas::Canvas::new(camera.width(), camera.height());
+    for p in camera.pixels() {
+        let count = f32::from(buffer.stencil(p).unwrap_or(0));
+        picture.set(p, canvas::Rgba::grey(count / f32::from(k.max(1))));
+    }
+    testkit::image::assert_image_matches(
+        "layered_depth_complexity",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/layered_depth_complexity.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
 }
 
 #[testkit::test]
