@@ -297,7 +297,7 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         stages: Vec::new(),
         error: None,
     };
-    let output = match run_with_limit(command) {
+    let output = match run_with_limit(command, TIME_LIMIT) {
         Ok(output) => output,
         Err(error) => {
             result.error = Some(format!("{error:#}"));
@@ -305,9 +305,11 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         }
     };
     let stdout = String::from_utf8_lossy(&output.stdout);
+    // The viewer's report, one line a stage: `name  status  (source)`;
+    // anything the stages printed themselves is left out.
     result.stages = stdout
         .lines()
-        .filter(|line| !line.starts_with("wrote "))
+        .filter(|line| is_stage_line(line))
         .map(str::to_owned)
         .collect();
     if output.status.success() && picture.is_file() {
@@ -325,28 +327,117 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     result
 }
 
-/// Runs `command` to its end or [`TIME_LIMIT`].
-fn run_with_limit(mut command: Command) -> Result<std::process::Output> {
+/// Whether `line` is one of the viewer's stage lines (`--screenshot`
+/// prints one per stage: its name, how it fared, and where its code is,
+/// `(04-clipping · …)`).
+fn is_stage_line(line: &str) -> bool {
+    line.ends_with(')') && line.contains("  (") && line.contains(" · ")
+}
+
+/// How much of the viewer's output is kept, per stream: its end, where the
+/// stage report is (a stage that prints while it draws, `println!` for
+/// debugging, can print far more).
+const OUTPUT_KEPT: usize = 64 * 1024;
+
+/// Runs `command` to its end or `limit`, reading its output while it runs
+/// (a pipe nobody reads fills up and stops the writer, which would look
+/// like an endless loop) and keeping the last [`OUTPUT_KEPT`] bytes of each
+/// stream.
+fn run_with_limit(mut command: Command, limit: Duration) -> Result<std::process::Output> {
     let mut child = command.spawn().context("cannot start the viewer")?;
+    let stdout = drain(child.stdout.take());
+    let stderr = drain(child.stderr.take());
     let started = Instant::now();
     loop {
-        if child
-            .try_wait()
-            .context("cannot wait for the viewer")?
-            .is_some()
-        {
-            return child
-                .wait_with_output()
-                .context("cannot read the viewer's output");
+        if let Some(status) = child.try_wait().context("cannot wait for the viewer")? {
+            let collect =
+                |reader: std::thread::JoinHandle<Vec<u8>>| reader.join().unwrap_or_default();
+            return Ok(std::process::Output {
+                status,
+                stdout: collect(stdout),
+                stderr: collect(stderr),
+            });
         }
-        if started.elapsed() > TIME_LIMIT {
+        if started.elapsed() > limit {
             let _ = child.kill();
             let _ = child.wait();
             anyhow::bail!(
                 "the picture took longer than {} s (an endless loop in a stage?)",
-                TIME_LIMIT.as_secs()
+                limit.as_secs_f64()
             );
         }
-        std::thread::sleep(Duration::from_millis(50));
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// Reads `pipe` to its end on a thread of its own; the last
+/// [`OUTPUT_KEPT`] bytes.
+fn drain(pipe: Option<impl std::io::Read + Send + 'static>) -> std::thread::JoinHandle<Vec<u8>> {
+    std::thread::spawn(move || {
+        let mut kept = Vec::new();
+        let Some(mut pipe) = pipe else {
+            return kept;
+        };
+        let mut buffer = [0; 8192];
+        loop {
+            match pipe.read(&mut buffer) {
+                Ok(0) | Err(_) => break,
+                Ok(n) => {
+                    kept.extend_from_slice(&buffer[..n]);
+                    if kept.len() > 2 * OUTPUT_KEPT {
+                        kept.drain(..kept.len() - OUTPUT_KEPT);
+                    }
+                }
+            }
+        }
+        if kept.len() > OUTPUT_KEPT {
+            kept.drain(..kept.len() - OUTPUT_KEPT);
+        }
+        kept
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shell(script: &str) -> Command {
+        let mut command = Command::new("sh");
+        command
+            .args(["-c", script])
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped());
+        command
+    }
+
+    #[test]
+    fn a_picture_that_never_ends_is_stopped_at_the_limit() {
+        let started = Instant::now();
+        let error = run_with_limit(shell("while :; do :; done"), Duration::from_millis(300))
+            .unwrap_err()
+            .to_string();
+        assert!(error.contains("took longer"), "{error}");
+        assert!(started.elapsed() < Duration::from_secs(10));
+    }
+
+    /// A stage that prints while it draws (println! for debugging) must
+    /// not look like an endless loop: a pipe nobody read would fill after
+    /// 64 KiB and stop the viewer until the limit.
+    #[test]
+    fn a_stage_that_prints_a_lot_still_finishes_and_its_report_is_kept() {
+        let script = "head -c 3000000 /dev/zero | tr '\\\\0' 'x'; echo; \
+                      echo 'lines      ok  (01-lines · dda::dda_line)'; \
+                      head -c 300000 /dev/zero >&2";
+        let output = run_with_limit(shell(script), Duration::from_secs(20)).unwrap();
+        assert!(output.status.success());
+        assert!(output.stdout.len() <= OUTPUT_KEPT && output.stderr.len() <= OUTPUT_KEPT);
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        let stages: Vec<&str> = stdout.lines().filter(|l| is_stage_line(l)).collect();
+        assert_eq!(stages, ["lines      ok  (01-lines · dda::dda_line)"]);
+        assert!(
+            !is_stage_line("(x, y) = (1, 2)"),
+            "a student's print is not a stage line"
+        );
     }
 }
