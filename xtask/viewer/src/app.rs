@@ -56,7 +56,7 @@ struct Playground {
     /// The handle being dragged.
     dragging: Option<usize>,
     /// Each primitive's handles, kept while another one is shown.
-    handles: [[glam::Vec2; 3]; 4],
+    handles: [[glam::Vec2; 3]; 5],
     /// The primitive whose handles `setup` holds.
     primitive: Primitive,
     /// Where the grid was last drawn: its top-left corner and the size of
@@ -782,7 +782,7 @@ impl ViewerApp {
         let ideal = egui::Stroke::new(2.0, IDEAL);
         let h = setup.handles;
         match setup.primitive {
-            Primitive::DdaLine | Primitive::MidpointLine => {
+            Primitive::DdaLine | Primitive::MidpointLine | Primitive::WuLine => {
                 painter.line_segment([to_screen(h[0]), to_screen(h[1])], ideal);
             }
             Primitive::Circle => {

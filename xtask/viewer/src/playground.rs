@@ -9,10 +9,11 @@
 //! |---|---|---|
 //! | DDA line | `01-lines` `dda::dda_line` | the pixel nearest the ideal line in each column of the major axis (at a tie either) |
 //! | midpoint line | `01-lines` `midpoint::midpoint_line` | the same pixels |
+//! | Wu line | `01-lines` `wu::wu_line` | in each column of the major axis the two pixels that straddle the ideal line, weighted by nearness (one pixel at the ends) |
 //! | midpoint circle | `02-circles` `midpoint_circle::midpoint_circle` | the second octant's nearest rows, mirrored |
 //! | triangle | `03-fill` `edge_function::fill_triangle` | centres inside, by the top-left rule on the 1/256-pixel grid |
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 use canvas::{Fragment, Pixel, Rgba, Vec2, Vertex, Viewport};
 use testkit::definitions;
@@ -31,6 +32,9 @@ pub enum Primitive {
     DdaLine,
     /// `01-lines`: `midpoint::midpoint_line`.
     MidpointLine,
+    /// `01-lines`: `wu::wu_line`, an antialiased line: each pixel with its
+    /// intensity.
+    WuLine,
     /// `02-circles`: `midpoint_circle::midpoint_circle`.
     Circle,
     /// `03-fill`: `edge_function::fill_triangle`, with colour interpolated.
@@ -39,9 +43,10 @@ pub enum Primitive {
 
 impl Primitive {
     /// Every primitive, in course order.
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::DdaLine,
         Self::MidpointLine,
+        Self::WuLine,
         Self::Circle,
         Self::Triangle,
     ];
@@ -52,6 +57,7 @@ impl Primitive {
         match self {
             Self::DdaLine => "DDA line (01)",
             Self::MidpointLine => "Midpoint line (01)",
+            Self::WuLine => "Wu's antialiased line (01)",
             Self::Circle => "Midpoint circle (02)",
             Self::Triangle => "Edge-function triangle (03)",
         }
@@ -83,6 +89,7 @@ impl Primitive {
         let (name, source) = match self {
             Self::DdaLine => (stages.line.name, stages.line.source),
             Self::MidpointLine => (stages.midpoint.name, stages.midpoint.source),
+            Self::WuLine => (stages.wu.name, stages.wu.source),
             Self::Circle => (stages.circle.name, stages.circle.source),
             Self::Triangle => (stages.fill.name, stages.fill.source),
         };
@@ -120,7 +127,7 @@ impl Primitive {
     #[must_use]
     pub fn first_handles(self) -> [Vec2; 3] {
         match self {
-            Self::DdaLine | Self::MidpointLine => [
+            Self::DdaLine | Self::MidpointLine | Self::WuLine => [
                 Vec2::new(2.0, 3.0),
                 Vec2::new(13.0, 8.0),
                 Vec2::new(5.0, 13.0),
@@ -192,8 +199,11 @@ impl Setup {
 pub struct Step {
     /// The pixel.
     pub pixel: Pixel,
-    /// Its colour, where your code interpolates one (DDA, triangle).
+    /// Its colour, where your code interpolates one (DDA, triangle), or
+    /// its intensity as a grey (an antialiased line).
     pub colour: Option<Rgba>,
+    /// Its intensity, for an antialiased line.
+    pub intensity: Option<f32>,
     /// What decided it, in one line.
     pub note: String,
 }
@@ -225,6 +235,9 @@ pub struct Drawing {
     pub yours: Vec<Step>,
     /// The pixels of the definition, on the grid.
     pub expected: BTreeSet<Pixel>,
+    /// The definition's intensity of each of its pixels, for an
+    /// antialiased line (empty otherwise).
+    pub expected_intensity: BTreeMap<Pixel, f32>,
 }
 
 impl Drawing {
@@ -279,7 +292,26 @@ impl Drawing {
         if twice > 0 {
             text.push_str(&format!("; {twice} plotted more than once"));
         }
+        if let Some(off) = self.intensity_error() {
+            text.push_str(&format!(
+                "; intensities within {off:.3} of the definition's"
+            ));
+        }
         text
+    }
+
+    /// For an antialiased line, the largest difference between an
+    /// intensity you plotted and the definition's for that pixel.
+    #[must_use]
+    pub fn intensity_error(&self) -> Option<f32> {
+        if self.expected_intensity.is_empty() {
+            return None;
+        }
+        self.yours
+            .iter()
+            .filter_map(|s| Some((s.intensity?, *self.expected_intensity.get(&s.pixel)?)))
+            .map(|(yours, expected)| (yours - expected).abs())
+            .reduce(f32::max)
     }
 }
 
@@ -321,6 +353,7 @@ fn collect<T, F: ?Sized>(
 pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
     let viewport = setup.viewport();
     let size = setup.size;
+    let mut expected_intensity = BTreeMap::new();
     let (status, yours, expected): (Status, Vec<Step>, Vec<Pixel>) = match setup.primitive {
         Primitive::DdaLine => {
             let (from, to) = (setup.pixel(0), setup.pixel(1));
@@ -340,6 +373,7 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
                     Step {
                         pixel: f.pixel,
                         colour: Some(f.colour),
+                        intensity: None,
                         note,
                     }
                 })
@@ -366,6 +400,23 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
             let steps = uncoloured(pixels, |p| line_note(from, to, p));
             (status, steps, definitions::line_pixels(from, to, None))
         }
+        Primitive::WuLine => {
+            let (from, to) = (setup.pixel(0), setup.pixel(1));
+            let (status, plotted) = collect(&stages.wu, size, |run, plot| {
+                run(from, to, &mut |p: Pixel, c: f32| plot((p, c)));
+            });
+            expected_intensity = wu_definition(from, to).into_iter().collect();
+            let steps = plotted
+                .into_iter()
+                .map(|(pixel, c)| Step {
+                    pixel,
+                    colour: Some(Rgba::grey(c.clamp(0.0, 1.0))),
+                    intensity: Some(c),
+                    note: wu_note(from, to, pixel, c, expected_intensity.get(&pixel)),
+                })
+                .collect();
+            (status, steps, expected_intensity.keys().copied().collect())
+        }
         Primitive::Circle => {
             let (centre, radius) = (setup.pixel(0), setup.radius());
             let (status, pixels) =
@@ -391,6 +442,7 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
                 .map(|(f, w)| Step {
                     pixel: f.pixel,
                     colour: Some(f.colour),
+                    intensity: None,
                     note: triangle_note(f.pixel, w),
                 })
                 .collect();
@@ -411,7 +463,63 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
             .into_iter()
             .filter(|p| viewport.contains(*p))
             .collect(),
+        expected_intensity,
     }
+}
+
+/// Wu's line by its definition (task 5c of `01-lines`): the first and
+/// last pixels full; in each column of the major axis between them, the
+/// ideal line crosses the minor axis at `j + f` (counted from `from`
+/// towards `to`), and pixel `j` gets `1 − f`, pixel `j + 1` gets `f`.
+/// Axis-parallel and diagonal lines are one pixel per column, full.
+#[must_use]
+pub fn wu_definition(from: Pixel, to: Pixel) -> Vec<(Pixel, f32)> {
+    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
+    let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
+    let x_major = dx.abs() >= dy.abs();
+    let (long, short) = if x_major {
+        (dx.abs(), dy.abs())
+    } else {
+        (dy.abs(), dx.abs())
+    };
+    #[allow(clippy::cast_possible_truncation)] // within the grid
+    let pixel = |i: i64, j: i64| {
+        if x_major {
+            Pixel::new(from.x + (sx * i) as i32, from.y + (sy * j) as i32)
+        } else {
+            Pixel::new(from.x + (sx * j) as i32, from.y + (sy * i) as i32)
+        }
+    };
+    let mut pixels = vec![(from, 1.0)];
+    if long == 0 {
+        return pixels;
+    }
+    for i in 1..long {
+        if short == 0 || short == long {
+            pixels.push((pixel(i, if short == 0 { 0 } else { i }), 1.0));
+        } else {
+            let (j, rest) = ((i * short) / long, (i * short) % long);
+            #[allow(clippy::cast_precision_loss)] // small
+            let f = rest as f32 / long as f32;
+            pixels.push((pixel(i, j), 1.0 - f));
+            pixels.push((pixel(i, j + 1), f));
+        }
+    }
+    pixels.push((to, 1.0));
+    pixels
+}
+
+/// What decides a pixel of Wu's line: the intensity you gave it, and the
+/// definition's.
+fn wu_note(from: Pixel, to: Pixel, p: Pixel, yours: f32, expected: Option<&f32>) -> String {
+    let definition = expected.map_or_else(
+        || "not a pixel of the definition".to_owned(),
+        |e| format!("the definition's {e:.3}"),
+    );
+    format!(
+        "intensity {yours:.3}, {definition}; {}",
+        line_note(from, to, p)
+    )
 }
 
 /// The steps of code that plots pixels without a colour, each with its
@@ -422,6 +530,7 @@ fn uncoloured(pixels: Vec<Pixel>, note: impl Fn(Pixel) -> String) -> Vec<Step> {
         .map(|pixel| Step {
             pixel,
             colour: None,
+            intensity: None,
             note: note(pixel),
         })
         .collect()

@@ -10,7 +10,7 @@
 //! | depth test | `05-buffers`: `zbuffer::depth_test` with OpenGL's defaults (`LESS`, writes on) |
 //!
 //! and, for the pixel playground, `01-lines`' `midpoint::midpoint_line`
-//! and `02-circles`' `midpoint_circle::midpoint_circle`; for the curve
+//! and `wu::wu_line` and `02-circles`' `midpoint_circle::midpoint_circle`; for the curve
 //! scene, `07-bezier`'s `de_casteljau::de_casteljau`.
 //!
 //! A topic that does not compile is left out of the build (`cargo xtask
@@ -30,6 +30,9 @@ pub type FillStage =
     dyn Fn([Vertex; 3], Viewport, &mut dyn FnMut(Fragment, [i128; 3])) + Send + Sync;
 /// Draws a line between two pixels: `(from, to, plot)`.
 pub type PixelLineStage = dyn Fn(Pixel, Pixel, &mut dyn FnMut(Pixel)) + Send + Sync;
+/// Draws an antialiased line between two pixels: `(from, to, plot)`, each
+/// pixel with its intensity.
+pub type AaLineStage = dyn Fn(Pixel, Pixel, &mut dyn FnMut(Pixel, f32)) + Send + Sync;
 /// Draws a circle: `(centre, radius, plot)`.
 pub type CircleStage = dyn Fn(Pixel, i32, &mut dyn FnMut(Pixel)) + Send + Sync;
 /// Clips a polygon in clip space against the view volume.
@@ -73,6 +76,8 @@ pub struct Stages {
     pub depth: Stage<DepthStage>,
     /// The midpoint line (the playground).
     pub midpoint: Stage<PixelLineStage>,
+    /// Wu's antialiased line (the playground).
+    pub wu: Stage<AaLineStage>,
     /// The midpoint circle (the playground).
     pub circle: Stage<CircleStage>,
     /// De Casteljau's algorithm (the curve scene).
@@ -106,6 +111,11 @@ impl Default for Stages {
             midpoint: Stage {
                 name: "midpoint line",
                 source: "01-lines · midpoint::midpoint_line",
+                run: None,
+            },
+            wu: Stage {
+                name: "Wu line",
+                source: "01-lines · wu::wu_line",
                 run: None,
             },
             circle: Stage {
@@ -146,6 +156,11 @@ impl Stages {
             stages.midpoint.run = Some(Arc::new(
                 |from: Pixel, to: Pixel, plot: &mut dyn FnMut(Pixel)| {
                     lines::midpoint::midpoint_line(from, to, plot);
+                },
+            ));
+            stages.wu.run = Some(Arc::new(
+                |from: Pixel, to: Pixel, plot: &mut dyn FnMut(Pixel, f32)| {
+                    lines::wu::wu_line(from, to, plot);
                 },
             ));
         }

@@ -63,7 +63,48 @@ fn the_solutions_draw_every_primitive_as_defined() {
             drawing.yours.iter().all(|s| !s.note.is_empty()),
             "{setup:?}"
         );
+        if setup.primitive == Primitive::WuLine {
+            // The solution keeps 8 bits of each intensity, as Wu did.
+            let off = drawing.intensity_error().unwrap();
+            assert!(
+                off <= 1.0 / 256.0 + 1e-6,
+                "{setup:?}: intensities off by {off}"
+            );
+        }
     }
+}
+
+#[test]
+fn an_aliased_line_in_place_of_wus_shows_its_wrong_intensities() {
+    let mut stages = Stages::yours();
+    // The midpoint line's pixels at full intensity: no antialiasing.
+    stages.wu.run = Some(Arc::new(
+        |from: Pixel, to: Pixel, plot: &mut dyn FnMut(Pixel, f32)| {
+            lines::midpoint::midpoint_line(from, to, |p| plot(p, 1.0));
+        },
+    ));
+    let setup = Setup {
+        primitive: Primitive::WuLine,
+        ..Setup::default()
+    };
+    let drawing = draw(&setup, &stages);
+    assert_eq!(drawing.status, Status::Ok);
+    assert!(
+        drawing.intensity_error().unwrap() > 0.4,
+        "{}",
+        drawing.summary()
+    );
+    assert!(
+        drawing.summary().contains("missing (-)"),
+        "the far pixel of each column is missing: {}",
+        drawing.summary()
+    );
+    let step = &drawing.yours[1];
+    assert!(
+        step.note.starts_with("intensity 1.000, the definition's"),
+        "{}",
+        step.note
+    );
 }
 
 #[test]

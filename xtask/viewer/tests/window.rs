@@ -396,3 +396,28 @@ fn a_de_casteljau_at_todo_is_named_in_the_curve_scene() {
     assert!(drawing.yours.is_empty() && drawing.deviation.is_none());
     assert_eq!(drawing.levels.len(), 1, "only the control points show");
 }
+
+#[test]
+fn wus_line_shows_each_pixels_intensity_beside_the_definitions() {
+    let mut harness = harness(Stages::yours());
+    harness.state_mut().set_scene(course_viewer::Scene::Pixels);
+    harness.state_mut().playground_mut().primitive = course_viewer::playground::Primitive::WuLine;
+    harness.run_steps(2);
+    settle_pixels(&mut harness);
+    harness.get_by_label("Wu line: ok");
+    let drawing = harness.state().drawing().unwrap().clone();
+    let summary = drawing.summary();
+    assert!(
+        summary.starts_with("all ") && summary.contains("intensities within 0.00"),
+        "{summary}"
+    );
+    harness.get_by_label(&summary);
+    let last = drawing.yours.last().unwrap();
+    assert!(
+        last.note
+            .starts_with("intensity 1.000, the definition's 1.000"),
+        "{}",
+        last.note
+    );
+    harness.snapshot("viewer_pixels_wu");
+}
