@@ -41,10 +41,10 @@
 use glam::{DVec2, DVec3};
 
 #[allow(unused_imports)]
-use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
+use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
-use crate::patch_grid::PatchGrid;
+use crate::patch_grid::{GridPatch, PatchGrid};
 #[allow(unused_imports)]
 use freeform::stitch;
 
@@ -75,12 +75,14 @@ pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessEr
 /// The resolution `[n_u, n_v]` of a patch: the bound of [`curve_segments`]
 /// per direction, with `M` the largest second difference along `u` (over
 /// all control columns) or along `v` (over all control rows), each at
-/// least [`MIN_INNER_SEGMENTS`] and at most [`MAX_SEGMENTS`].
+/// least [`MIN_INNER_SEGMENTS`] and at most [`MAX_SEGMENTS`]. For a
+/// rational patch the control points (not weighted) stand in for the
+/// polygon ([`GridPatch`]): an estimate.
 ///
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
-pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
+pub fn patch_resolution(patch: &impl GridPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
     // Unused until you write the body:
     let _ = (&patch, &tolerance);
     todo!("per_patch: the curve bound along the columns (u) and rows (v)")
@@ -99,11 +101,16 @@ pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2
 /// (normals of neighbours agree only if the surface is smooth there).
 /// Parameters in the mesh are global (patch `(r, c)` covers
 /// `[c, c + 1] × [r, r + 1]`); triangles are counter-clockwise in them.
+/// The patches may be Bézier or rational ones (a NURBS surface split into
+/// its patches): the construction is the same.
 ///
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
-pub fn tessellate_patch_grid(grid: &PatchGrid, tolerance: f64) -> Result<Mesh, TessError> {
+pub fn tessellate_patch_grid(
+    grid: &PatchGrid<impl GridPatch>,
+    tolerance: f64,
+) -> Result<Mesh, TessError> {
     // Unused until you write the body:
     let _ = (&grid, &tolerance);
     todo!("per_patch: share corners and boundary-curve points, then grid + zipped ring per patch")

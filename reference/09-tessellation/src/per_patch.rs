@@ -39,10 +39,10 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::bezier::{BezierPatch, Evaluate, SurfacePoint};
+use crate::bezier::SurfacePoint;
 use crate::error::TessError;
 use crate::mesh::Mesh;
-use crate::patch_grid::PatchGrid;
+use crate::patch_grid::{GridPatch, PatchGrid};
 use freeform::stitch;
 
 /// The most segments a curve or a patch direction gets, however curved.
@@ -82,12 +82,14 @@ pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessEr
 /// The resolution `[n_u, n_v]` of a patch: the bound of [`curve_segments`]
 /// per direction, with `M` the largest second difference along `u` (over
 /// all control columns) or along `v` (over all control rows), each at
-/// least [`MIN_INNER_SEGMENTS`] and at most [`MAX_SEGMENTS`].
+/// least [`MIN_INNER_SEGMENTS`] and at most [`MAX_SEGMENTS`]. For a
+/// rational patch the control points (not weighted) stand in for the
+/// polygon ([`GridPatch`]): an estimate.
 ///
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
-pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
+pub fn patch_resolution(patch: &impl GridPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
     // BEGIN SOLUTION per_patch: the curve bound along the columns (u) and rows (v)
     check_tolerance(tolerance)?;
     let largest = |polygons: Vec<Vec<DVec3>>| {
@@ -96,15 +98,12 @@ pub fn patch_resolution(patch: &BezierPatch, tolerance: f64) -> Result<[usize; 2
             .flat_map(|p| p.windows(3).map(|w| (w[2] - 2.0 * w[1] + w[0]).length()))
             .fold(0.0, f64::max)
     };
-    let m_u = largest((0..=patch.degree_v()).map(|j| patch.column(j)).collect());
-    let m_v = largest(
-        (0..=patch.degree_u())
-            .map(|i| patch.row(i).to_vec())
-            .collect(),
-    );
+    let (p, q) = patch.degrees();
+    let m_u = largest((0..=q).map(|j| patch.control_column(j)).collect());
+    let m_v = largest((0..=p).map(|i| patch.control_row(i)).collect());
     Ok([
-        segments(patch.degree_u(), m_u, tolerance).max(MIN_INNER_SEGMENTS),
-        segments(patch.degree_v(), m_v, tolerance).max(MIN_INNER_SEGMENTS),
+        segments(p, m_u, tolerance).max(MIN_INNER_SEGMENTS),
+        segments(q, m_v, tolerance).max(MIN_INNER_SEGMENTS),
     ])
     // END SOLUTION
 }
@@ -139,7 +138,7 @@ fn check_tolerance(tolerance: f64) -> Result<(), TessError> {
 
 /// A point of patch `(row, col)` at local parameters `local`, with its
 /// global parameters `(col + u, row + v)`.
-fn sample(grid: &PatchGrid, row: usize, col: usize, local: DVec2) -> SurfacePoint {
+fn sample(grid: &PatchGrid<impl GridPatch>, row: usize, col: usize, local: DVec2) -> SurfacePoint {
     let point = grid.patch(row, col).sample(local);
     SurfacePoint {
         uv: local + DVec2::new(col as f64, row as f64),
@@ -168,11 +167,16 @@ fn steps(k: usize) -> Vec<f64> {
 /// (normals of neighbours agree only if the surface is smooth there).
 /// Parameters in the mesh are global (patch `(r, c)` covers
 /// `[c, c + 1] × [r, r + 1]`); triangles are counter-clockwise in them.
+/// The patches may be Bézier or rational ones (a NURBS surface split into
+/// its patches): the construction is the same.
 ///
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
-pub fn tessellate_patch_grid(grid: &PatchGrid, tolerance: f64) -> Result<Mesh, TessError> {
+pub fn tessellate_patch_grid(
+    grid: &PatchGrid<impl GridPatch>,
+    tolerance: f64,
+) -> Result<Mesh, TessError> {
     // BEGIN SOLUTION per_patch: share corners and boundary-curve points, then grid + zipped ring per patch
     check_tolerance(tolerance)?;
     let (rows, cols) = (grid.rows(), grid.cols());
