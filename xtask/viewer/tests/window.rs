@@ -225,7 +225,9 @@ fn drag_the_line_end(harness: &mut Harness<'static, ViewerApp>, pause: Duration)
             .events
             .push(egui::Event::PointerMoved(from + (to - from) * t));
         harness.run_steps(1);
-        std::thread::sleep(pause);
+        // A hand takes a moment between two positions; moves within one
+        // frame of each other were lost now and then on a loaded machine.
+        std::thread::sleep(pause.max(Duration::from_millis(20)));
         harness.run_steps(1);
     }
     harness.input_mut().events.push(egui::Event::PointerButton {
@@ -354,7 +356,9 @@ fn dragging_a_control_point_reshapes_the_curve() {
             .input_mut()
             .events
             .push(egui::Event::PointerMoved(from + (to - from) * t));
-        harness.run_steps(2);
+        harness.run_steps(1);
+        std::thread::sleep(Duration::from_millis(20));
+        harness.run_steps(1);
     }
     harness.input_mut().events.push(egui::Event::PointerButton {
         pos: to,
