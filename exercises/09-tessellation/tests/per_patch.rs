@@ -250,6 +250,11 @@ fn a_nurbs_torus_is_tessellated_per_patch_without_a_crack() {
     let (major, minor) = (2.0, 0.6);
     let grid = PatchGrid::torus(major, minor);
     let mesh = tessellate_patch_grid(&grid, 0.01).unwrap();
+    assert!(
+        mesh.triangle_count() >= 16 * 8,
+        "16 patches of at least 2 × 2 cells: {} triangles",
+        mesh.triangle_count()
+    );
     for (k, p) in mesh.positions.iter().enumerate() {
         let off = ((p.x.hypot(p.y) - major).hypot(p.z) - minor).abs();
         assert!(off < 1e-9, "vertex {k} at {p} is {off} off the torus");
