@@ -3,8 +3,9 @@
 mod common;
 
 use common::{
-    POSITION_TOLERANCE, SEED_VIEW, assert_picture, assert_tiles_rectangle, bernstein_surface,
-    max_deviation, patch_from, sample_grid, unit_plane,
+    POSITION_TOLERANCE, SEED_VIEW, TORUS_MAJOR, TORUS_MINOR, assert_picture,
+    assert_tiles_rectangle, bernstein_surface, max_deviation, patch_from, sample_grid,
+    torus_distance_and_normal, unit_plane,
 };
 use tessellation::bezier::{BezierPatch, Evaluate, RationalPatch, SurfacePoint};
 use tessellation::edge_tests::{
@@ -418,8 +419,7 @@ fn table_of_triangle_counts() {
 /// torus (`RationalPatch::torus`), every vertex new or old on the torus.
 #[testkit::test]
 fn a_rational_patch_is_refined_onto_its_surface() {
-    let (major, minor) = (2.0, 0.6);
-    let patch = &RationalPatch::torus(major, minor)[5];
+    let patch = &RationalPatch::torus(TORUS_MAJOR, TORUS_MINOR)[5];
     let initial = sample_grid(patch, 5);
     let mesh = refine(patch, &initial, EdgeTest::OneEdgeNormal { t1: 0.1 }, 3).unwrap();
     assert!(
@@ -428,8 +428,8 @@ fn a_rational_patch_is_refined_onto_its_surface() {
         mesh.triangle_count(),
         initial.triangle_count()
     );
-    for (k, p) in mesh.positions.iter().enumerate() {
-        let off = ((p.x.hypot(p.y) - major).hypot(p.z) - minor).abs();
+    for (k, &p) in mesh.positions.iter().enumerate() {
+        let (off, _) = torus_distance_and_normal(p);
         assert!(
             off < 1e-9,
             "vertex {k} at {p} is {off} off the torus: sample the new vertices on the patch"

@@ -3,7 +3,8 @@
 mod common;
 
 use common::{
-    POSITION_TOLERANCE, assert_picture, assert_tiles_rectangle, bernstein_surface, patch_from,
+    POSITION_TOLERANCE, TORUS_MAJOR, TORUS_MINOR, assert_picture, assert_tiles_rectangle,
+    bernstein_surface, closed_after_welding, patch_from, torus_distance_and_normal,
 };
 use proptest::prelude::*;
 use tessellation::bezier::{BezierPatch, curve};
@@ -247,47 +248,18 @@ fn example_surface_matches_the_reference_image() {
 /// grid's outer curves meet where the torus closes) with V − E + F = 0.
 #[testkit::test]
 fn a_nurbs_torus_is_tessellated_per_patch_without_a_crack() {
-    let (major, minor) = (2.0, 0.6);
-    let grid = PatchGrid::torus(major, minor);
+    let grid = PatchGrid::torus(TORUS_MAJOR, TORUS_MINOR);
     let mesh = tessellate_patch_grid(&grid, 0.01).unwrap();
     assert!(
         mesh.triangle_count() >= 16 * 8,
         "16 patches of at least 2 × 2 cells: {} triangles",
         mesh.triangle_count()
     );
-    for (k, p) in mesh.positions.iter().enumerate() {
-        let off = ((p.x.hypot(p.y) - major).hypot(p.z) - minor).abs();
+    for (k, &p) in mesh.positions.iter().enumerate() {
+        let (off, _) = torus_distance_and_normal(p);
         assert!(off < 1e-9, "vertex {k} at {p} is {off} off the torus");
     }
-    let key = |p: DVec3| (p * 1e7).round().as_i64vec3().to_array();
-    let mut welded = std::collections::HashMap::new();
-    let index: Vec<usize> = mesh
-        .positions
-        .iter()
-        .map(|&p| {
-            let next = welded.len();
-            *welded.entry(key(p)).or_insert(next)
-        })
-        .collect();
-    let mut edges = std::collections::HashMap::new();
-    for t in &mesh.triangles {
-        for k in 0..3 {
-            let (a, b) = (index[t[k] as usize], index[t[(k + 1) % 3] as usize]);
-            *edges.entry((a, b)).or_insert(0) += 1;
-        }
-    }
-    for (&(a, b), &count) in &edges {
-        assert_eq!(
-            (count, edges.get(&(b, a)).copied()),
-            (1, Some(1)),
-            "the edge {a}→{b} is not shared by exactly two triangles"
-        );
-    }
-    let (v, e, f) = (
-        welded.len() as i64,
-        edges.len() as i64 / 2,
-        mesh.triangle_count() as i64,
-    );
+    let (v, e, f) = closed_after_welding(&mesh);
     assert_eq!(v - e + f, 0, "V − E + F of the welded torus");
 }
 

@@ -3,8 +3,9 @@
 mod common;
 
 use common::{
-    POSITION_TOLERANCE, SEED_VIEW, assert_picture, assert_tiles_rectangle, bernstein_surface,
-    patch_from, unit_plane,
+    POSITION_TOLERANCE, SEED_VIEW, TORUS_MAJOR, TORUS_MINOR, append, assert_picture,
+    assert_tiles_rectangle, bernstein_surface, closed_after_welding, patch_from,
+    torus_distance_and_normal, unit_plane,
 };
 use proptest::prelude::*;
 use tessellation::bezier::{BezierPatch, MAX_RESOLUTION, RationalPatch};
@@ -197,13 +198,10 @@ fn multi_patch_surface_matches_the_reference_image() {
     let mut all = tessellation::mesh::Mesh::new();
     for row in 0..grid.rows() {
         for col in 0..grid.cols() {
-            let part = tessellate_uniform(grid.patch(row, col), 8, 8).unwrap();
-            let offset = all.vertex_count() as u32;
-            all.positions.extend(&part.positions);
-            all.normals.extend(&part.normals);
-            all.uvs.extend(&part.uvs);
-            all.triangles
-                .extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+            append(
+                &mut all,
+                &tessellate_uniform(grid.patch(row, col), 8, 8).unwrap(),
+            );
         }
     }
     let view = tessellation::render::View {
@@ -217,28 +215,11 @@ fn multi_patch_surface_matches_the_reference_image() {
 // A NURBS surface through the tessellation: the torus as the 16 rational
 // biquadratic patches its NURBS form splits into (`RationalPatch::torus`).
 
-const MAJOR: f64 = 2.0;
-const MINOR: f64 = 0.6;
-
-/// How far `p` lies from the torus, and the torus's outward unit normal
-/// nearest to it: the direction from the tube's centre circle.
-fn torus_distance_and_normal(p: DVec3) -> (f64, DVec3) {
-    let centre = MAJOR * DVec3::new(p.x, p.y, 0.0).normalize();
-    let off = p - centre;
-    ((off.length() - MINOR).abs(), off.normalize())
-}
-
 /// Every torus patch tessellated uniformly at `n × n`, the meshes appended.
 fn torus_mesh(n: usize) -> Mesh {
     let mut all = Mesh::new();
-    for patch in RationalPatch::torus(MAJOR, MINOR) {
-        let part = tessellate_uniform(&patch, n, n).unwrap();
-        let offset = all.vertex_count() as u32;
-        all.positions.extend(&part.positions);
-        all.normals.extend(&part.normals);
-        all.uvs.extend(&part.uvs);
-        all.triangles
-            .extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+    for patch in RationalPatch::torus(TORUS_MAJOR, TORUS_MINOR) {
+        append(&mut all, &tessellate_uniform(&patch, n, n).unwrap());
     }
     all
 }
@@ -261,41 +242,13 @@ fn a_rational_torus_tessellates_onto_the_torus() {
     }
 }
 
-/// The 16 patches meet without a crack: welded where positions agree to
-/// 1e-7, the mesh is closed (every edge has exactly two triangles, on
+/// The 16 patches meet without a crack: welded where positions agree
+/// (`closed_after_welding`), the mesh is closed (every edge has exactly two triangles, on
 /// opposite sides) and has the Euler characteristic of a torus, 0.
 #[testkit::test]
 fn the_torus_patches_meet_without_a_crack() {
     let mesh = torus_mesh(5);
-    let key = |p: DVec3| (p * 1e7).round().as_i64vec3().to_array();
-    let mut welded = std::collections::HashMap::new();
-    let index: Vec<usize> = mesh
-        .positions
-        .iter()
-        .map(|&p| {
-            let next = welded.len();
-            *welded.entry(key(p)).or_insert(next)
-        })
-        .collect();
-    let mut edges = std::collections::HashMap::new();
-    for t in &mesh.triangles {
-        for k in 0..3 {
-            let (a, b) = (index[t[k] as usize], index[t[(k + 1) % 3] as usize]);
-            *edges.entry((a, b)).or_insert(0) += 1;
-        }
-    }
-    for (&(a, b), &count) in &edges {
-        assert_eq!(
-            (count, edges.get(&(b, a)).copied()),
-            (1, Some(1)),
-            "the edge {a}→{b} is not shared by exactly two triangles: a crack or a fold"
-        );
-    }
-    let (v, e, f) = (
-        welded.len() as i64,
-        edges.len() as i64 / 2,
-        mesh.triangle_count() as i64,
-    );
+    let (v, e, f) = closed_after_welding(&mesh);
     assert_eq!(v - e + f, 0, "V − E + F of the welded torus");
     assert_eq!(v, 16 * 25, "5 × 5 cells per patch, boundaries shared");
 }

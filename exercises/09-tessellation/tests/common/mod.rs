@@ -182,3 +182,61 @@ pub const SEED_VIEW: View = View {
     yaw: 2.4,
     pitch: -1.0,
 };
+
+/// `part` appended to `all`, its indices moved past `all`'s vertices.
+pub fn append(all: &mut Mesh, part: &Mesh) {
+    let offset = all.vertex_count() as u32;
+    all.positions.extend(&part.positions);
+    all.normals.extend(&part.normals);
+    all.uvs.extend(&part.uvs);
+    all.triangles
+        .extend(part.triangles.iter().map(|t| t.map(|i| i + offset)));
+}
+
+/// The torus of the rational-patch tests,
+/// `RationalPatch::torus(TORUS_MAJOR, TORUS_MINOR)`.
+pub const TORUS_MAJOR: f64 = 2.0;
+/// See [`TORUS_MAJOR`].
+pub const TORUS_MINOR: f64 = 0.6;
+
+/// How far `p` lies from that torus, and the torus's outward unit normal
+/// nearest to it: the direction from the tube's centre circle.
+pub fn torus_distance_and_normal(p: DVec3) -> (f64, DVec3) {
+    let centre = TORUS_MAJOR * DVec3::new(p.x, p.y, 0.0).normalize();
+    let off = p - centre;
+    ((off.length() - TORUS_MINOR).abs(), off.normalize())
+}
+
+/// Welds the vertices of `mesh` whose positions agree to 1e-7 and checks
+/// that the result is closed: every edge has exactly two triangles, on
+/// opposite sides. Returns `(V, E, F)` of the welded mesh.
+pub fn closed_after_welding(mesh: &Mesh) -> (i64, i64, i64) {
+    let key = |p: DVec3| (p * 1e7).round().as_i64vec3().to_array();
+    let mut welded = HashMap::new();
+    let index: Vec<u32> = mesh
+        .positions
+        .iter()
+        .map(|&p| {
+            let next = welded.len() as u32;
+            *welded.entry(key(p)).or_insert(next)
+        })
+        .collect();
+    let triangles: Vec<[u32; 3]> = mesh
+        .triangles
+        .iter()
+        .map(|t| t.map(|i| index[i as usize]))
+        .collect();
+    let edges = directed_edges(&triangles);
+    for (&(a, b), &count) in &edges {
+        assert_eq!(
+            (count, edges.get(&(b, a)).copied()),
+            (1, Some(1)),
+            "the edge {a}→{b} is not shared by exactly two triangles: a crack or a fold"
+        );
+    }
+    (
+        welded.len() as i64,
+        edges.len() as i64 / 2,
+        mesh.triangle_count() as i64,
+    )
+}
