@@ -11,6 +11,12 @@ use canvas::{Canvas, Pixel, Rgba, Vertex};
 use common::vertex;
 use proptest::prelude::*;
 
+/// The seed's second remedy, the negative of its `factor = units = 1`.
+const PULL: PolygonOffset = PolygonOffset {
+    factor: -1.0,
+    units: -1.0,
+};
+
 const STYLE: HiddenLineStyle = HiddenLineStyle {
     fill: Rgba::BLACK,
     line: Rgba::WHITE,
@@ -215,48 +221,46 @@ fn fill_depth_pulled_past_zero_is_clamped() {
     assert!(checked > 20);
 }
 
-#[testkit::test]
-fn edges_behind_another_triangle_stay_hidden() {
-    // A near, flat triangle (depth 0.1) in front of the tilted one: the
-    // offset must not pull the back triangle's edges through it.
+/// Draws the tilted triangle behind a near, flat one (depth 0.1) with
+/// `offset` and checks that no remedy pulls the back triangle's edges
+/// through the front one, while its edges outside it are all drawn.
+fn assert_the_front_triangle_hides_the_edges_behind(offset: HiddenLineOffset) {
     let front = [
         grey(0.0, 4.0, 0.1),
         grey(12.0, 4.0, 0.1),
         grey(6.0, 12.0, 0.1),
     ];
     let mut canvas = Canvas::new(20, 12);
-    hidden_line(
-        &mut canvas,
-        &[tilted(), front],
-        STYLE,
-        HiddenLineOffset::Fill(PolygonOffset::SLIDES),
-    );
+    hidden_line(&mut canvas, &[tilted(), front], STYLE, offset);
     let front_outline = outline_pixels(&canvas, front);
-    let mut inside_front = 0;
+    let (mut front_cover, mut inside_front) = (Vec::new(), 0);
     fill_triangle(front, canvas.viewport(), |f| {
+        front_cover.push(f.pixel);
         if !front_outline.contains(&f.pixel) {
             inside_front += 1;
             assert_eq!(
                 canvas.get(f.pixel),
                 Some(Rgba::BLACK),
-                "{} shows a hidden edge",
+                "{offset:?}: {} shows an edge of the triangle behind",
                 f.pixel
             );
         }
     });
     assert!(inside_front > 10);
-    // And the back triangle's edges outside the front one are all drawn.
-    let mut front_cover = Vec::new();
-    fill_triangle(front, canvas.viewport(), |f| front_cover.push(f.pixel));
     for p in outline_pixels(&canvas, tilted()) {
         if !front_cover.contains(&p) {
             assert_eq!(
                 canvas.get(p),
                 Some(Rgba::WHITE),
-                "{p} of the back outline is missing"
+                "{offset:?}: {p} of the back outline is missing"
             );
         }
     }
+}
+
+#[testkit::test]
+fn edges_behind_another_triangle_stay_hidden() {
+    assert_the_front_triangle_hides_the_edges_behind(HiddenLineOffset::Fill(PolygonOffset::SLIDES));
 }
 
 #[testkit::test]
@@ -317,10 +321,7 @@ fn units_alone_leave_a_steep_outline_stitched_while_factor_cures_it() {
 /// by its triangle's offset (negative), and the outline is whole.
 #[testkit::test]
 fn a_negative_line_offset_also_makes_the_outline_whole() {
-    let pull = PolygonOffset {
-        factor: -1.0,
-        units: -1.0,
-    };
+    let pull = PULL;
     let canvas = drawing(HiddenLineOffset::Line(pull));
     let outline = outline_pixels(&canvas, tilted());
     testkit::assert_pixels_eq(
@@ -384,44 +385,7 @@ fn line_depth_pulled_past_zero_is_clamped() {
 
 #[testkit::test]
 fn a_pulled_outline_still_hides_behind_a_nearer_triangle() {
-    let front = [
-        grey(0.0, 4.0, 0.1),
-        grey(12.0, 4.0, 0.1),
-        grey(6.0, 12.0, 0.1),
-    ];
-    let mut canvas = Canvas::new(20, 12);
-    let pull = PolygonOffset {
-        factor: -1.0,
-        units: -1.0,
-    };
-    hidden_line(
-        &mut canvas,
-        &[tilted(), front],
-        STYLE,
-        HiddenLineOffset::Line(pull),
-    );
-    let front_outline = outline_pixels(&canvas, front);
-    let mut front_cover = Vec::new();
-    fill_triangle(front, canvas.viewport(), |f| {
-        front_cover.push(f.pixel);
-        if !front_outline.contains(&f.pixel) {
-            assert_eq!(
-                canvas.get(f.pixel),
-                Some(Rgba::BLACK),
-                "{} shows an edge of the triangle behind",
-                f.pixel
-            );
-        }
-    });
-    for p in outline_pixels(&canvas, tilted()) {
-        if !front_cover.contains(&p) {
-            assert_eq!(
-                canvas.get(p),
-                Some(Rgba::WHITE),
-                "{p} of the back outline is missing"
-            );
-        }
-    }
+    assert_the_front_triangle_hides_the_edges_behind(HiddenLineOffset::Line(PULL));
 }
 
 /// The plane `z = 0.3 + 0.004·x + 0.006·y` over a 64 × 48 canvas.
@@ -512,11 +476,7 @@ fn a_coplanar_decal_fights_the_floor_without_an_offset() {
 /// one hides it everywhere.
 #[testkit::test]
 fn a_negative_offset_brings_the_whole_decal_in_front() {
-    let pull = PolygonOffset {
-        factor: -1.0,
-        units: -1.0,
-    };
-    let (canvas, covered) = decal_picture(Some(pull));
+    let (canvas, covered) = decal_picture(Some(PULL));
     for &p in &covered {
         assert!(
             canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)),
