@@ -103,15 +103,37 @@ impl From<&TriangleDomain> for Domain {
 ///
 /// Errors: a patch that is not bicubic ([`TessError::Invalid`]).
 fn bicubic(patches: &[BezierPatch]) -> Result<Vec<[Vec4; 16]>, TessError> {
+    gpu_patches(
+        patches
+            .iter()
+            .map(|p| (patch_to_gpu(p), [p.degree_u(), p.degree_v()])),
+    )
+}
+
+/// Rational patches as the GPU reads them ([`rational_patch_to_gpu`]).
+///
+/// Errors: a patch that is neither bicubic nor `n × n` below 3
+/// ([`TessError::Invalid`]).
+fn homogeneous(patches: &[RationalPatch]) -> Result<Vec<[Vec4; 16]>, TessError> {
+    gpu_patches(patches.iter().map(|r| {
+        let net = r.points();
+        (rational_patch_to_gpu(r), [net.degree_u(), net.degree_v()])
+    }))
+}
+
+/// Each patch's 16 points as the GPU reads them, given with its degrees
+/// for the error: [`TessError::Invalid`] naming the first patch that has
+/// none (not bicubic, and for a rational patch not `n × n` below 3 either,
+/// see [`rational_patch_to_gpu`]).
+fn gpu_patches(
+    patches: impl Iterator<Item = (Option<[Vec4; 16]>, [usize; 2])>,
+) -> Result<Vec<[Vec4; 16]>, TessError> {
     patches
-        .iter()
         .enumerate()
-        .map(|(k, patch)| {
-            patch_to_gpu(patch).ok_or_else(|| {
+        .map(|(k, (points, [p, q]))| {
+            points.ok_or_else(|| {
                 TessError::Invalid(format!(
-                    "patch {k} has degree {} × {}; the GPU stages take bicubic patches",
-                    patch.degree_u(),
-                    patch.degree_v()
+                    "patch {k} has degree {p} × {q}; the GPU stages take bicubic patches"
                 ))
             })
         })
@@ -469,29 +491,13 @@ impl EvaluationPass {
         let none = wgpu::BufferUsages::empty();
         let domain_buffer = storage(gpu, "domain", bytemuck::cast_slice(&points), none);
         let job_buffer = storage(gpu, "jobs", bytemuck::cast_slice(&jobs), none);
+        let quads = |data: Vec<[Vec4; 16]>| {
+            let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
+            (&self.quads, 0, buffer)
+        };
         let (pipeline, patch_binding, patch_buffer) = match patches {
-            Patches::Quads(p) => {
-                let data = bicubic(p)?;
-                let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
-                (&self.quads, 0, buffer)
-            }
-            Patches::Rational(p) => {
-                let data = p
-                    .iter()
-                    .enumerate()
-                    .map(|(k, patch)| {
-                        rational_patch_to_gpu(patch).ok_or_else(|| {
-                            TessError::Invalid(format!(
-                                "rational patch {k} has degree {} × {}; the GPU stages take bicubic (or n × n below, raised)",
-                                patch.points().degree_u(),
-                                patch.points().degree_v()
-                            ))
-                        })
-                    })
-                    .collect::<Result<Vec<_>, _>>()?;
-                let buffer = storage(gpu, "patches", bytemuck::cast_slice(&data), none);
-                (&self.quads, 0, buffer)
-            }
+            Patches::Quads(p) => quads(bicubic(p)?),
+            Patches::Rational(p) => quads(homogeneous(p)?),
             Patches::Triangles(t) => {
                 let data: Vec<[Vec4; 10]> = t.iter().map(triangle_to_gpu).collect();
                 let buffer = storage(gpu, "triangles", bytemuck::cast_slice(&data), none);
