@@ -65,15 +65,10 @@ impl Pipeline {
     #[must_use]
     pub fn for_mesh(mesh: &Mesh, width: u32, height: u32) -> Self {
         let _ = mesh;
-        let aspect = if width == 0 || height == 0 {
-            1.0
-        } else {
-            width as f32 / height as f32
-        };
         Self {
             model: Mat4::IDENTITY,
             view: view::look_at_mat4(EYE, TARGET, Vec3::Y),
-            projection: opengl::perspective(FOV_Y, aspect, NEAR, FAR),
+            projection: opengl::perspective(FOV_Y, aspect_ratio(width, height), NEAR, FAR),
             width,
             height,
         }
@@ -183,6 +178,17 @@ impl Pipeline {
                 }
             }
         }
+    }
+}
+
+/// The width-to-height ratio of a `width × height` picture, 1 for an
+/// empty one.
+#[must_use]
+pub fn aspect_ratio(width: u32, height: u32) -> f32 {
+    if width == 0 || height == 0 {
+        1.0
+    } else {
+        width as f32 / height as f32
     }
 }
 

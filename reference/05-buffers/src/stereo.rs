@@ -37,6 +37,7 @@
 use canvas::{Canvas, CanvasError, Rgba};
 use glam::camera::rh::{proj::opengl, view};
 use glam::{Mat4, Vec3};
+pub use scene::pipeline::aspect_ratio;
 use scene::{Mesh, Mode, Pipeline};
 
 /// One of the two eyes.
@@ -259,17 +260,6 @@ impl StereoBuffer {
             Eye::Left => &mut self.left,
             Eye::Right => &mut self.right,
         }
-    }
-}
-
-/// The width-to-height ratio of a `width × height` picture, 1 for an
-/// empty one (as [`Pipeline::for_mesh`]).
-#[must_use]
-pub fn aspect_ratio(width: u32, height: u32) -> f32 {
-    if width == 0 || height == 0 {
-        1.0
-    } else {
-        width as f32 / height as f32
     }
 }
 
