@@ -704,11 +704,10 @@ impl ViewerApp {
             && let Some(at) = response.interact_pointer_pos()
         {
             let at = to_grid(at);
-            playground.dragging = (0..handles)
-                .map(|k| (k, setup.handles[k].distance(at)))
-                .filter(|(_, d)| *d < 1.0)
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .map(|(k, _)| k);
+            playground.dragging = nearest(
+                (0..handles).map(|k| f64::from(setup.handles[k].distance(at))),
+                1.0,
+            );
         }
         if let (Some(k), Some(at)) = (playground.dragging, response.interact_pointer_pos())
             && response.dragged()
@@ -897,15 +896,7 @@ impl ViewerApp {
             && let Some(at) = response.interact_pointer_pos()
         {
             let at = to_unit(at);
-            curves.dragging = curves
-                .setup
-                .points
-                .iter()
-                .enumerate()
-                .map(|(k, p)| (k, p.distance(at)))
-                .filter(|(_, d)| *d < 0.05)
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .map(|(k, _)| k);
+            curves.dragging = nearest(curves.setup.points.iter().map(|p| p.distance(at)), 0.05);
         }
         if let (Some(k), Some(at)) = (curves.dragging, response.interact_pointer_pos())
             && response.dragged()
@@ -962,6 +953,16 @@ impl ViewerApp {
         }
         slow_notice(ui, "Your de Casteljau has been drawing", slow);
     }
+}
+
+/// The handle a drag picks up: the nearest of those at `distances` from
+/// the pointer, if it is nearer than `reach`.
+fn nearest(distances: impl Iterator<Item = f64>, reach: f64) -> Option<usize> {
+    distances
+        .enumerate()
+        .filter(|(_, d)| *d < reach)
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(k, _)| k)
 }
 
 /// A point of the unit square on screen, in `area` (y up).
