@@ -270,6 +270,8 @@ pub struct Framebuffer {
     stencil: Vec<u8>,
     surface: Vec<Option<Surface>>,
     fragments: u64,
+    /// What [`Framebuffer::merge_less`] received, where recorded.
+    merges: Option<Vec<Framebuffer>>,
 }
 
 impl Framebuffer {
@@ -284,7 +286,26 @@ impl Framebuffer {
             stencil: vec![0; n],
             surface: vec![None; n],
             fragments: 0,
+            merges: None,
         }
+    }
+
+    /// A cleared framebuffer that also keeps a copy of every buffer
+    /// merged into it ([`Framebuffer::merges`]): the seed's pictures of
+    /// what each pass of a product contributes (Abbildung 9 and 13).
+    #[must_use]
+    pub fn recording_merges(camera: Camera) -> Self {
+        Self {
+            merges: Some(Vec::new()),
+            ..Self::new(camera)
+        }
+    }
+
+    /// The buffers merged so far, in order, if this framebuffer was made
+    /// by [`Framebuffer::recording_merges`]; empty otherwise.
+    #[must_use]
+    pub fn merges(&self) -> &[Framebuffer] {
+        self.merges.as_deref().unwrap_or_default()
     }
 
     /// The camera.
@@ -431,6 +452,12 @@ impl Framebuffer {
     /// Both framebuffers must have the same camera; pixels outside the
     /// smaller grid are ignored.
     pub fn merge_less(&mut self, other: &Self) {
+        if let Some(merges) = &mut self.merges {
+            merges.push(Self {
+                merges: None,
+                ..other.clone()
+            });
+        }
         for p in self.camera.pixels() {
             if let (Some(i), Some(j)) = (self.index(p), other.index(p))
                 && other.depth[j] < self.depth[i]

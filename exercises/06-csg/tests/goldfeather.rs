@@ -217,6 +217,53 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     );
 }
 
+/// The seed's Abbildung 9: what each literal's pass contributes. The
+/// frame records every second buffer your `render` merges into it; the
+/// pass of literal `A` must hold `A`'s entry face wherever it lies inside
+/// all the other literals, and nothing else.
+#[testkit::test]
+fn each_literal_merges_its_visible_fragments_into_the_frame() {
+    let scene = example_scene();
+    let camera = example_camera();
+    let model = dnf_model(&scene);
+    let product = &model.products()[0];
+    let mut frame = Framebuffer::recording_merges(camera);
+    render(&model, &mut frame);
+    let merges = frame.merges();
+    assert_eq!(
+        merges.len(),
+        product.literals.len(),
+        "one second buffer per literal, merged with Framebuffer::merge_less after its \
+         parity tests (seed §4.4: \"copy remaining pixels using z-less to original frame \
+         buffer\")"
+    );
+    let mut panels = Vec::new();
+    for (a, (merge, literal)) in merges.iter().zip(&product.literals).enumerate() {
+        let (_, visible) = common::pass_fragments(&model, product, camera, |_| Some(a));
+        assert_frames_equal(
+            merge,
+            &visible,
+            &format!(
+                "the pass of literal {a} ({literal:?}): its entry face where it lies inside every \
+                 other literal"
+            ),
+        );
+        panels.push(csg::shade::shade(merge, scene.primitives()));
+    }
+    testkit::image::assert_image_matches(
+        "goldfeather_fragments",
+        &csg::shade::side_by_side(&panels),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/goldfeather_fragments.png"
+        ),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.002,
+        },
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 

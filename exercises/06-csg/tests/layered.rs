@@ -205,6 +205,63 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     );
 }
 
+/// The seed's Abbildungen 12 and 13: the layers extracted from the
+/// example's product (top row, by definition: at each pixel the n-th entry
+/// face drawn there) and what your `render` merges of each (bottom row):
+/// the layer's fragments that lie inside every other literal.
+#[testkit::test]
+fn each_layer_merges_its_visible_fragments_into_the_frame() {
+    let scene = example_scene();
+    let camera = example_camera();
+    let model = dnf_model(&scene);
+    let product = &model.products()[0];
+    let k = usize::from(common::depth_complexity(&model, product, &camera));
+    let mut frame = Framebuffer::recording_merges(camera);
+    render(&model, &mut frame);
+    let merges = frame.merges();
+    assert_eq!(
+        merges.len(),
+        k,
+        "one second buffer per layer (k = {k}), merged with Framebuffer::merge_less after its \
+         parity tests"
+    );
+    let shade = |f: &Framebuffer| csg::shade::shade(f, scene.primitives());
+    let (mut layers, mut fragments) = (Vec::new(), Vec::new());
+    for (n, merge) in merges.iter().enumerate() {
+        let (layer, visible) = common::pass_fragments(&model, product, camera, |ray| {
+            common::nth_literal_crossed(&model, product, ray, n)
+        });
+        assert_frames_equal(
+            merge,
+            &visible,
+            &format!(
+                "layer {}: at each pixel the entry face drawn there as number {}, where it lies \
+                 inside every other literal",
+                n + 1,
+                n + 1
+            ),
+        );
+        layers.push(shade(&layer));
+        fragments.push(shade(merge));
+    }
+    let picture = common::rows(&[
+        csg::shade::side_by_side(&layers),
+        csg::shade::side_by_side(&fragments),
+    ]);
+    testkit::image::assert_image_matches(
+        "layered_layers",
+        &picture,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/layered_layers.png"
+        ),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.002,
+        },
+    );
+}
+
 #[testkit::test]
 fn products_are_rendered_one_after_the_other() {
     // Two separate products: the union of a dented and a plain ball.

@@ -5,8 +5,9 @@
 
 use csg::Vec3;
 use csg::csg::{Csg, Literal, Model, Product, Scene};
+use csg::primitive::Ray;
 use csg::primitive::{Axis, Primitive};
-use csg::raster::{Camera, Framebuffer, Surface};
+use csg::raster::{Camera, Face, Framebuffer, Surface};
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------
@@ -346,4 +347,85 @@ pub fn point() -> impl Strategy<Value = Vec3> {
 /// The model of a scene with the products by expansion.
 pub fn dnf_model(scene: &Scene) -> Model {
     Model::new(scene.primitives().to_vec(), dnf(scene.tree())).expect("a valid model")
+}
+
+// ---------------------------------------------------------------------------
+// The passes of a product, by definition.
+
+/// What one pass of a product must merge, by definition: at each pixel
+/// the fragment `pick` chooses (the index of a literal of `product`, whose
+/// entry face the pass draws there), and of those the ones that lie inside
+/// every *other* literal — with the parity test's z-less rule, a depth
+/// `d` is inside a primitive whose ray interval is `(near, far)` when
+/// `near < d ≤ far`. Returns (all picked fragments, the visible ones).
+pub fn pass_fragments(
+    model: &Model,
+    product: &Product,
+    camera: Camera,
+    pick: impl Fn(&Ray) -> Option<usize>,
+) -> (Framebuffer, Framebuffer) {
+    let primitives = model.primitives();
+    let mut all = Framebuffer::new(camera);
+    let mut visible = Framebuffer::new(camera);
+    for p in camera.pixels() {
+        let ray = camera.ray(p);
+        let Some(a) = pick(&ray) else { continue };
+        let literal = product.literals[a];
+        let Some(span) = primitives[literal.primitive].interval(&ray) else {
+            continue;
+        };
+        let face = literal.entry_face();
+        let depth = match face {
+            Face::Front => span.near,
+            Face::Back => span.far,
+        };
+        let surface = Surface {
+            primitive: literal.primitive,
+            face,
+        };
+        all.write_less(p, depth, surface);
+        let inside_the_others = product.literals.iter().enumerate().all(|(b, other)| {
+            let inside = primitives[other.primitive]
+                .interval(&ray)
+                .is_some_and(|s| s.near < depth && depth <= s.far);
+            b == a || inside != other.complement
+        });
+        if inside_the_others {
+            visible.write_less(p, depth, surface);
+        }
+    }
+    (all, visible)
+}
+
+/// The `n`-th literal of `product` (from 0, in product order) whose
+/// primitive `ray` crosses: the literal of layer `n + 1` at that pixel.
+pub fn nth_literal_crossed(model: &Model, product: &Product, ray: &Ray, n: usize) -> Option<usize> {
+    product
+        .literals
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| model.primitives()[l.primitive].interval(ray).is_some())
+        .nth(n)
+        .map(|(i, _)| i)
+}
+
+/// Pictures in rows, one row above the other (the first row on top),
+/// [`csg::shade::PANEL_GAP`] apart.
+pub fn rows(rows: &[canvas::Canvas]) -> canvas::Canvas {
+    let gap = csg::shade::PANEL_GAP;
+    let width = rows.iter().map(canvas::Canvas::width).max().unwrap_or(0);
+    let height = rows.iter().map(canvas::Canvas::height).sum::<u32>()
+        + gap * (rows.len().saturating_sub(1) as u32);
+    let mut out = canvas::Canvas::new(width, height);
+    out.clear(canvas::Rgba::BLACK);
+    // Canvas y points up: the first row goes at the top.
+    let mut top = height as i32;
+    for row in rows {
+        let y0 = top - row.height() as i32;
+        for (p, colour) in row.enumerate() {
+            out.set(canvas::Pixel::new(p.x, p.y + y0), colour);
+        }
+        top = y0 - gap as i32;
+    }
+    out
 }
