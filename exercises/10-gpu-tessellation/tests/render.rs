@@ -7,14 +7,15 @@ use std::collections::BTreeSet;
 
 use canvas::{Canvas, Pixel, Rgba};
 use common::tessellate_patch;
-use glam::{DVec2, Vec2, Vec3};
+use glam::{DVec2, DVec3, Vec2, Vec3};
 use gpu::Gpu;
-use gpu_tessellation::patch::BezierPatch;
+use gpu_tessellation::patch::{BezierPatch, GpuVertex, RationalPatch};
 use gpu_tessellation::render::{DrawMesh, Scene, Shaders, brick_texture, render, vertex_buffer};
 use gpu_tessellation::shading::wireframe_edges;
 use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
 use testkit::image::Tolerance;
+use testkit::oracles::tensor_bezier;
 
 /// Picture size of the shading tests: 2 pixels per texel of the 64-texel
 /// brick texture, so that no texel edge passes through a pixel centre
@@ -269,4 +270,175 @@ fn wireframe_lines_lie_on_the_tessellations_edges() {
             "no wire pixel next to the middle of the edge {a} – {b}"
         );
     }
+}
+
+/// The NURBS torus of the figure: major and minor radius, lying in the
+/// `z = 0` plane around the `z` axis.
+const TORUS: (f64, f64) = (0.7, 0.25);
+/// Picture size of the torus.
+const TORUS_SIZE: u32 = 192;
+/// A texture coordinate in the middle of a brick, not on mortar: a torus
+/// textured there is plainly brick-red, which the CPU can shade exactly.
+const PLAIN_UV: DVec2 = DVec2::new(3.5 / 64.0, 3.5 / 64.0);
+
+/// The torus seen from above and in front, lit from the upper right and
+/// from behind on the left.
+fn torus_scene() -> Scene {
+    let mut scene = Scene::perspective(
+        Vec3::new(0.0, -1.9, 2.3),
+        Vec3::new(0.0, 0.0, -0.05),
+        TORUS_SIZE,
+        TORUS_SIZE,
+    );
+    scene.lights = [Vec3::new(2.0, -1.5, 3.0), Vec3::new(-2.5, 2.0, 1.5)];
+    scene
+}
+
+/// The torus's outward normal at a point `p` on it.
+fn torus_normal(p: DVec3) -> DVec3 {
+    let centre = TORUS.0 * DVec3::new(p.x, p.y, 0.0).normalize();
+    (p - centre).normalize()
+}
+
+/// The 16 rational patches of `RationalPatch::torus` evaluated on the CPU
+/// at the points of a level-`n` grid, as one mesh: positions by the
+/// quotient of numerator and denominator (their definitions, the double
+/// Bernstein sum), the torus's own normals, and the grid's `(u, v)` — or
+/// [`PLAIN_UV`] everywhere when `plain`.
+fn torus_mesh(n: usize, plain: bool) -> (Vec<GpuVertex>, Vec<[u32; 3]>) {
+    let domain = common::grid(n);
+    let (mut vertices, mut triangles) = (Vec::new(), Vec::new());
+    for patch in RationalPatch::torus(TORUS.0, TORUS.1) {
+        let (a, w) = (patch.numerator(), patch.denominator());
+        let (p, q) = (a.degree_u(), a.degree_v());
+        let offset = vertices.len() as u32;
+        for d in &domain.points {
+            let uv = [f64::from(d.x), f64::from(d.y)];
+            let [numerator, ..] = tensor_bezier(p, q, |i, j| a.control_point(i, j), uv);
+            let [denominator, ..] = tensor_bezier(p, q, |i, j| w.control_point(i, j), uv);
+            let position = numerator / denominator.x;
+            let param = if plain {
+                PLAIN_UV.as_vec2()
+            } else {
+                d.truncate()
+            };
+            vertices.push(GpuVertex {
+                position: position.as_vec3().extend(1.0),
+                normal: torus_normal(position).as_vec3().extend(0.0),
+                param: param.extend(0.0).extend(0.0),
+            });
+        }
+        triangles.extend(domain.triangles.iter().map(|t| t.map(|k| k + offset)));
+    }
+    (vertices, triangles)
+}
+
+/// Where the ray through pixel centre `(x, y)` first meets the exact torus
+/// (sphere tracing its distance function), if it does.
+fn torus_hit(scene: &Scene, x: i32, y: i32) -> Option<DVec3> {
+    let size = f64::from(TORUS_SIZE);
+    let ndc = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5) / size * 2.0 - DVec2::ONE;
+    let inverse = scene.view_proj.as_dmat4().inverse();
+    let near = inverse.project_point3(ndc.extend(0.0));
+    let far = inverse.project_point3(ndc.extend(1.0));
+    let direction = (far - near).normalize();
+    let (major, minor) = TORUS;
+    let distance = |p: DVec3| DVec2::new(p.truncate().length() - major, p.z).length() - minor;
+    let mut t = 0.0;
+    for _ in 0..1000 {
+        let p = near + t * direction;
+        let d = distance(p);
+        if d < 1e-9 {
+            return Some(p);
+        }
+        t += d;
+        if t > near.distance(far) {
+            return None;
+        }
+    }
+    None
+}
+
+/// Seed 001's subject on the GPU: a NURBS torus, 16 rational Bézier
+/// patches, drawn by your Phong shading. Its vertices are evaluated on
+/// the CPU (task 3's GPU evaluation of the same patches is tested in
+/// `evaluation.rs`), plain brick-red; at every pixel whose neighbours all
+/// see the same thing the picture must match the exact torus shaded on
+/// the CPU. The figure puts it next to the textured torus with your
+/// wireframe over it.
+#[testkit::test]
+fn a_nurbs_torus_is_shaded_like_the_exact_torus() {
+    let piece = wgsl::SHADING.written();
+    let (wire_vertices, wire_triangles) = torus_mesh(4, false);
+    let edges = wireframe_edges(&wire_triangles);
+    let Some(gpu) = common::gpu() else { return };
+    let scene = torus_scene();
+    let draw = |vertices: &[GpuVertex], triangles: &[[u32; 3]], edges: Option<&[[u32; 2]]>| {
+        let buffer = vertex_buffer(&gpu, vertices);
+        let mesh = DrawMesh {
+            vertices: &buffer,
+            triangles,
+            edges,
+        };
+        let shaders = Shaders {
+            shading: Some(piece),
+            trimming: None,
+        };
+        render(&gpu, TORUS_SIZE, TORUS_SIZE, &scene, shaders, &[mesh]).unwrap()
+    };
+    let (vertices, triangles) = torus_mesh(LEVEL, true);
+    let yours = draw(&vertices, &triangles, None);
+
+    let hits: Vec<Vec<Option<DVec3>>> = (0..TORUS_SIZE as i32)
+        .map(|y| {
+            (0..TORUS_SIZE as i32)
+                .map(|x| torus_hit(&scene, x, y))
+                .collect()
+        })
+        .collect();
+    let brick = common::brick_at(&brick_texture(), PLAIN_UV);
+    let mut cpu = Canvas::new(TORUS_SIZE, TORUS_SIZE);
+    let last = TORUS_SIZE as i32 - 1;
+    for y in 0..=last {
+        for x in 0..=last {
+            let p = Pixel::new(x, y);
+            let neighbours = (-1..=1).flat_map(|dy| (-1..=1).map(move |dx| (x + dx, y + dy)));
+            let hit = hits[y as usize][x as usize];
+            let on_the_rim = neighbours.into_iter().any(|(nx, ny)| {
+                let n = hits[ny.clamp(0, last) as usize][nx.clamp(0, last) as usize];
+                n.is_some() != hit.is_some()
+            });
+            let colour = match hit {
+                // The silhouette: which pixel centres a chord covers is
+                // the tessellation's, not the torus's.
+                _ if on_the_rim => yours.get(p).unwrap_or(Rgba::BLACK),
+                None => scene.background,
+                Some(s) => common::rgba(common::phong(
+                    s,
+                    torus_normal(s),
+                    scene.eye.as_dvec3(),
+                    scene.lights,
+                    brick,
+                )),
+            };
+            cpu.set(p, colour);
+        }
+    }
+    common::assert_matches_cpu("render_nurbs_torus", &yours, &cpu, SHADING);
+
+    let wireframe = draw(&wire_vertices, &wire_triangles, Some(&edges));
+    let mut figure = Canvas::new(2 * TORUS_SIZE + 4, TORUS_SIZE);
+    for (p, c) in yours.enumerate() {
+        figure.set(p, c);
+    }
+    for (p, c) in wireframe.enumerate() {
+        figure.set(Pixel::new(p.x + TORUS_SIZE as i32 + 4, p.y), c);
+    }
+    figure
+        .save_png(
+            testkit::output_dir()
+                .join("render_nurbs_torus_figure")
+                .join("yours.png"),
+        )
+        .unwrap();
 }
