@@ -1,7 +1,8 @@
 //! The window: the picture on the left, the controls and your stages on
-//! the right, as in seed 004's Figure 2. Three scenes: your pipeline
-//! ([`crate::render`]), the pixel playground ([`crate::playground`]) and
-//! the curve scene ([`crate::curves`]).
+//! the right, as in seed 004's Figure 2. Four scenes: your pipeline
+//! ([`crate::render`]), the pixel playground ([`crate::playground`]), the
+//! curve scene ([`crate::curves`]) and the trimmed surface
+//! ([`crate::surfaces`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -17,6 +18,7 @@ use crate::meshes::MeshEntry;
 use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
 use crate::render::{Frame, FrameWorker, Settings, frame_worker};
 use crate::stages::{Stages, Status};
+use crate::surfaces::{self, SurfaceDrawing, SurfaceSetup, SurfaceWorker, TrimShape};
 
 /// What the window shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -27,6 +29,18 @@ pub enum Scene {
     Pixels,
     /// A Bézier curve and its de Casteljau construction.
     Curves,
+    /// The seed's hill, trimmed, tessellated and lit.
+    Surfaces,
+}
+
+/// The surface scene's state.
+struct Surfaces {
+    setup: SurfaceSetup,
+    worker: SurfaceWorker,
+    asked: Option<SurfaceSetup>,
+    drawing: Option<SurfaceDrawing>,
+    /// The picture and the parameter square of `drawing`, on the GPU.
+    textures: Option<(TextureHandle, TextureHandle)>,
 }
 
 /// The curve scene's state.
@@ -69,6 +83,7 @@ pub struct ViewerApp {
     scene: Scene,
     playground: Playground,
     curves: Curves,
+    surfaces: Surfaces,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
@@ -129,6 +144,13 @@ impl ViewerApp {
                 construction: true,
                 definition: true,
             },
+            surfaces: Surfaces {
+                setup: SurfaceSetup::default(),
+                worker: surfaces::worker(stages.clone()),
+                asked: None,
+                drawing: None,
+                textures: None,
+            },
             meshes,
             selected: 0,
             settings: Settings::default(),
@@ -178,6 +200,7 @@ impl ViewerApp {
             Scene::Pipeline => self.texture.is_some(),
             Scene::Pixels => self.playground.drawing.is_some(),
             Scene::Curves => self.curves.drawing.is_some(),
+            Scene::Surfaces => self.surfaces.textures.is_some(),
         };
         if shown && !self.screenshot_asked {
             let slot = Arc::clone(&self.screenshot);
@@ -247,6 +270,41 @@ impl ViewerApp {
         }
     }
 
+    /// The surface scene's set-up, to change what it draws.
+    pub fn surfaces_mut(&mut self) -> &mut SurfaceSetup {
+        &mut self.surfaces.setup
+    }
+
+    /// The surface scene's drawing on screen, if one has been drawn.
+    #[must_use]
+    pub fn surface_drawing(&self) -> Option<&SurfaceDrawing> {
+        self.surfaces.drawing.as_ref()
+    }
+
+    /// Asks for the surface scene's drawing and waits for it, at most
+    /// `limit` (for tests); whether it arrived.
+    pub fn wait_for_surface(&mut self, limit: Duration) -> bool {
+        self.ask_surfaces();
+        match self.surfaces.worker.wait(limit) {
+            Some(drawing) => {
+                self.surfaces.drawing = Some(drawing);
+                self.surfaces.textures = None;
+                true
+            }
+            None => self.surfaces.worker.busy_for().is_none(),
+        }
+    }
+
+    /// Asks for the surface scene's drawing if its set-up changed.
+    fn ask_surfaces(&mut self) {
+        let surfaces = &mut self.surfaces;
+        surfaces.setup.tidy();
+        if surfaces.asked.as_ref() != Some(&surfaces.setup) {
+            surfaces.worker.request(surfaces.setup);
+            surfaces.asked = Some(surfaces.setup);
+        }
+    }
+
     /// Asks for the curve scene's drawing if its set-up changed.
     fn ask_curves(&mut self) {
         let curves = &mut self.curves;
@@ -286,6 +344,7 @@ impl ViewerApp {
         self.worker.set_slow_after(limit);
         self.playground.worker.set_slow_after(limit);
         self.curves.worker.set_slow_after(limit);
+        self.surfaces.worker.set_slow_after(limit);
     }
 
     /// The settings the next frame is drawn with.
@@ -398,6 +457,11 @@ impl ViewerApp {
                 self.window_screenshot(ui);
                 return;
             }
+            Scene::Surfaces => {
+                self.show_surfaces(ui);
+                self.window_screenshot(ui);
+                return;
+            }
             Scene::Pipeline => {}
         }
         self.ask();
@@ -423,6 +487,7 @@ impl ViewerApp {
             ui.selectable_value(&mut self.scene, Scene::Pipeline, "Pipeline scene");
             ui.selectable_value(&mut self.scene, Scene::Pixels, "Pixel playground");
             ui.selectable_value(&mut self.scene, Scene::Curves, "Curves");
+            ui.selectable_value(&mut self.scene, Scene::Surfaces, "Surfaces");
         });
         ui.separator();
     }
@@ -952,6 +1017,168 @@ impl ViewerApp {
             );
         }
         slow_notice(ui, "Your de Casteljau has been drawing", slow);
+    }
+}
+
+impl ViewerApp {
+    /// The surface scene: its controls on the right, the picture and the
+    /// parameter square on the left.
+    fn show_surfaces(&mut self, ui: &mut egui::Ui) {
+        self.ask_surfaces();
+        if let Some(drawing) = self.surfaces.worker.poll() {
+            self.surfaces.drawing = Some(drawing);
+            self.surfaces.textures = None;
+        }
+        if self.surfaces.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    self.surface_controls(ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.surface_picture(ui));
+    }
+
+    fn surface_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your trimmed surface");
+        ui.label(
+            "The seed's hill, a bicubic Bézier patch: evaluated by your surface code, trimmed by your trim and tessellated, rasterized and lit by your render_surface.",
+        );
+        ui.separator();
+        let setup = &mut self.surfaces.setup;
+        let trim = &mut setup.trim;
+        egui::ComboBox::from_label("Trim")
+            .selected_text(trim.shape.label())
+            .show_ui(ui, |ui| {
+                for shape in TrimShape::ALL {
+                    ui.selectable_value(&mut trim.shape, shape, shape.label());
+                }
+            });
+        if trim.shape != TrimShape::None {
+            ui.add(egui::Slider::new(&mut trim.centre.x, 0.0..=1.0).text("centre u"));
+            ui.add(egui::Slider::new(&mut trim.centre.y, 0.0..=1.0).text("centre v"));
+        }
+        match trim.shape {
+            TrimShape::None => {}
+            TrimShape::Rectangle => {
+                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.5).text("half width"));
+                ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.5).text("half height"));
+            }
+            TrimShape::Circle => {
+                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius"));
+            }
+            TrimShape::Ellipse => {
+                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius in u"));
+                ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.7).text("radius in v"));
+            }
+            TrimShape::NewtonQuadratic | TrimShape::NewtonCubic | TrimShape::Nested => {
+                ui.add(egui::Slider::new(&mut trim.scale, 0.1..=2.0).text("scale"));
+                ui.add(egui::Slider::new(&mut trim.iterations, 1..=30).text("Newton steps"));
+                ui.add(
+                    egui::Slider::new(&mut trim.epsilon, 1e-4..=0.1)
+                        .logarithmic(true)
+                        .text("ε"),
+                );
+            }
+        }
+        ui.separator();
+        ui.add(
+            egui::Slider::new(&mut setup.level, 1..=surfaces::MAX_LEVEL).text("tessellation level"),
+        );
+        ui.checkbox(&mut setup.wireframe, "Wireframe");
+        ui.label("Camera (or drag the picture; scroll to zoom)");
+        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("around"));
+        ui.add(egui::Slider::new(&mut setup.pitch, -89.0..=89.0).text("above"));
+        ui.add(egui::Slider::new(&mut setup.distance, 0.8..=8.0).text("distance"));
+        if ui.button("Reset").clicked() {
+            *setup = SurfaceSetup::default();
+        }
+        ui.separator();
+        ui.heading("Your stages");
+        let Some(drawing) = &self.surfaces.drawing else {
+            ui.label("drawing …");
+            return;
+        };
+        let stages = Stages::default();
+        let trim_source = drawing.setup.trim.shape.source();
+        for (name, source, status) in [
+            (stages.surface.name, stages.surface.source, &drawing.surface),
+            (stages.trim.name, trim_source, &drawing.trim),
+            (
+                stages.surface_render.name,
+                stages.surface_render.source,
+                &drawing.render,
+            ),
+        ] {
+            ui.label(
+                RichText::new(format!("{name}: {}", status.describe()))
+                    .color(status_colour(status)),
+            );
+            ui.label(RichText::new(source).small().weak());
+        }
+    }
+
+    fn surface_picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.surfaces.worker.slow_for();
+        let surfaces = &mut self.surfaces;
+        let Some(drawing) = &surfaces.drawing else {
+            ui.label("drawing …");
+            slow_notice(ui, "Your surface code has been drawing", slow);
+            return;
+        };
+        let (picture, uv_map) = surfaces
+            .textures
+            .get_or_insert_with(|| {
+                let load = |name: &str, canvas: &Canvas| {
+                    ui.ctx()
+                        .load_texture(name, colour_image(canvas), TextureOptions::NEAREST)
+                };
+                (
+                    load("surface", &drawing.canvas),
+                    load("parameter square", &drawing.uv_map),
+                )
+            })
+            .clone();
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui) + 140.0);
+        let (w, h) = (
+            drawing.canvas.width().max(1) as f32,
+            drawing.canvas.height().max(1) as f32,
+        );
+        let scale = (available.x / w).min(available.y / h);
+        let scale = if scale >= 1.0 { scale.floor() } else { scale };
+        let response = ui.add(
+            egui::Image::from_texture(egui::load::SizedTexture::new(
+                picture.id(),
+                egui::vec2(w * scale, h * scale),
+            ))
+            .sense(egui::Sense::drag()),
+        );
+        let setup = &mut surfaces.setup;
+        if response.dragged() {
+            let delta = response.drag_delta();
+            setup.yaw = (setup.yaw - f64::from(delta.x) * 0.5).clamp(-180.0, 180.0);
+            setup.pitch = (setup.pitch + f64::from(delta.y) * 0.5).clamp(-89.0, 89.0);
+        }
+        if response.hovered() {
+            let scroll = f64::from(ui.input(|i| i.smooth_scroll_delta.y));
+            if scroll != 0.0 {
+                setup.distance = (setup.distance * (1.0 - scroll * 0.002)).clamp(0.8, 8.0);
+            }
+        }
+        ui.horizontal(|ui| {
+            ui.add(egui::Image::from_texture(egui::load::SizedTexture::new(
+                uv_map.id(),
+                egui::vec2(128.0, 128.0),
+            )));
+            ui.label(
+                "The parameter square as your trim sees it: dark is cut away.\nu to the right, v up.",
+            );
+        });
+        slow_notice(ui, "Your surface code has been drawing", slow);
     }
 }
 

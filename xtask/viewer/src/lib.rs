@@ -21,6 +21,7 @@ pub mod meshes;
 pub mod playground;
 pub mod render;
 pub mod stages;
+pub mod surfaces;
 pub mod worker;
 
 #[cfg(feature = "window")]

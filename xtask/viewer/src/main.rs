@@ -9,6 +9,7 @@ use clap::{Parser, ValueEnum};
 use course_viewer::meshes::{self, MeshEntry, shipped_meshes};
 use course_viewer::render::Settings;
 use course_viewer::stages::{self, Stages};
+use course_viewer::surfaces::{SurfaceSetup, TrimShape};
 
 /// How polygons are drawn.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -17,6 +18,39 @@ enum Mode {
     Wireframe,
     /// Filled, with your triangle fill.
     Filled,
+}
+
+/// The surface scene's trims.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Trim {
+    /// Nothing cut away.
+    None,
+    /// `u` and `v` in intervals.
+    Rectangle,
+    /// A disc.
+    Circle,
+    /// An ellipse.
+    Ellipse,
+    /// Between two quadratic Bézier curves (Newton).
+    Quadratic,
+    /// Between two cubic Bézier curves (Newton).
+    Cubic,
+    /// A quadratic region with another one kept inside it.
+    Nested,
+}
+
+impl Trim {
+    fn shape(self) -> TrimShape {
+        match self {
+            Self::None => TrimShape::None,
+            Self::Rectangle => TrimShape::Rectangle,
+            Self::Circle => TrimShape::Circle,
+            Self::Ellipse => TrimShape::Ellipse,
+            Self::Quadratic => TrimShape::NewtonQuadratic,
+            Self::Cubic => TrimShape::NewtonCubic,
+            Self::Nested => TrimShape::Nested,
+        }
+    }
 }
 
 /// Your own pipeline on screen: a mesh clipped, drawn and depth-tested by
@@ -52,12 +86,26 @@ struct Args {
     time_limit: f64,
     /// Open the window on the pixel playground (your lines, circle and
     /// triangle on a magnified grid, beside their definitions).
-    #[arg(long, conflicts_with = "curves")]
+    #[arg(long, conflicts_with_all = ["curves", "surfaces"])]
     pixels: bool,
     /// Open the window on the curve scene (your de Casteljau drawing a
     /// Bézier curve and its construction, beside the definition's curve).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "surfaces")]
     curves: bool,
+    /// Open the window on the surface scene (the seed's hill evaluated,
+    /// trimmed and rendered by your topic 07 code; choose the trim, its
+    /// parameters and the tessellation level).
+    #[arg(long)]
+    surfaces: bool,
+    /// The surface scene's first trim.
+    #[arg(long, value_enum, default_value_t = Trim::Circle, requires = "surfaces")]
+    trim: Trim,
+    /// The surface scene's first tessellation level (1 to 64).
+    #[arg(long, default_value_t = 24, value_parser = clap::value_parser!(u32).range(1..=64), requires = "surfaces")]
+    level: u32,
+    /// Start the surface scene with the wireframe on.
+    #[arg(long, requires = "surfaces")]
+    wireframe: bool,
     /// Topics left out of this build because they do not compile (set by
     /// `cargo xtask view`).
     #[arg(long = "not-compiling", value_name = "TOPIC")]
@@ -108,6 +156,14 @@ fn main() -> Result<()> {
                 Start::Pixels
             } else if args.curves {
                 Start::Curves
+            } else if args.surfaces {
+                let mut surface = SurfaceSetup {
+                    level: args.level,
+                    wireframe: args.wireframe,
+                    ..SurfaceSetup::default()
+                };
+                surface.trim.shape = args.trim.shape();
+                Start::Surfaces(surface)
             } else {
                 Start::Pipeline
             },
@@ -150,6 +206,7 @@ enum Start {
     Pipeline,
     Pixels,
     Curves,
+    Surfaces(SurfaceSetup),
 }
 
 /// Opens the window.
@@ -181,6 +238,10 @@ fn window(
         Start::Pipeline => {}
         Start::Pixels => app.set_scene(course_viewer::Scene::Pixels),
         Start::Curves => app.set_scene(course_viewer::Scene::Curves),
+        Start::Surfaces(setup) => {
+            app.set_scene(course_viewer::Scene::Surfaces);
+            *app.surfaces_mut() = setup;
+        }
     }
     if let Some(path) = window_screenshot {
         app.screenshot_window_to(path);

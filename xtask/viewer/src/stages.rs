@@ -11,7 +11,10 @@
 //!
 //! and, for the pixel playground, `01-lines`' `midpoint::midpoint_line`
 //! and `wu::wu_line` and `02-circles`' `midpoint_circle::midpoint_circle`; for the curve
-//! scene, `07-bezier`'s `de_casteljau::de_casteljau`.
+//! scene, `07-bezier`'s `de_casteljau::de_casteljau`; for the surface scene,
+//! `07-bezier`'s `surface::partial_derivatives` and `surface::normal` (the
+//! seed's hill), its trims (`simple_trim`, `newton_trim`) and
+//! `render::render_surface`.
 //!
 //! A topic that does not compile is left out of the build (`cargo xtask
 //! view` checks each one first) and its stage is shown as missing.
@@ -41,6 +44,38 @@ pub type ClipStage = dyn Fn(&[ClipVertex]) -> Result<Vec<ClipVertex>, String> + 
 pub type DepthStage = dyn Fn(&mut Canvas, Fragment) -> bool + Send + Sync;
 /// A point of a Bézier curve: `(control points, t)`, or why not.
 pub type CurveStage = dyn Fn(&[glam::DVec2], f64) -> Result<glam::DVec2, String> + Send + Sync;
+/// A point of the seed's hill at `(u, v)`: its position and unit normal,
+/// or why not.
+pub type SurfaceStage =
+    dyn Fn(glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String> + Send + Sync;
+/// Whether a trim cuts `(u, v)` away.
+pub type TrimFn = Arc<dyn Fn(glam::DVec2) -> bool + Send + Sync>;
+/// Builds the trim a set-up describes, or says why not.
+pub type TrimStage = dyn Fn(&crate::surfaces::TrimSetup) -> Result<TrimFn, String> + Send + Sync;
+/// Renders a trimmed surface: `(canvas, surface, trims, view)`.
+pub type SurfaceRenderStage = dyn Fn(
+        &mut Canvas,
+        &dyn Fn(glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String>,
+        &dyn Fn(glam::DVec2) -> bool,
+        &SurfaceView,
+    ) -> Result<(), String>
+    + Send
+    + Sync;
+
+/// How the surface scene renders: what topic 07's `RenderSettings` holds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceView {
+    /// Grid cells per side of the parameter square.
+    pub level: u32,
+    /// The tessellation grid over the surface.
+    pub wireframe: bool,
+    /// Where the camera stands (y up, 40° vertical field of view).
+    pub eye: glam::DVec3,
+    /// What it looks at.
+    pub target: glam::DVec3,
+    /// The colour where there is no surface.
+    pub background: canvas::Rgba,
+}
 
 /// One stage: where it comes from, and the code if its topic is built in.
 pub struct Stage<F: ?Sized> {
@@ -82,6 +117,12 @@ pub struct Stages {
     pub circle: Stage<CircleStage>,
     /// De Casteljau's algorithm (the curve scene).
     pub curve: Stage<CurveStage>,
+    /// The patch's point and normal (the surface scene).
+    pub surface: Stage<SurfaceStage>,
+    /// The trims (the surface scene).
+    pub trim: Stage<TrimStage>,
+    /// Tessellating, trimming and shading the patch (the surface scene).
+    pub surface_render: Stage<SurfaceRenderStage>,
 }
 
 /// The four stages without code: what a build without any topic shows.
@@ -126,6 +167,21 @@ impl Default for Stages {
             curve: Stage {
                 name: "de Casteljau",
                 source: "07-bezier · de_casteljau::de_casteljau",
+                run: None,
+            },
+            surface: Stage {
+                name: "surface",
+                source: "07-bezier · surface::partial_derivatives, surface::normal",
+                run: None,
+            },
+            trim: Stage {
+                name: "trim",
+                source: "07-bezier · simple_trim, newton_trim",
+                run: None,
+            },
+            surface_render: Stage {
+                name: "render",
+                source: "07-bezier · render::render_surface, render::phong",
                 run: None,
             },
         }
@@ -197,9 +253,101 @@ impl Stages {
             stages.curve.run = Some(Arc::new(|points: &[glam::DVec2], t: f64| {
                 bezier::de_casteljau::de_casteljau(points, t).map_err(|e| e.to_string())
             }));
+            stages.surface.run = Some(Arc::new(hill_point));
+            stages.trim.run = Some(Arc::new(build_trim));
+            stages.surface_render.run = Some(Arc::new(render_surface));
         }
         stages
     }
+}
+
+/// The seed's hill by your surface code: its point and unit normal.
+#[cfg(feature = "bezier")]
+fn hill_point(uv: glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String> {
+    static HILL: std::sync::LazyLock<bezier::BezierPatch> =
+        std::sync::LazyLock::new(bezier::BezierPatch::seed_hill);
+    let point = bezier::surface::partial_derivatives(&HILL, uv).map_err(|e| e.to_string())?;
+    let normal = bezier::surface::normal(&HILL, uv).map_err(|e| e.to_string())?;
+    Ok((point.position, normal))
+}
+
+/// The trim a set-up describes, built from your types.
+#[cfg(feature = "bezier")]
+fn build_trim(setup: &crate::surfaces::TrimSetup) -> Result<TrimFn, String> {
+    use crate::surfaces::{CUBIC, INNER, QUADRATIC, TrimShape};
+    use bezier::Trim;
+    use bezier::newton_trim::{NestedNewtonTrim, NewtonSettings, NewtonTrim};
+    use bezier::simple_trim::{CircleTrim, EllipseTrim, IntervalTrim};
+    fn shared(trim: impl Trim + Send + Sync + 'static) -> TrimFn {
+        Arc::new(move |uv| trim.trims(uv))
+    }
+    let error = |e: bezier::BezierError| e.to_string();
+    let settings = NewtonSettings {
+        max_iterations: setup.iterations,
+        epsilon: setup.epsilon,
+    };
+    let quadratic = |points| {
+        NewtonTrim::quadratic(setup.curve_points(points))
+            .map(|t| t.with_settings(settings))
+            .map_err(error)
+    };
+    Ok(match setup.shape {
+        TrimShape::None => Arc::new(|_| false),
+        TrimShape::Rectangle => shared(
+            IntervalTrim::new(setup.centre - setup.size, setup.centre + setup.size)
+                .map_err(error)?,
+        ),
+        TrimShape::Circle => shared(CircleTrim::new(setup.centre, setup.size.x).map_err(error)?),
+        TrimShape::Ellipse => shared(EllipseTrim::new(setup.centre, setup.size).map_err(error)?),
+        TrimShape::NewtonQuadratic => shared(quadratic(QUADRATIC)?),
+        TrimShape::NewtonCubic => shared(
+            NewtonTrim::cubic(setup.curve_points(CUBIC))
+                .map(|t| t.with_settings(settings))
+                .map_err(error)?,
+        ),
+        TrimShape::Nested => shared(NestedNewtonTrim::new(
+            quadratic(QUADRATIC)?,
+            quadratic(INNER)?,
+        )),
+    })
+}
+
+/// Your `render_surface` with the viewer's surface and trim.
+#[cfg(feature = "bezier")]
+fn render_surface(
+    canvas: &mut Canvas,
+    surface: &dyn Fn(glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String>,
+    trims: &dyn Fn(glam::DVec2) -> bool,
+    view: &SurfaceView,
+) -> Result<(), String> {
+    use bezier::render::{RenderSettings, SurfaceSample};
+    /// A trim that asks the viewer's closure.
+    struct Asking<'a>(&'a dyn Fn(glam::DVec2) -> bool);
+    impl bezier::Trim for Asking<'_> {
+        fn trims(&self, uv: glam::DVec2) -> bool {
+            (self.0)(uv)
+        }
+    }
+    let settings = RenderSettings {
+        camera: bezier::zbuffer::Camera {
+            eye: view.eye,
+            target: view.target,
+            up: glam::DVec3::Y,
+            fov_y_degrees: 40.0,
+        },
+        tess_level: view.level,
+        wireframe: view.wireframe,
+        background: view.background,
+    };
+    // The surface's own error is the surface stage's to report; the
+    // render only passes it on.
+    let sample = |uv| {
+        surface(uv)
+            .map(|(position, normal)| SurfaceSample { position, normal })
+            .map_err(|_| bezier::BezierError::Empty)
+    };
+    bezier::render::render_surface(canvas, sample, &Asking(trims), &settings)
+        .map_err(|e| e.to_string())
 }
 
 /// How a stage fared in one frame.

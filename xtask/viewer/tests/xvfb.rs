@@ -111,4 +111,20 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
         dot > 20 && level > 20,
         "{dot} red and {level} blue pixels: the curve scene's construction is not in the window"
     );
+    // The surface scene: the parameter square beside the hill, the
+    // circle cut away (dark) from the rest (light).
+    let picture = window_screenshot(&xvfb_run, "surfaces.png", &["--surfaces"]);
+    let count = |(r, g, b): (f32, f32, f32)| {
+        picture
+            .enumerate()
+            .filter(|(_, c)| {
+                (c.r - r).abs() < 0.03 && (c.g - g).abs() < 0.03 && (c.b - b).abs() < 0.03
+            })
+            .count()
+    };
+    let (cut, kept) = (count((0.2, 0.12, 0.12)), count((0.85, 0.8, 0.6)));
+    assert!(
+        cut > 500 && kept > 5000,
+        "{cut} dark and {kept} light pixels: the surface scene's parameter square is not in the window"
+    );
 }
