@@ -202,6 +202,7 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
 
 /// The scene the window opens on.
 #[derive(Clone, Copy)]
+#[cfg_attr(not(feature = "window"), allow(dead_code))] // no window to open
 enum Start {
     Pipeline,
     Pixels,
