@@ -1,8 +1,8 @@
 //! `cargo xtask view [--reference] [ARGS...]`: the course viewer
 //! (`xtask/viewer`), built with your own stages in it.
 //!
-//! The viewer draws with the code of six topics (lines, circles, fill,
-//! clipping, depth test, Bézier curves and surfaces). Each is checked first: a topic that does not compile is
+//! The viewer draws with the code of seven topics (lines, circles, fill,
+//! clipping, depth test, Bézier curves and surfaces, tessellation). Each is checked first: a topic that does not compile is
 //! left out of the build and named in the window, and the others still
 //! show. `--reference` stages the solutions instead (for tutors). `ARGS`
 //! go to the viewer (`--screenshot FILE`, `--mesh`, `--mode`, ...; see

@@ -1,8 +1,8 @@
 //! The window: the picture on the left, the controls and your stages on
-//! the right, as in seed 004's Figure 2. Four scenes: your pipeline
+//! the right, as in seed 004's Figure 2. Five scenes: your pipeline
 //! ([`crate::render`]), the pixel playground ([`crate::playground`]), the
-//! curve scene ([`crate::curves`]) and the trimmed surface
-//! ([`crate::surfaces`]).
+//! curve scene ([`crate::curves`]), the trimmed surface
+//! ([`crate::surfaces`]) and the tessellation ([`crate::tessellation`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -19,6 +19,7 @@ use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup}
 use crate::render::{Frame, FrameWorker, Settings, frame_worker};
 use crate::stages::{Stages, Status};
 use crate::surfaces::{self, SurfaceDrawing, SurfaceSetup, SurfaceWorker, TrimShape};
+use crate::tessellation::{self as tess, TessDrawing, TessSetup, TessWorker};
 
 /// What the window shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,6 +32,17 @@ pub enum Scene {
     Curves,
     /// The seed's hill, trimmed, tessellated and lit.
     Surfaces,
+    /// Surfaces cut into triangles by uniform or adaptive tessellation.
+    Tessellation,
+}
+
+/// The tessellation scene's state.
+struct Tessellation {
+    setup: TessSetup,
+    worker: TessWorker,
+    asked: Option<TessSetup>,
+    drawing: Option<TessDrawing>,
+    texture: Option<TextureHandle>,
 }
 
 /// The surface scene's state.
@@ -84,6 +96,7 @@ pub struct ViewerApp {
     playground: Playground,
     curves: Curves,
     surfaces: Surfaces,
+    tessellation: Tessellation,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
@@ -151,6 +164,13 @@ impl ViewerApp {
                 drawing: None,
                 textures: None,
             },
+            tessellation: Tessellation {
+                setup: TessSetup::default(),
+                worker: tess::worker(stages.clone()),
+                asked: None,
+                drawing: None,
+                texture: None,
+            },
             meshes,
             selected: 0,
             settings: Settings::default(),
@@ -201,6 +221,7 @@ impl ViewerApp {
             Scene::Pixels => self.playground.drawing.is_some(),
             Scene::Curves => self.curves.drawing.is_some(),
             Scene::Surfaces => self.surfaces.textures.is_some(),
+            Scene::Tessellation => self.tessellation.drawing.is_some(),
         };
         if shown && !self.screenshot_asked {
             let slot = Arc::clone(&self.screenshot);
@@ -295,6 +316,41 @@ impl ViewerApp {
         }
     }
 
+    /// The tessellation scene's set-up, to change what it draws.
+    pub fn tessellation_mut(&mut self) -> &mut TessSetup {
+        &mut self.tessellation.setup
+    }
+
+    /// The tessellation scene's drawing on screen, if one has been drawn.
+    #[must_use]
+    pub fn tessellation_drawing(&self) -> Option<&TessDrawing> {
+        self.tessellation.drawing.as_ref()
+    }
+
+    /// Asks for the tessellation scene's drawing and waits for it, at most
+    /// `limit` (for tests); whether it arrived.
+    pub fn wait_for_tessellation(&mut self, limit: Duration) -> bool {
+        self.ask_tessellation();
+        match self.tessellation.worker.wait(limit) {
+            Some(drawing) => {
+                self.tessellation.drawing = Some(drawing);
+                self.tessellation.texture = None;
+                true
+            }
+            None => self.tessellation.worker.busy_for().is_none(),
+        }
+    }
+
+    /// Asks for the tessellation scene's drawing if its set-up changed.
+    fn ask_tessellation(&mut self) {
+        let scene = &mut self.tessellation;
+        scene.setup.tidy();
+        if scene.asked.as_ref() != Some(&scene.setup) {
+            scene.worker.request(scene.setup);
+            scene.asked = Some(scene.setup);
+        }
+    }
+
     /// Asks for the surface scene's drawing if its set-up changed.
     fn ask_surfaces(&mut self) {
         let surfaces = &mut self.surfaces;
@@ -345,6 +401,7 @@ impl ViewerApp {
         self.playground.worker.set_slow_after(limit);
         self.curves.worker.set_slow_after(limit);
         self.surfaces.worker.set_slow_after(limit);
+        self.tessellation.worker.set_slow_after(limit);
     }
 
     /// The settings the next frame is drawn with.
@@ -462,6 +519,11 @@ impl ViewerApp {
                 self.window_screenshot(ui);
                 return;
             }
+            Scene::Tessellation => {
+                self.show_tessellation(ui);
+                self.window_screenshot(ui);
+                return;
+            }
             Scene::Pipeline => {}
         }
         self.ask();
@@ -488,6 +550,7 @@ impl ViewerApp {
             ui.selectable_value(&mut self.scene, Scene::Pixels, "Pixel playground");
             ui.selectable_value(&mut self.scene, Scene::Curves, "Curves");
             ui.selectable_value(&mut self.scene, Scene::Surfaces, "Surfaces");
+            ui.selectable_value(&mut self.scene, Scene::Tessellation, "Tessellation");
         });
         ui.separator();
     }
@@ -1179,6 +1242,168 @@ impl ViewerApp {
             );
         });
         slow_notice(ui, "Your surface code has been drawing", slow);
+    }
+}
+
+impl ViewerApp {
+    /// The tessellation scene: its controls on the right, the triangles
+    /// on the left.
+    fn show_tessellation(&mut self, ui: &mut egui::Ui) {
+        self.ask_tessellation();
+        if let Some(drawing) = self.tessellation.worker.poll() {
+            self.tessellation.drawing = Some(drawing);
+            self.tessellation.texture = None;
+        }
+        if self.tessellation.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    self.tessellation_controls(ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.tessellation_picture(ui));
+    }
+
+    fn tessellation_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your tessellation");
+        ui.label(
+            "A surface of Bézier or rational patches cut into triangles by your topic 09 code, drawn by the topic's given renderer.",
+        );
+        ui.separator();
+        let setup = &mut self.tessellation.setup;
+        egui::ComboBox::from_label("Surface")
+            .selected_text(setup.surface.label())
+            .show_ui(ui, |ui| {
+                for surface in tess::Surface::ALL {
+                    ui.selectable_value(&mut setup.surface, surface, surface.label());
+                }
+            });
+        ui.horizontal(|ui| {
+            for method in tess::Method::ALL {
+                ui.radio_value(&mut setup.method, method, method.label());
+            }
+        });
+        match setup.method {
+            tess::Method::Uniform => {
+                ui.add(
+                    egui::Slider::new(&mut setup.level, 1..=tess::MAX_LEVEL).text("cells per side"),
+                );
+            }
+            tess::Method::PerPatch => {
+                ui.add(
+                    egui::Slider::new(&mut setup.tolerance, 1e-4..=0.1)
+                        .logarithmic(true)
+                        .text("chord tolerance"),
+                );
+            }
+            tess::Method::FullyAdaptive => {
+                ui.add(
+                    egui::Slider::new(&mut setup.level, 1..=tess::MAX_LEVEL)
+                        .text("start: cells per side"),
+                );
+                let before = setup.test;
+                egui::ComboBox::from_label("Edge test")
+                    .selected_text(setup.test.label())
+                    .show_ui(ui, |ui| {
+                        for test in tess::Test::ALL {
+                            ui.selectable_value(&mut setup.test, test, test.label());
+                        }
+                    });
+                if setup.test != before {
+                    setup.thresholds = setup.test.default_thresholds();
+                }
+                ui.add(
+                    egui::Slider::new(&mut setup.thresholds[0], 1e-3..=1.0)
+                        .logarithmic(true)
+                        .text("threshold"),
+                );
+                if setup.test == tess::Test::OneEdgeComplementary {
+                    ui.add(
+                        egui::Slider::new(&mut setup.thresholds[1], 1e-3..=1.0)
+                            .logarithmic(true)
+                            .text("t2"),
+                    );
+                }
+                ui.add(
+                    egui::Slider::new(&mut setup.depth, 0..=tess::MAX_DEPTH).text("most halvings"),
+                );
+            }
+        }
+        ui.separator();
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut setup.look, tess::Look::Shaded, "Shaded");
+            ui.radio_value(&mut setup.look, tess::Look::Wireframe, "Wireframe");
+            ui.radio_value(&mut setup.look, tess::Look::Both, "Both");
+        });
+        ui.label("View (or drag the picture)");
+        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("turn"));
+        ui.add(egui::Slider::new(&mut setup.pitch, -180.0..=180.0).text("tilt"));
+        if ui.button("Reset").clicked() {
+            *setup = TessSetup::default();
+        }
+        ui.separator();
+        ui.heading("Your stage");
+        let Some(drawing) = &self.tessellation.drawing else {
+            ui.label("drawing …");
+            return;
+        };
+        let name = Stages::default().tessellate.name;
+        ui.label(
+            RichText::new(format!("{name}: {}", drawing.status.describe()))
+                .color(status_colour(&drawing.status)),
+        );
+        ui.label(RichText::new(drawing.setup.method.source()).small().weak());
+        if let Some(result) = &drawing.result {
+            ui.label(format!(
+                "{} vertices, {} triangles",
+                result.vertices, result.triangles
+            ));
+        }
+    }
+
+    fn tessellation_picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.tessellation.worker.slow_for();
+        let scene = &mut self.tessellation;
+        let Some(result) = scene.drawing.as_ref().and_then(|d| d.result.as_ref()) else {
+            ui.label(match &scene.drawing {
+                None => "tessellating …",
+                Some(_) => "no triangles: your stage did not make a mesh (see the panel)",
+            });
+            slow_notice(ui, "Your tessellation has been running", slow);
+            return;
+        };
+        let texture = scene
+            .texture
+            .get_or_insert_with(|| {
+                ui.ctx().load_texture(
+                    "tessellation",
+                    colour_image(&result.canvas),
+                    TextureOptions::NEAREST,
+                )
+            })
+            .clone();
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
+        let side = result.canvas.width().max(1) as f32;
+        let scale = (available.x / side).min(available.y / side);
+        let scale = if scale >= 1.0 { scale.floor() } else { scale };
+        let response = ui.add(
+            egui::Image::from_texture(egui::load::SizedTexture::new(
+                texture.id(),
+                egui::vec2(side * scale, side * scale),
+            ))
+            .sense(egui::Sense::drag()),
+        );
+        if response.dragged() {
+            let delta = response.drag_delta();
+            let setup = &mut scene.setup;
+            setup.yaw = (setup.yaw - f64::from(delta.x) * 0.5).clamp(-180.0, 180.0);
+            setup.pitch = (setup.pitch - f64::from(delta.y) * 0.5).clamp(-180.0, 180.0);
+        }
+        slow_notice(ui, "Your tessellation has been running", slow);
     }
 }
 

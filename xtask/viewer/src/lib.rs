@@ -22,6 +22,7 @@ pub mod playground;
 pub mod render;
 pub mod stages;
 pub mod surfaces;
+pub mod tessellation;
 pub mod worker;
 
 #[cfg(feature = "window")]

@@ -86,17 +86,22 @@ struct Args {
     time_limit: f64,
     /// Open the window on the pixel playground (your lines, circle and
     /// triangle on a magnified grid, beside their definitions).
-    #[arg(long, conflicts_with_all = ["curves", "surfaces"])]
+    #[arg(long, conflicts_with_all = ["curves", "surfaces", "tessellation"])]
     pixels: bool,
     /// Open the window on the curve scene (your de Casteljau drawing a
     /// Bézier curve and its construction, beside the definition's curve).
-    #[arg(long, conflicts_with = "surfaces")]
+    #[arg(long, conflicts_with_all = ["surfaces", "tessellation"])]
     curves: bool,
     /// Open the window on the surface scene (the seed's hill evaluated,
     /// trimmed and rendered by your topic 07 code; choose the trim, its
     /// parameters and the tessellation level).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "tessellation")]
     surfaces: bool,
+    /// Open the window on the tessellation scene (surfaces cut into
+    /// triangles by your topic 09 code: uniform, per patch, fully
+    /// adaptive).
+    #[arg(long)]
+    tessellation: bool,
     /// The surface scene's first trim.
     #[arg(long, value_enum, default_value_t = Trim::Circle, requires = "surfaces")]
     trim: Trim,
@@ -164,6 +169,8 @@ fn main() -> Result<()> {
                 };
                 surface.trim.shape = args.trim.shape();
                 Start::Surfaces(surface)
+            } else if args.tessellation {
+                Start::Tessellation
             } else {
                 Start::Pipeline
             },
@@ -208,6 +215,7 @@ enum Start {
     Pixels,
     Curves,
     Surfaces(SurfaceSetup),
+    Tessellation,
 }
 
 /// Opens the window.
@@ -243,6 +251,7 @@ fn window(
             app.set_scene(course_viewer::Scene::Surfaces);
             *app.surfaces_mut() = setup;
         }
+        Start::Tessellation => app.set_scene(course_viewer::Scene::Tessellation),
     }
     if let Some(path) = window_screenshot {
         app.screenshot_window_to(path);

@@ -14,7 +14,8 @@
 //! scene, `07-bezier`'s `de_casteljau::de_casteljau`; for the surface scene,
 //! `07-bezier`'s `surface::partial_derivatives` and `surface::normal` (the
 //! seed's hill), its trims (`simple_trim`, `newton_trim`) and
-//! `render::render_surface`.
+//! `render::render_surface`; for the tessellation scene, `09-tessellation`'s
+//! `uniform`, `per_patch`, `fully_adaptive` and `edge_tests`.
 //!
 //! A topic that does not compile is left out of the build (`cargo xtask
 //! view` checks each one first) and its stage is shown as missing.
@@ -59,6 +60,11 @@ pub type SurfaceRenderStage = dyn Fn(
         &dyn Fn(glam::DVec2) -> bool,
         &SurfaceView,
     ) -> Result<(), String>
+    + Send
+    + Sync;
+
+/// Tessellates a surface and draws the triangles (the tessellation scene).
+pub type TessellateStage = dyn Fn(&crate::tessellation::TessSetup) -> Result<crate::tessellation::Tessellated, String>
     + Send
     + Sync;
 
@@ -123,6 +129,8 @@ pub struct Stages {
     pub trim: Stage<TrimStage>,
     /// Tessellating, trimming and shading the patch (the surface scene).
     pub surface_render: Stage<SurfaceRenderStage>,
+    /// Cutting surfaces into triangles (the tessellation scene).
+    pub tessellate: Stage<TessellateStage>,
 }
 
 /// The four stages without code: what a build without any topic shows.
@@ -182,6 +190,11 @@ impl Default for Stages {
             surface_render: Stage {
                 name: "render",
                 source: "07-bezier · render::render_surface, render::phong",
+                run: None,
+            },
+            tessellate: Stage {
+                name: "tessellation",
+                source: "09-tessellation · uniform, per_patch, fully_adaptive, edge_tests",
                 run: None,
             },
         }
@@ -256,6 +269,10 @@ impl Stages {
             stages.surface.run = Some(Arc::new(hill_point));
             stages.trim.run = Some(Arc::new(build_trim));
             stages.surface_render.run = Some(Arc::new(render_surface));
+        }
+        #[cfg(feature = "tessellation")]
+        {
+            stages.tessellate.run = Some(Arc::new(tessellate));
         }
         stages
     }
@@ -348,6 +365,84 @@ fn render_surface(
     };
     bezier::render::render_surface(canvas, sample, &Asking(trims), &settings)
         .map_err(|e| e.to_string())
+}
+
+/// Your tessellation of a set-up's surface, drawn by topic 09's renderer.
+#[cfg(feature = "tessellation")]
+fn tessellate(
+    setup: &crate::tessellation::TessSetup,
+) -> Result<crate::tessellation::Tessellated, String> {
+    use crate::tessellation::{Look, Method, Surface, Tessellated, Test};
+    use tessellation::bezier::BezierPatch;
+    use tessellation::edge_tests::EdgeTest;
+    use tessellation::mesh::Mesh;
+    use tessellation::patch_grid::{GridPatch, PatchGrid};
+    use tessellation::render::{Style, View};
+
+    /// Every patch of `grid` by the set-up's method, in one mesh.
+    fn patches<P: GridPatch>(
+        grid: &PatchGrid<P>,
+        setup: &crate::tessellation::TessSetup,
+        test: EdgeTest,
+    ) -> Result<Mesh, String> {
+        let error = |e: tessellation::error::TessError| e.to_string();
+        if setup.method == Method::PerPatch {
+            return tessellation::per_patch::tessellate_patch_grid(grid, setup.tolerance)
+                .map_err(error);
+        }
+        let n = setup.level as usize;
+        let mut mesh = Mesh::new();
+        for row in 0..grid.rows() {
+            for col in 0..grid.cols() {
+                let patch = grid.patch(row, col);
+                let mut part =
+                    tessellation::uniform::tessellate_uniform(patch, n, n).map_err(error)?;
+                if setup.method == Method::FullyAdaptive {
+                    part = tessellation::fully_adaptive::refine(patch, &part, test, setup.depth)
+                        .map_err(error)?;
+                }
+                let offset = u32::try_from(mesh.positions.len()).map_err(|e| e.to_string())?;
+                mesh.positions.extend(&part.positions);
+                mesh.normals.extend(&part.normals);
+                mesh.uvs.extend(&part.uvs);
+                mesh.triangles
+                    .extend(part.triangles.iter().map(|t| t.map(|k| k + offset)));
+            }
+        }
+        Ok(mesh)
+    }
+
+    let [t, t2] = setup.thresholds;
+    let test = match setup.test {
+        Test::OneEdgeNormal => EdgeTest::OneEdgeNormal { t1: t },
+        Test::OneEdgeComplementary => EdgeTest::OneEdgeComplementary { t1: t, t2 },
+        Test::TwoTriangle => EdgeTest::TwoTriangle { t3: t },
+        Test::FirstOrderNeighbour => EdgeTest::FirstOrderNeighbour { t3: t },
+        Test::VectorDeviationFlat => EdgeTest::VectorDeviationFlat { t1: t },
+        Test::LocalFlat => EdgeTest::LocalFlat { t1: t },
+        Test::UmbrellaFlat => EdgeTest::UmbrellaFlat { t1: t },
+    };
+    let single = |patch| PatchGrid::try_new(1, 1, vec![patch]).map_err(|e| e.to_string());
+    let mesh = match setup.surface {
+        Surface::SeedSurface => patches(&single(BezierPatch::seed_surface())?, setup, test)?,
+        Surface::Hill => patches(&single(BezierPatch::seed_hill())?, setup, test)?,
+        Surface::Patches => patches(&PatchGrid::example(), setup, test)?,
+        Surface::Torus => patches(&PatchGrid::torus(0.7, 0.25), setup, test)?,
+    };
+    let style = match setup.look {
+        Look::Shaded => Style::Shaded,
+        Look::Wireframe => Style::Wireframe,
+        Look::Both => Style::ShadedWireframe,
+    };
+    let view = View {
+        yaw: setup.yaw.to_radians(),
+        pitch: setup.pitch.to_radians(),
+    };
+    Ok(Tessellated {
+        canvas: tessellation::render::render(&mesh, view, style, setup.size, setup.size),
+        vertices: mesh.vertex_count(),
+        triangles: mesh.triangle_count(),
+    })
 }
 
 /// How a stage fared in one frame.

@@ -508,3 +508,41 @@ fn an_unwritten_render_is_named_in_the_surface_scene() {
         "nothing is drawn in its place"
     );
 }
+
+/// Waits for the tessellation scene's drawing and lets the window show it.
+fn settle_tessellation(harness: &mut Harness<'static, ViewerApp>) {
+    assert!(
+        harness
+            .state_mut()
+            .wait_for_tessellation(Duration::from_secs(60)),
+        "no tessellation within a minute"
+    );
+    harness.run_steps(3);
+}
+
+#[test]
+fn the_tessellation_scene_draws_your_triangles() {
+    let mut harness = harness(Stages::yours());
+    harness.get_by_label("Tessellation").click();
+    harness.run_steps(2);
+    settle_tessellation(&mut harness);
+    harness.get_by_label("tessellation: ok");
+    harness.get_by_label("400 vertices, 512 triangles");
+    harness.snapshot("viewer_tessellation");
+
+    // Fully adaptive, by its radio button: the edge test refines the start.
+    harness.get_by_label("Fully adaptive").click();
+    harness.run_steps(2);
+    settle_tessellation(&mut harness);
+    harness.get_by_label("Edge test");
+    let drawing = harness.state().tessellation_drawing().unwrap();
+    assert_eq!(
+        drawing.setup.method,
+        course_viewer::tessellation::Method::FullyAdaptive
+    );
+    let triangles = drawing.result.as_ref().unwrap().triangles;
+    assert!(triangles > 512, "{triangles} triangles");
+    harness.get_by_label(
+        "09-tessellation · fully_adaptive::refine with edge_tests, from tessellate_uniform",
+    );
+}

@@ -127,4 +127,18 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
         cut > 500 && kept > 5000,
         "{cut} dark and {kept} light pixels: the surface scene's parameter square is not in the window"
     );
+    // The tessellation scene: the torus on the renderer's white ground.
+    let picture = window_screenshot(&xvfb_run, "tessellation.png", &["--tessellation"]);
+    let white = picture
+        .enumerate()
+        .filter(|(_, c)| c.r > 0.99 && c.g > 0.99 && c.b > 0.99)
+        .count();
+    let blue = picture
+        .enumerate()
+        .filter(|(_, c)| c.b > 0.5 && c.b > c.r + 0.2)
+        .count();
+    assert!(
+        white > 40_000 && blue > 20_000,
+        "{white} white and {blue} blue pixels: the tessellation scene's torus is not in the window"
+    );
 }

@@ -1,0 +1,285 @@
+//! The tessellation scene (topic 09): a surface of Bézier or rational
+//! patches cut into triangles by your uniform, per-patch or fully
+//! adaptive tessellation — seed 001's program, in which the user chooses
+//! the surface, the method and its level, tolerance or edge test and
+//! looks at the triangles. The picture is drawn by topic 09's given
+//! renderer (course code for looking at meshes); the triangles are yours.
+
+use canvas::Canvas;
+
+use crate::stages::{Stages, Status, guarded};
+use crate::worker::Worker;
+
+/// The surfaces to tessellate (topic 09's examples).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Surface {
+    /// Seed 001's bicubic patch (Slika 2.2).
+    SeedSurface,
+    /// Seed 000's hill.
+    Hill,
+    /// Several patches joined with tangent continuity (Slika 2.3).
+    Patches,
+    /// The NURBS torus: 16 rational biquadratic patches.
+    Torus,
+}
+
+impl Surface {
+    /// Every surface, in the order of the controls.
+    pub const ALL: [Self; 4] = [Self::SeedSurface, Self::Hill, Self::Patches, Self::Torus];
+
+    /// Its name on screen.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::SeedSurface => "The seed's patch",
+            Self::Hill => "The hill",
+            Self::Patches => "Several patches",
+            Self::Torus => "NURBS torus (16 rational patches)",
+        }
+    }
+}
+
+/// The three methods of the topic's tasks 1–3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// The same grid on every patch (task 1).
+    Uniform,
+    /// A grid per patch from a chord tolerance, stitched without cracks
+    /// (task 2).
+    PerPatch,
+    /// A uniform start refined edge by edge where an edge test asks for it
+    /// (task 3).
+    FullyAdaptive,
+}
+
+impl Method {
+    /// Every method, in the order of the controls.
+    pub const ALL: [Self; 3] = [Self::Uniform, Self::PerPatch, Self::FullyAdaptive];
+
+    /// Its name on screen.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Uniform => "Uniform",
+            Self::PerPatch => "Per patch",
+            Self::FullyAdaptive => "Fully adaptive",
+        }
+    }
+
+    /// Your code that does it.
+    #[must_use]
+    pub fn source(self) -> &'static str {
+        match self {
+            Self::Uniform => "09-tessellation · uniform::tessellate_uniform",
+            Self::PerPatch => {
+                "09-tessellation · per_patch::tessellate_patch_grid (patch_resolution, curve_segments)"
+            }
+            Self::FullyAdaptive => {
+                "09-tessellation · fully_adaptive::refine with edge_tests, from tessellate_uniform"
+            }
+        }
+    }
+}
+
+/// The seven edge tests of seed 001 §2.2.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Test {
+    /// (2.1), threshold `t1`.
+    OneEdgeNormal,
+    /// (2.3), thresholds `t1` and `t2`.
+    OneEdgeComplementary,
+    /// (2.4), threshold `t3`.
+    TwoTriangle,
+    /// (2.5), threshold `t3`.
+    FirstOrderNeighbour,
+    /// (2.6), threshold `t1`.
+    VectorDeviationFlat,
+    /// Local flatness, threshold `t1`.
+    LocalFlat,
+    /// (2.7), threshold `t1`.
+    UmbrellaFlat,
+}
+
+impl Test {
+    /// Every test, in the order of the controls.
+    pub const ALL: [Self; 7] = [
+        Self::OneEdgeNormal,
+        Self::OneEdgeComplementary,
+        Self::TwoTriangle,
+        Self::FirstOrderNeighbour,
+        Self::VectorDeviationFlat,
+        Self::LocalFlat,
+        Self::UmbrellaFlat,
+    ];
+
+    /// Its name on screen.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::OneEdgeNormal => "One-edge normal (2.1)",
+            Self::OneEdgeComplementary => "One-edge complementary (2.3)",
+            Self::TwoTriangle => "Two-triangle (2.4)",
+            Self::FirstOrderNeighbour => "First-order neighbour (2.5)",
+            Self::VectorDeviationFlat => "Vector deviation flatness (2.6)",
+            Self::LocalFlat => "Local flatness",
+            Self::UmbrellaFlat => "Umbrella flatness (2.7)",
+        }
+    }
+
+    /// The thresholds the topic's tests use for it: a start that refines
+    /// visibly but not without end.
+    #[must_use]
+    pub fn default_thresholds(self) -> [f64; 2] {
+        match self {
+            Self::OneEdgeNormal => [0.2, 0.3],
+            Self::OneEdgeComplementary => [0.2, 0.3],
+            Self::TwoTriangle | Self::FirstOrderNeighbour | Self::LocalFlat => [0.1, 0.3],
+            Self::VectorDeviationFlat => [0.003, 0.3],
+            Self::UmbrellaFlat => [0.95, 0.3],
+        }
+    }
+}
+
+/// How the triangles are shown (topic 09's `render::Style`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Look {
+    /// The lit surface.
+    Shaded,
+    /// The visible edges alone.
+    Wireframe,
+    /// The lit surface with its edges.
+    Both,
+}
+
+/// What to tessellate and how.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TessSetup {
+    /// The surface.
+    pub surface: Surface,
+    /// The method.
+    pub method: Method,
+    /// Cells per side of each patch (uniform), or of the start of the
+    /// fully adaptive refinement, `1 ..= 64`.
+    pub level: u32,
+    /// The chord tolerance of the per-patch method.
+    pub tolerance: f64,
+    /// The fully adaptive method's edge test.
+    pub test: Test,
+    /// Its thresholds (the second only for the complementary test).
+    pub thresholds: [f64; 2],
+    /// The most times an edge is halved.
+    pub depth: u32,
+    /// How the triangles show.
+    pub look: Look,
+    /// The view's turn about the z axis, degrees.
+    pub yaw: f64,
+    /// Its tilt about the x axis, degrees.
+    pub pitch: f64,
+    /// The picture's side in pixels.
+    pub size: u32,
+}
+
+/// The highest level offered.
+pub const MAX_LEVEL: u32 = 64;
+/// The deepest refinement offered (topic 09's `MAX_DEPTH`).
+pub const MAX_DEPTH: u32 = 12;
+
+impl Default for TessSetup {
+    /// The NURBS torus, uniform at level 4 per patch, shaded with its
+    /// edges, seen as in the topic's figures.
+    fn default() -> Self {
+        Self {
+            surface: Surface::Torus,
+            method: Method::Uniform,
+            level: 4,
+            tolerance: 0.01,
+            test: Test::OneEdgeNormal,
+            thresholds: Test::OneEdgeNormal.default_thresholds(),
+            depth: 4,
+            look: Look::Both,
+            yaw: 0.5f64.to_degrees(),
+            pitch: -0.9f64.to_degrees(),
+            size: 480,
+        }
+    }
+}
+
+impl TessSetup {
+    /// Keeps the set-up drawable: every number in range and finite.
+    pub fn tidy(&mut self) {
+        let defaults = Self::default();
+        let finite_or = |v: f64, fallback: f64| if v.is_finite() { v } else { fallback };
+        self.level = self.level.clamp(1, MAX_LEVEL);
+        self.tolerance = finite_or(self.tolerance, defaults.tolerance).clamp(1e-5, 1.0);
+        for (t, d) in self
+            .thresholds
+            .iter_mut()
+            .zip(self.test.default_thresholds())
+        {
+            *t = finite_or(*t, d).clamp(1e-5, 2.0);
+        }
+        self.depth = self.depth.min(MAX_DEPTH);
+        self.yaw = finite_or(self.yaw, defaults.yaw).clamp(-180.0, 180.0);
+        self.pitch = finite_or(self.pitch, defaults.pitch).clamp(-180.0, 180.0);
+        self.size = self.size.clamp(16, 2048);
+    }
+}
+
+/// What a tessellation produced, drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tessellated {
+    /// The picture.
+    pub canvas: Canvas,
+    /// The mesh's vertices.
+    pub vertices: usize,
+    /// Its triangles.
+    pub triangles: usize,
+}
+
+/// What the scene shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TessDrawing {
+    /// What was drawn.
+    pub setup: TessSetup,
+    /// The mesh and its picture, when your code made one.
+    pub result: Option<Tessellated>,
+    /// How your tessellation fared.
+    pub status: Status,
+}
+
+/// The worker that tessellates.
+pub type TessWorker = Worker<TessSetup, TessDrawing>;
+
+/// A worker tessellating with `stages`.
+#[must_use]
+pub fn worker(stages: Stages) -> TessWorker {
+    Worker::start(move |setup: TessSetup| draw(&setup, &stages))
+}
+
+/// Tessellates and draws `setup` with your code.
+#[must_use]
+pub fn draw(setup: &TessSetup, stages: &Stages) -> TessDrawing {
+    let mut setup = *setup;
+    setup.tidy();
+    let Some(run) = &stages.tessellate.run else {
+        return TessDrawing {
+            setup,
+            result: None,
+            status: Status::Missing,
+        };
+    };
+    let mut status = Status::Unused;
+    let result = match guarded(&mut status, || run(&setup)) {
+        Some(Ok(result)) => Some(result),
+        Some(Err(error)) => {
+            status = Status::Failed(error);
+            None
+        }
+        None => None,
+    };
+    TessDrawing {
+        setup,
+        result,
+        status,
+    }
+}
