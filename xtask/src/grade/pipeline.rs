@@ -32,7 +32,7 @@ pub const STAGES: [(&str, &str); 4] = [
 
 /// The viewer's features and topics in `cargo xtask view`: the pipeline's,
 /// the pixel playground's circle and the curve scene's de Casteljau.
-pub const VIEWER_TOPICS: [(&str, &str); 7] = [
+pub const VIEWER_TOPICS: [(&str, &str); 8] = [
     STAGES[0],
     ("circles", "02-circles"),
     STAGES[1],
@@ -40,6 +40,7 @@ pub const VIEWER_TOPICS: [(&str, &str); 7] = [
     STAGES[3],
     ("bezier", "07-bezier"),
     ("tessellation", "09-tessellation"),
+    ("gpu-tessellation", "10-gpu-tessellation"),
 ];
 
 /// How long one picture may take.

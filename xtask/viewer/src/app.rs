@@ -1,8 +1,9 @@
 //! The window: the picture on the left, the controls and your stages on
-//! the right, as in seed 004's Figure 2. Five scenes: your pipeline
+//! the right, as in seed 004's Figure 2. Six scenes: your pipeline
 //! ([`crate::render`]), the pixel playground ([`crate::playground`]), the
 //! curve scene ([`crate::curves`]), the trimmed surface
-//! ([`crate::surfaces`]) and the tessellation ([`crate::tessellation`]).
+//! ([`crate::surfaces`]), the tessellation ([`crate::tessellation`]) and
+//! the GPU passes ([`crate::gpu_scene`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -14,6 +15,7 @@ use egui::{Color32, RichText, TextureHandle, TextureOptions};
 use scene::Mode;
 
 use crate::curves::{self, CurveDrawing, CurveSetup, CurveWorker};
+use crate::gpu_scene::{self, GpuDrawing, GpuSetup, GpuWorker};
 use crate::meshes::MeshEntry;
 use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
 use crate::render::{Frame, FrameWorker, Settings, frame_worker};
@@ -34,6 +36,17 @@ pub enum Scene {
     Surfaces,
     /// Surfaces cut into triangles by uniform or adaptive tessellation.
     Tessellation,
+    /// Topic 10's passes on the GPU.
+    Gpu,
+}
+
+/// The GPU scene's state.
+struct GpuView {
+    setup: GpuSetup,
+    worker: GpuWorker,
+    asked: Option<GpuSetup>,
+    drawing: Option<GpuDrawing>,
+    texture: Option<TextureHandle>,
 }
 
 /// The tessellation scene's state.
@@ -97,6 +110,7 @@ pub struct ViewerApp {
     curves: Curves,
     surfaces: Surfaces,
     tessellation: Tessellation,
+    gpu: GpuView,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
@@ -120,8 +134,9 @@ pub struct ViewerApp {
     screenshot_asked: bool,
     /// Where the window's integration hands the screenshot over.
     screenshot: Arc<std::sync::Mutex<Option<Arc<egui::ColorImage>>>>,
-    /// Whether the stage list says how long the frame took (off in
-    /// snapshot tests, where the time would differ from run to run).
+    /// Whether the panels say what differs from run to run and machine to
+    /// machine: how long a frame took, the GPU's name (off in snapshot
+    /// tests).
     show_timing: bool,
 }
 
@@ -167,6 +182,13 @@ impl ViewerApp {
             tessellation: Tessellation {
                 setup: TessSetup::default(),
                 worker: tess::worker(stages.clone()),
+                asked: None,
+                drawing: None,
+                texture: None,
+            },
+            gpu: GpuView {
+                setup: GpuSetup::default(),
+                worker: gpu_scene::worker(stages.clone()),
                 asked: None,
                 drawing: None,
                 texture: None,
@@ -222,6 +244,7 @@ impl ViewerApp {
             Scene::Curves => self.curves.drawing.is_some(),
             Scene::Surfaces => self.surfaces.textures.is_some(),
             Scene::Tessellation => self.tessellation.drawing.is_some(),
+            Scene::Gpu => self.gpu.drawing.is_some(),
         };
         if shown && !self.screenshot_asked {
             let slot = Arc::clone(&self.screenshot);
@@ -341,6 +364,41 @@ impl ViewerApp {
         }
     }
 
+    /// The GPU scene's set-up, to change what it draws.
+    pub fn gpu_mut(&mut self) -> &mut GpuSetup {
+        &mut self.gpu.setup
+    }
+
+    /// The GPU scene's drawing on screen, if one has been drawn.
+    #[must_use]
+    pub fn gpu_drawing(&self) -> Option<&GpuDrawing> {
+        self.gpu.drawing.as_ref()
+    }
+
+    /// Asks for the GPU scene's drawing and waits for it, at most `limit`
+    /// (for tests); whether it arrived.
+    pub fn wait_for_gpu(&mut self, limit: Duration) -> bool {
+        self.ask_gpu();
+        match self.gpu.worker.wait(limit) {
+            Some(drawing) => {
+                self.gpu.drawing = Some(drawing);
+                self.gpu.texture = None;
+                true
+            }
+            None => self.gpu.worker.busy_for().is_none(),
+        }
+    }
+
+    /// Asks for the GPU scene's drawing if its set-up changed.
+    fn ask_gpu(&mut self) {
+        let scene = &mut self.gpu;
+        scene.setup.tidy();
+        if scene.asked.as_ref() != Some(&scene.setup) {
+            scene.worker.request(scene.setup);
+            scene.asked = Some(scene.setup);
+        }
+    }
+
     /// Asks for the tessellation scene's drawing if its set-up changed.
     fn ask_tessellation(&mut self) {
         let scene = &mut self.tessellation;
@@ -402,6 +460,7 @@ impl ViewerApp {
         self.curves.worker.set_slow_after(limit);
         self.surfaces.worker.set_slow_after(limit);
         self.tessellation.worker.set_slow_after(limit);
+        self.gpu.worker.set_slow_after(limit);
     }
 
     /// The settings the next frame is drawn with.
@@ -524,6 +583,11 @@ impl ViewerApp {
                 self.window_screenshot(ui);
                 return;
             }
+            Scene::Gpu => {
+                self.show_gpu(ui);
+                self.window_screenshot(ui);
+                return;
+            }
             Scene::Pipeline => {}
         }
         self.ask();
@@ -551,6 +615,7 @@ impl ViewerApp {
             ui.selectable_value(&mut self.scene, Scene::Curves, "Curves");
             ui.selectable_value(&mut self.scene, Scene::Surfaces, "Surfaces");
             ui.selectable_value(&mut self.scene, Scene::Tessellation, "Tessellation");
+            ui.selectable_value(&mut self.scene, Scene::Gpu, "GPU");
         });
         ui.separator();
     }
@@ -1113,41 +1178,7 @@ impl ViewerApp {
         );
         ui.separator();
         let setup = &mut self.surfaces.setup;
-        let trim = &mut setup.trim;
-        egui::ComboBox::from_label("Trim")
-            .selected_text(trim.shape.label())
-            .show_ui(ui, |ui| {
-                for shape in TrimShape::ALL {
-                    ui.selectable_value(&mut trim.shape, shape, shape.label());
-                }
-            });
-        if trim.shape != TrimShape::None {
-            ui.add(egui::Slider::new(&mut trim.centre.x, 0.0..=1.0).text("centre u"));
-            ui.add(egui::Slider::new(&mut trim.centre.y, 0.0..=1.0).text("centre v"));
-        }
-        match trim.shape {
-            TrimShape::None => {}
-            TrimShape::Rectangle => {
-                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.5).text("half width"));
-                ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.5).text("half height"));
-            }
-            TrimShape::Circle => {
-                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius"));
-            }
-            TrimShape::Ellipse => {
-                ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius in u"));
-                ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.7).text("radius in v"));
-            }
-            TrimShape::NewtonQuadratic | TrimShape::NewtonCubic | TrimShape::Nested => {
-                ui.add(egui::Slider::new(&mut trim.scale, 0.1..=2.0).text("scale"));
-                ui.add(egui::Slider::new(&mut trim.iterations, 1..=30).text("Newton steps"));
-                ui.add(
-                    egui::Slider::new(&mut trim.epsilon, 1e-4..=0.1)
-                        .logarithmic(true)
-                        .text("ε"),
-                );
-            }
-        }
+        trim_controls(ui, &mut setup.trim);
         ui.separator();
         ui.add(
             egui::Slider::new(&mut setup.level, 1..=surfaces::MAX_LEVEL).text("tessellation level"),
@@ -1404,6 +1435,189 @@ impl ViewerApp {
             setup.pitch = (setup.pitch - f64::from(delta.y) * 0.5).clamp(-180.0, 180.0);
         }
         slow_notice(ui, "Your tessellation has been running", slow);
+    }
+}
+
+impl ViewerApp {
+    /// The GPU scene: its controls on the right, the picture on the left.
+    fn show_gpu(&mut self, ui: &mut egui::Ui) {
+        self.ask_gpu();
+        if let Some(drawing) = self.gpu.worker.poll() {
+            self.gpu.drawing = Some(drawing);
+            self.gpu.texture = None;
+        }
+        if self.gpu.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    self.gpu_controls(ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.gpu_picture(ui));
+    }
+
+    fn gpu_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your GPU passes");
+        ui.label(
+            "Patches tessellated and drawn on the GPU by your topic 10 code: control pass, primitive generator, evaluation pass, shading, trimming and wireframe.",
+        );
+        ui.separator();
+        let setup = &mut self.gpu.setup;
+        egui::ComboBox::from_label("Surface")
+            .selected_text(setup.surface.label())
+            .show_ui(ui, |ui| {
+                for surface in gpu_scene::GpuSurface::ALL {
+                    ui.selectable_value(&mut setup.surface, surface, surface.label());
+                }
+            });
+        ui.horizontal(|ui| {
+            ui.radio_value(
+                &mut setup.levels,
+                gpu_scene::Levels::Uniform,
+                "Uniform levels",
+            );
+            ui.radio_value(&mut setup.levels, gpu_scene::Levels::Adaptive, "Adaptive");
+        });
+        match setup.levels {
+            gpu_scene::Levels::Uniform => {
+                ui.add(egui::Slider::new(&mut setup.level, 1.0..=64.0).text("level"));
+            }
+            gpu_scene::Levels::Adaptive => {
+                ui.add(
+                    egui::Slider::new(&mut setup.pixels_per_segment, 2.0..=100.0)
+                        .text("pixels per segment"),
+                );
+            }
+        }
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut setup.spacing, gpu_scene::Spacing::Equal, "equal");
+            ui.radio_value(
+                &mut setup.spacing,
+                gpu_scene::Spacing::FractionalEven,
+                "fractional even",
+            );
+            ui.radio_value(
+                &mut setup.spacing,
+                gpu_scene::Spacing::FractionalOdd,
+                "fractional odd",
+            );
+        });
+        ui.separator();
+        trim_controls(ui, &mut setup.trim);
+        ui.separator();
+        ui.checkbox(&mut setup.wireframe, "Wireframe");
+        ui.label("Camera (or drag the picture; scroll to zoom)");
+        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("around"));
+        ui.add(egui::Slider::new(&mut setup.pitch, -89.0..=89.0).text("above"));
+        ui.add(egui::Slider::new(&mut setup.distance, 0.8..=10.0).text("distance"));
+        if ui.button("Reset").clicked() {
+            *setup = GpuSetup::default();
+        }
+        ui.separator();
+        ui.heading("Your stages");
+        let Some(drawing) = &self.gpu.drawing else {
+            ui.label("drawing on the GPU …");
+            return;
+        };
+        for stage in &drawing.stages {
+            ui.label(
+                RichText::new(format!("{}: {}", stage.name, stage.status.describe()))
+                    .color(status_colour(&stage.status)),
+            );
+            ui.label(RichText::new(stage.source).small().weak());
+        }
+        if drawing.canvas.is_some() {
+            ui.label(format!("{} triangles", drawing.triangles));
+        }
+        if self.show_timing {
+            ui.label(RichText::new(format!("device: {}", drawing.device)).small());
+        }
+    }
+
+    fn gpu_picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.gpu.worker.slow_for();
+        let scene = &mut self.gpu;
+        let Some(canvas) = scene.drawing.as_ref().and_then(|d| d.canvas.as_ref()) else {
+            ui.label(match &scene.drawing {
+                None => "drawing on the GPU …",
+                Some(_) => "nothing drawn: a stage it needs did not run (see the panel)",
+            });
+            slow_notice(ui, "Your GPU passes have been running", slow);
+            return;
+        };
+        let texture = scene
+            .texture
+            .get_or_insert_with(|| {
+                ui.ctx()
+                    .load_texture("gpu", colour_image(canvas), TextureOptions::NEAREST)
+            })
+            .clone();
+        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
+        let (w, h) = (canvas.width().max(1) as f32, canvas.height().max(1) as f32);
+        let scale = (available.x / w).min(available.y / h);
+        let scale = if scale >= 1.0 { scale.floor() } else { scale };
+        let response = ui.add(
+            egui::Image::from_texture(egui::load::SizedTexture::new(
+                texture.id(),
+                egui::vec2(w * scale, h * scale),
+            ))
+            .sense(egui::Sense::drag()),
+        );
+        let setup = &mut scene.setup;
+        if response.dragged() {
+            let delta = response.drag_delta();
+            setup.yaw = (setup.yaw - delta.x * 0.5).clamp(-180.0, 180.0);
+            setup.pitch = (setup.pitch + delta.y * 0.5).clamp(-89.0, 89.0);
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                setup.distance = (setup.distance * (1.0 - scroll * 0.002)).clamp(0.8, 10.0);
+            }
+        }
+        slow_notice(ui, "Your GPU passes have been running", slow);
+    }
+}
+
+/// The trim's shape and parameters (the surface and GPU scenes).
+fn trim_controls(ui: &mut egui::Ui, trim: &mut surfaces::TrimSetup) {
+    egui::ComboBox::from_label("Trim")
+        .selected_text(trim.shape.label())
+        .show_ui(ui, |ui| {
+            for shape in TrimShape::ALL {
+                ui.selectable_value(&mut trim.shape, shape, shape.label());
+            }
+        });
+    if trim.shape != TrimShape::None {
+        ui.add(egui::Slider::new(&mut trim.centre.x, 0.0..=1.0).text("centre u"));
+        ui.add(egui::Slider::new(&mut trim.centre.y, 0.0..=1.0).text("centre v"));
+    }
+    match trim.shape {
+        TrimShape::None => {}
+        TrimShape::Rectangle => {
+            ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.5).text("half width"));
+            ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.5).text("half height"));
+        }
+        TrimShape::Circle => {
+            ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius"));
+        }
+        TrimShape::Ellipse => {
+            ui.add(egui::Slider::new(&mut trim.size.x, 0.01..=0.7).text("radius in u"));
+            ui.add(egui::Slider::new(&mut trim.size.y, 0.01..=0.7).text("radius in v"));
+        }
+        TrimShape::NewtonQuadratic | TrimShape::NewtonCubic | TrimShape::Nested => {
+            ui.add(egui::Slider::new(&mut trim.scale, 0.1..=2.0).text("scale"));
+            ui.add(egui::Slider::new(&mut trim.iterations, 1..=30).text("Newton steps"));
+            ui.add(
+                egui::Slider::new(&mut trim.epsilon, 1e-4..=0.1)
+                    .logarithmic(true)
+                    .text("ε"),
+            );
+        }
     }
 }
 

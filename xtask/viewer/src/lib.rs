@@ -17,6 +17,7 @@
 #[cfg(feature = "window")]
 pub mod app;
 pub mod curves;
+pub mod gpu_scene;
 pub mod meshes;
 pub mod playground;
 pub mod render;

@@ -86,22 +86,26 @@ struct Args {
     time_limit: f64,
     /// Open the window on the pixel playground (your lines, circle and
     /// triangle on a magnified grid, beside their definitions).
-    #[arg(long, conflicts_with_all = ["curves", "surfaces", "tessellation"])]
+    #[arg(long, conflicts_with_all = ["curves", "surfaces", "tessellation", "gpu"])]
     pixels: bool,
     /// Open the window on the curve scene (your de Casteljau drawing a
     /// Bézier curve and its construction, beside the definition's curve).
-    #[arg(long, conflicts_with_all = ["surfaces", "tessellation"])]
+    #[arg(long, conflicts_with_all = ["surfaces", "tessellation", "gpu"])]
     curves: bool,
     /// Open the window on the surface scene (the seed's hill evaluated,
     /// trimmed and rendered by your topic 07 code; choose the trim, its
     /// parameters and the tessellation level).
-    #[arg(long, conflicts_with = "tessellation")]
+    #[arg(long, conflicts_with_all = ["tessellation", "gpu"])]
     surfaces: bool,
     /// Open the window on the tessellation scene (surfaces cut into
     /// triangles by your topic 09 code: uniform, per patch, fully
     /// adaptive).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "gpu")]
     tessellation: bool,
+    /// Open the window on the GPU scene (patches tessellated and drawn on
+    /// the GPU by your topic 10 passes; lavapipe where there is no GPU).
+    #[arg(long)]
+    gpu: bool,
     /// The surface scene's first trim.
     #[arg(long, value_enum, default_value_t = Trim::Circle, requires = "surfaces")]
     trim: Trim,
@@ -171,6 +175,8 @@ fn main() -> Result<()> {
                 Start::Surfaces(surface)
             } else if args.tessellation {
                 Start::Tessellation
+            } else if args.gpu {
+                Start::Gpu
             } else {
                 Start::Pipeline
             },
@@ -216,6 +222,7 @@ enum Start {
     Curves,
     Surfaces(SurfaceSetup),
     Tessellation,
+    Gpu,
 }
 
 /// Opens the window.
@@ -252,6 +259,7 @@ fn window(
             *app.surfaces_mut() = setup;
         }
         Start::Tessellation => app.set_scene(course_viewer::Scene::Tessellation),
+        Start::Gpu => app.set_scene(course_viewer::Scene::Gpu),
     }
     if let Some(path) = window_screenshot {
         app.screenshot_window_to(path);

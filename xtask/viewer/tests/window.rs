@@ -546,3 +546,37 @@ fn the_tessellation_scene_draws_your_triangles() {
         "09-tessellation · fully_adaptive::refine with edge_tests, from tessellate_uniform",
     );
 }
+
+#[test]
+fn the_gpu_scene_draws_with_your_passes() {
+    let mut harness = harness(Stages::yours());
+    harness.get_by_label("GPU").click();
+    harness.run_steps(2);
+    assert!(
+        harness.state_mut().wait_for_gpu(Duration::from_secs(120)),
+        "no GPU picture within two minutes"
+    );
+    harness.run_steps(3);
+    let drawing = harness.state().gpu_drawing().unwrap();
+    if drawing.canvas.is_none() && drawing.device.contains("adapter") {
+        assert_ne!(
+            std::env::var("GPU_REQUIRED").as_deref(),
+            Ok("1"),
+            "GPU_REQUIRED=1 but {}",
+            drawing.device
+        );
+        eprintln!("SKIPPED (no GPU): {}", drawing.device);
+        return;
+    }
+    for label in [
+        "control: ok",
+        "primitive generator: ok",
+        "evaluation: ok",
+        "shading: ok",
+        "wireframe: ok",
+        "128 triangles",
+    ] {
+        harness.get_by_label(label);
+    }
+    harness.snapshot("viewer_gpu");
+}

@@ -141,4 +141,15 @@ fn the_window_opens_under_xvfb_and_shows_the_picture() {
         white > 40_000 && blue > 20_000,
         "{white} white and {blue} blue pixels: the tessellation scene's torus is not in the window"
     );
+    // The GPU scene: the hill's bricks (red-brown) under the yellow
+    // wireframe, drawn by topic 10's passes on lavapipe or a GPU.
+    let picture = window_screenshot(&xvfb_run, "gpu.png", &["--gpu"]);
+    let bricks = picture
+        .enumerate()
+        .filter(|(_, c)| c.r > 0.3 && c.r > 1.6 * c.g && c.g > 1.2 * c.b)
+        .count();
+    assert!(
+        bricks > 5000,
+        "{bricks} brick-coloured pixels: the GPU scene's hill is not in the window"
+    );
 }
