@@ -163,3 +163,51 @@ mod tests {
         assert!((bernstein_derivative(1, 2, 0.25) - 2.0 * (0.75 - 0.25)).abs() < 1e-15);
     }
 }
+
+/// The B-spline basis function `N_{i,p}(u)` over `knots` by the Cox–de
+/// Boor recursion (seed 001, (1.8)), with half-open steps
+/// `[u_i, u_{i+1})`; at the domain's end `end` only the last non-empty
+/// step ending there counts (the limit from the left), so that the basis
+/// sums to 1 on the whole closed domain. `0/0` terms are 0.
+///
+/// # Panics
+/// If `knots` has fewer than `i + p + 2` entries.
+#[must_use]
+pub fn bspline_basis(knots: &[f64], end: f64, i: usize, p: usize, u: f64) -> f64 {
+    let k = knots;
+    if p == 0 {
+        let closing = k.iter().rposition(|&x| x < end).unwrap_or(0);
+        let on = if u == end {
+            i == closing
+        } else {
+            k[i] <= u && u < k[i + 1]
+        };
+        return if on { 1.0 } else { 0.0 };
+    }
+    let mut value = 0.0;
+    if k[i + p] > k[i] {
+        value += (u - k[i]) / (k[i + p] - k[i]) * bspline_basis(k, end, i, p - 1, u);
+    }
+    if k[i + p + 1] > k[i + 1] {
+        value +=
+            (k[i + p + 1] - u) / (k[i + p + 1] - k[i + 1]) * bspline_basis(k, end, i + 1, p - 1, u);
+    }
+    value
+}
+
+/// A NURBS curve of degree `p` by its definition (seed 001, (1.12)):
+/// `C(u) = Σ N_{i,p}(u) Pᵢʷ` over all homogeneous control points
+/// `Pᵢʷ = (wᵢ Pᵢ, wᵢ)`, projected. The domain is `[u_p, u_{m−p}]`.
+///
+/// # Panics
+/// If `knots` has fewer than `points.len() + p + 1` entries.
+#[must_use]
+pub fn nurbs_curve(knots: &[f64], p: usize, points: &[glam::DVec4], u: f64) -> glam::DVec3 {
+    let end = knots[knots.len() - 1 - p];
+    let sum: glam::DVec4 = points
+        .iter()
+        .enumerate()
+        .map(|(i, &pw)| pw * bspline_basis(knots, end, i, p, u))
+        .sum();
+    sum.truncate() / sum.w
+}

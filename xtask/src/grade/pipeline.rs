@@ -32,13 +32,14 @@ pub const STAGES: [(&str, &str); 4] = [
 
 /// The viewer's features and topics in `cargo xtask view`: the pipeline's,
 /// the pixel playground's circle and the curve scene's de Casteljau.
-pub const VIEWER_TOPICS: [(&str, &str); 8] = [
+pub const VIEWER_TOPICS: [(&str, &str); 9] = [
     STAGES[0],
     ("circles", "02-circles"),
     STAGES[1],
     STAGES[2],
     STAGES[3],
     ("bezier", "07-bezier"),
+    ("nurbs", "08-nurbs"),
     ("tessellation", "09-tessellation"),
     ("gpu-tessellation", "10-gpu-tessellation"),
 ];

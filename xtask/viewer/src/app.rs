@@ -14,7 +14,7 @@ use eframe::egui;
 use egui::{Color32, RichText, TextureHandle, TextureOptions};
 use scene::Mode;
 
-use crate::curves::{self, CurveDrawing, CurveSetup, CurveWorker};
+use crate::curves::{self, CurveDrawing, CurveKind, CurveSetup, CurveWorker};
 use crate::gpu_scene::{self, GpuDrawing, GpuSetup, GpuWorker};
 use crate::meshes::MeshEntry;
 use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
@@ -1022,12 +1022,21 @@ impl ViewerApp {
     }
 
     fn curve_controls(&mut self, ui: &mut egui::Ui) {
-        ui.heading("Your curve");
-        ui.label(
-            "Your de Casteljau draws the curve and the construction of one point; drag the control points. Beside it, the curve of the definition (the Bernstein sum).",
-        );
-        ui.separator();
         let curves = &mut self.curves;
+        ui.heading("Your curve");
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut curves.setup.kind, CurveKind::Bezier, "Bézier (07)");
+            ui.radio_value(&mut curves.setup.kind, CurveKind::Nurbs, "NURBS (08)");
+        });
+        ui.label(match curves.setup.kind {
+            CurveKind::Bezier => {
+                "Your de Casteljau draws the curve and the construction of one point; drag the control points. Beside it, the curve of the definition (the Bernstein sum)."
+            }
+            CurveKind::Nurbs => {
+                "Your NurbsCurve::point draws the curve over the clamped uniform knot vector, with its points at the knots; drag the control points, set the degree and the weights. Beside it, the curve of the definition (the Cox–de Boor sum)."
+            }
+        });
+        ui.separator();
         let mut count = curves.setup.points.len();
         ui.add(
             egui::Slider::new(&mut count, curves::MIN_POINTS..=curves::MAX_POINTS)
@@ -1036,11 +1045,31 @@ impl ViewerApp {
         if count != curves.setup.points.len() {
             curves.setup.set_count(count);
         }
-        ui.add(egui::Slider::new(&mut curves.setup.t, 0.0..=1.0).text("t"));
-        ui.checkbox(&mut curves.construction, "Construction at t");
+        match curves.setup.kind {
+            CurveKind::Bezier => {
+                ui.add(egui::Slider::new(&mut curves.setup.t, 0.0..=1.0).text("t"));
+                ui.checkbox(&mut curves.construction, "Construction at t");
+            }
+            CurveKind::Nurbs => {
+                let highest = curves.setup.points.len() - 1;
+                ui.add(egui::Slider::new(&mut curves.setup.degree, 1..=highest).text("degree"));
+                curves.setup.weights.resize(curves.setup.points.len(), 1.0);
+                for (k, w) in curves.setup.weights.iter_mut().enumerate() {
+                    ui.add(
+                        egui::Slider::new(w, curves::WEIGHTS)
+                            .logarithmic(true)
+                            .text(format!("w{k}")),
+                    );
+                }
+            }
+        }
         ui.checkbox(&mut curves.definition, "The definition's curve");
         if ui.button("Reset").clicked() {
-            curves.setup = CurveSetup::default();
+            let kind = curves.setup.kind;
+            curves.setup = CurveSetup {
+                kind,
+                ..CurveSetup::default()
+            };
         }
         ui.separator();
         ui.heading("Your stage");
@@ -1049,25 +1078,36 @@ impl ViewerApp {
             ui.label("drawing …");
             return;
         };
+        let (name, source) = match drawing.setup.kind {
+            CurveKind::Bezier => (stages.curve.name, stages.curve.source),
+            CurveKind::Nurbs => (stages.nurbs.name, stages.nurbs.source),
+        };
         ui.label(
-            RichText::new(format!(
-                "{}: {}",
-                stages.curve.name,
-                drawing.status.describe()
-            ))
-            .color(status_colour(&drawing.status)),
+            RichText::new(format!("{name}: {}", drawing.status.describe()))
+                .color(status_colour(&drawing.status)),
         );
-        ui.label(RichText::new(stages.curve.source).small().weak());
+        ui.label(RichText::new(source).small().weak());
         if let Some(deviation) = drawing.deviation {
             ui.label(format!(
                 "largest distance from the definition: {deviation:.1e}"
             ));
         }
-        if let Some(point) = drawing.levels.last().filter(|l| l.len() == 1).map(|l| l[0]) {
+        if drawing.setup.kind == CurveKind::Bezier
+            && let Some(point) = drawing.levels.last().filter(|l| l.len() == 1).map(|l| l[0])
+        {
             ui.label(format!(
                 "C({:.2}) = ({:.4}, {:.4})",
                 drawing.setup.t, point.x, point.y
             ));
+        }
+        if drawing.setup.kind == CurveKind::Nurbs {
+            let knots: Vec<String> = drawing
+                .setup
+                .knots()
+                .iter()
+                .map(|k| format!("{k:.2}"))
+                .collect();
+            ui.label(format!("knots: {}", knots.join(" ")));
         }
     }
 
@@ -1118,7 +1158,10 @@ impl ViewerApp {
                 polyline(&drawing.expected, egui::Stroke::new(5.0, DEFINITION));
             }
             polyline(&drawing.yours, egui::Stroke::new(2.0, Color32::WHITE));
-            if curves.construction {
+            for &p in &drawing.knot_points {
+                painter.circle_filled(screen(p), 4.5, LEVELS[1]);
+            }
+            if curves.construction && drawing.setup.kind == CurveKind::Bezier {
                 for (k, level) in drawing.levels.iter().enumerate().skip(1) {
                     let colour = LEVELS[(k - 1) % LEVELS.len()];
                     polyline(level, egui::Stroke::new(1.5, colour));

@@ -1,10 +1,16 @@
-//! The curve scene (topic 07): a Bézier curve whose control points you
-//! drag, drawn by your `de_casteljau` at [`SAMPLES`]` + 1` parameters, with
-//! the construction of one point `C(t)` (seed 000, Abbildung 6): every
-//! level of the scheme, each of its points found by your `de_casteljau` on
-//! the control points it depends on (`b_i^k(t)` is the curve of
-//! `P_i … P_{i+k}` at `t`). Beside it, the curve of the definition, the
-//! Bernstein sum of `testkit::oracles`, and how far yours lies from it.
+//! The curve scene (topics 07 and 08): a curve whose control points you
+//! drag, drawn by your code at [`SAMPLES`]` + 1` parameters, beside the
+//! curve of its definition (`testkit::oracles`) and how far yours lies
+//! from it.
+//!
+//! - A Bézier curve (07), drawn by your `de_casteljau`, with the
+//!   construction of one point `C(t)` (seed 000, Abbildung 6): every level
+//!   of the scheme, each of its points found by your `de_casteljau` on the
+//!   control points it depends on (`b_i^k(t)` is the curve of
+//!   `P_i … P_{i+k}` at `t`); the definition is the Bernstein sum.
+//! - A NURBS curve (08) of the degree and weights you choose over the
+//!   clamped uniform knot vector, drawn by your `NurbsCurve::point`, with
+//!   the points at its knots; the definition is the Cox–de Boor sum.
 //!
 //! Points live in the unit square `[0, 1]²`, y up.
 
@@ -21,6 +27,18 @@ pub const MIN_POINTS: usize = 2;
 /// The curve is drawn through this many steps of `t`.
 pub const SAMPLES: usize = 128;
 
+/// Which curve the control points make.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurveKind {
+    /// A Bézier curve (topic 07).
+    Bezier,
+    /// A NURBS curve over the clamped uniform knot vector (topic 08).
+    Nurbs,
+}
+
+/// The lightest and heaviest weight the scene offers.
+pub const WEIGHTS: std::ops::RangeInclusive<f64> = 0.05..=20.0;
+
 /// What to draw.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveSetup {
@@ -28,6 +46,12 @@ pub struct CurveSetup {
     pub points: Vec<DVec2>,
     /// Where the construction is shown, in `[0, 1]`.
     pub t: f64,
+    /// Bézier or NURBS.
+    pub kind: CurveKind,
+    /// The NURBS curve's degree, `1 ..= points − 1`.
+    pub degree: usize,
+    /// The NURBS curve's weights, one per control point.
+    pub weights: Vec<f64>,
 }
 
 impl Default for CurveSetup {
@@ -36,6 +60,9 @@ impl Default for CurveSetup {
         Self {
             points: first_points(4),
             t: 0.5,
+            kind: CurveKind::Bezier,
+            degree: 3,
+            weights: vec![1.0; 4],
         }
     }
 }
@@ -78,6 +105,28 @@ impl CurveSetup {
         } else {
             0.5
         };
+        self.degree = self.degree.clamp(1, self.points.len() - 1);
+        self.weights.resize(self.points.len(), 1.0);
+        for w in &mut self.weights {
+            *w = if w.is_finite() {
+                w.clamp(*WEIGHTS.start(), *WEIGHTS.end())
+            } else {
+                1.0
+            };
+        }
+    }
+
+    /// The clamped uniform knot vector of the NURBS curve (topic 08's
+    /// `KnotVector::clamped_uniform`): `p + 1` zeros, the interior knots
+    /// `1/k … (k − 1)/k` with `k = points − p`, `p + 1` ones.
+    #[must_use]
+    pub fn knots(&self) -> Vec<f64> {
+        let p = self.degree;
+        let spans = self.points.len().saturating_sub(p).max(1);
+        let mut knots = vec![0.0; p + 1];
+        knots.extend((1..spans).map(|i| i as f64 / spans as f64));
+        knots.extend(std::iter::repeat_n(1.0, p + 1));
+        knots
     }
 
     /// Makes it `n` control points: keeps the first ones, adds new ones
@@ -116,6 +165,9 @@ pub struct CurveDrawing {
     /// The largest distance between your curve and the definition's, when
     /// your code drew all of it.
     pub deviation: Option<f64>,
+    /// The NURBS curve's points at its interior knots, as far as your code
+    /// got.
+    pub knot_points: Vec<DVec2>,
     /// How your `de_casteljau` fared.
     pub status: Status,
 }
@@ -140,9 +192,90 @@ pub fn definition(points: &[DVec2], t: f64) -> DVec2 {
         .sum()
 }
 
-/// Draws `setup` with your `de_casteljau`.
+/// The NURBS curve of the definition at `u`: `Σ N_{i,p}(u) Pᵢʷ`, projected.
+#[must_use]
+pub fn nurbs_definition(setup: &CurveSetup, u: f64) -> DVec2 {
+    let homogeneous: Vec<glam::DVec4> = setup
+        .points
+        .iter()
+        .zip(&setup.weights)
+        .map(|(p, &w)| (p.extend(0.0) * w).extend(w))
+        .collect();
+    oracles::nurbs_curve(&setup.knots(), setup.degree, &homogeneous, u).truncate()
+}
+
+/// Draws `setup` with your code.
 #[must_use]
 pub fn draw(setup: &CurveSetup, stages: &Stages) -> CurveDrawing {
+    let mut setup = setup.clone();
+    setup.tidy();
+    match setup.kind {
+        CurveKind::Bezier => draw_bezier(&setup, stages),
+        CurveKind::Nurbs => draw_nurbs(&setup, stages),
+    }
+}
+
+/// The NURBS curve by your `NurbsCurve::point`, with its knots' points.
+fn draw_nurbs(setup: &CurveSetup, stages: &Stages) -> CurveDrawing {
+    let parameters = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64);
+    let mut drawing = CurveDrawing {
+        setup: setup.clone(),
+        yours: Vec::new(),
+        levels: vec![setup.points.clone()],
+        expected: parameters
+            .clone()
+            .map(|u| nurbs_definition(setup, u))
+            .collect(),
+        deviation: None,
+        knot_points: Vec::new(),
+        status: Status::Missing,
+    };
+    let Some(run) = &stages.nurbs.run else {
+        return drawing;
+    };
+    let mut status = Status::Unused;
+    let mut evaluate = |u: f64| match guarded(&mut status, || {
+        run(&setup.points, &setup.weights, setup.degree, u)
+    })? {
+        Ok(p) => Some(p),
+        Err(error) => {
+            status = Status::Failed(error);
+            None
+        }
+    };
+    for u in parameters {
+        match evaluate(u) {
+            Some(p) => drawing.yours.push(p),
+            None => break,
+        }
+    }
+    let knots = setup.knots();
+    let interior = &knots[setup.degree + 1..knots.len() - setup.degree - 1];
+    for &u in interior {
+        match evaluate(u) {
+            Some(p) => drawing.knot_points.push(p),
+            None => break,
+        }
+    }
+    drawing.deviation = deviation(&drawing.yours, &drawing.expected);
+    drawing.status = status;
+    drawing
+}
+
+/// The largest distance between the two curves, when yours is whole.
+fn deviation(yours: &[DVec2], expected: &[DVec2]) -> Option<f64> {
+    if yours.len() != expected.len() {
+        return None;
+    }
+    yours
+        .iter()
+        .zip(expected)
+        .map(|(a, b)| a.distance(*b))
+        .reduce(f64::max)
+}
+
+/// The Bézier curve by your `de_casteljau`, with its construction at `t`.
+fn draw_bezier(setup: &CurveSetup, stages: &Stages) -> CurveDrawing {
     let parameters = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64);
     let expected: Vec<DVec2> = parameters
         .clone()
@@ -154,6 +287,7 @@ pub fn draw(setup: &CurveSetup, stages: &Stages) -> CurveDrawing {
         levels: vec![setup.points.clone()],
         expected,
         deviation: None,
+        knot_points: Vec::new(),
         status: Status::Missing,
     };
     let Some(run) = &stages.curve.run else {
@@ -185,14 +319,7 @@ pub fn draw(setup: &CurveSetup, stages: &Stages) -> CurveDrawing {
         }
         drawing.levels.push(level);
     }
-    if drawing.yours.len() == drawing.expected.len() {
-        drawing.deviation = drawing
-            .yours
-            .iter()
-            .zip(&drawing.expected)
-            .map(|(a, b)| a.distance(*b))
-            .reduce(f64::max);
-    }
+    drawing.deviation = deviation(&drawing.yours, &drawing.expected);
     drawing.status = status;
     drawing
 }

@@ -11,7 +11,8 @@
 //!
 //! and, for the pixel playground, `01-lines`' `midpoint::midpoint_line`
 //! and `wu::wu_line` and `02-circles`' `midpoint_circle::midpoint_circle`; for the curve
-//! scene, `07-bezier`'s `de_casteljau::de_casteljau`; for the surface scene,
+//! scene, `07-bezier`'s `de_casteljau::de_casteljau` and `08-nurbs`'
+//! `NurbsCurve::point`; for the surface scene,
 //! `07-bezier`'s `surface::partial_derivatives` and `surface::normal` (the
 //! seed's hill), its trims (`simple_trim`, `newton_trim`) and
 //! `render::render_surface`; for the tessellation scene, `09-tessellation`'s
@@ -45,6 +46,10 @@ pub type ClipStage = dyn Fn(&[ClipVertex]) -> Result<Vec<ClipVertex>, String> + 
 pub type DepthStage = dyn Fn(&mut Canvas, Fragment) -> bool + Send + Sync;
 /// A point of a Bézier curve: `(control points, t)`, or why not.
 pub type CurveStage = dyn Fn(&[glam::DVec2], f64) -> Result<glam::DVec2, String> + Send + Sync;
+/// A point of a NURBS curve: `(control points, weights, degree, u)` over
+/// the clamped uniform knot vector, or why not.
+pub type NurbsStage =
+    dyn Fn(&[glam::DVec2], &[f64], usize, f64) -> Result<glam::DVec2, String> + Send + Sync;
 /// A point of the seed's hill at `(u, v)`: its position and unit normal,
 /// or why not.
 pub type SurfaceStage =
@@ -127,6 +132,8 @@ pub struct Stages {
     pub circle: Stage<CircleStage>,
     /// De Casteljau's algorithm (the curve scene).
     pub curve: Stage<CurveStage>,
+    /// A NURBS curve's point (the curve scene).
+    pub nurbs: Stage<NurbsStage>,
     /// The patch's point and normal (the surface scene).
     pub surface: Stage<SurfaceStage>,
     /// The trims (the surface scene).
@@ -181,6 +188,11 @@ impl Default for Stages {
             curve: Stage {
                 name: "de Casteljau",
                 source: "07-bezier · de_casteljau::de_casteljau",
+                run: None,
+            },
+            nurbs: Stage {
+                name: "NURBS curve",
+                source: "08-nurbs · NurbsCurve::point (find_span, basis_funs)",
                 run: None,
             },
             surface: Stage {
@@ -280,6 +292,20 @@ impl Stages {
             stages.surface.run = Some(Arc::new(hill_point));
             stages.trim.run = Some(Arc::new(build_trim));
             stages.surface_render.run = Some(Arc::new(render_surface));
+        }
+        #[cfg(feature = "nurbs")]
+        {
+            stages.nurbs.run = Some(Arc::new(
+                |points: &[glam::DVec2], weights: &[f64], degree: usize, u: f64| {
+                    let error = |e: nurbs::NurbsError| e.to_string();
+                    let knots =
+                        nurbs::KnotVector::clamped_uniform(degree, points.len()).map_err(error)?;
+                    let points: Vec<glam::DVec3> = points.iter().map(|p| p.extend(0.0)).collect();
+                    let curve =
+                        nurbs::NurbsCurve::from_points(knots, &points, weights).map_err(error)?;
+                    curve.point(u).map(glam::DVec3::truncate).map_err(error)
+                },
+            ));
         }
         #[cfg(feature = "tessellation")]
         {
@@ -609,9 +635,35 @@ pub fn gpu_frame(
     };
     let device = gpu.describe();
     let failed = |e: gpu_tessellation::TessError| Status::Failed(e.to_string());
+    // The stages after one that stopped the frame: each is asked whether
+    // it is written at all (a file of comments, a `todo!()` on a trivial
+    // call), so that every unwritten stage is named, not only the first.
     let not_reached = |status: &mut [Status; 6], from: usize| {
-        for s in &mut status[from..] {
-            *s = Status::NotReached;
+        for (k, s) in status.iter_mut().enumerate().skip(from) {
+            *s = Status::Unused;
+            let _ = match k {
+                0 => guarded(s, || pieces.control.written().started()),
+                1 => guarded(s, || {
+                    let domain = gpu_tessellation::domain::quad_domain(
+                        [2.0; 2],
+                        [2.0; 4],
+                        gpu_tessellation::domain::Spacing::Equal,
+                    );
+                    domain.points.is_empty()
+                }),
+                2 => guarded(s, || pieces.evaluation.written().started()),
+                3 => guarded(s, || pieces.shading.written().started()),
+                4 if setup.trim.shape != crate::surfaces::TrimShape::None => {
+                    guarded(s, || pieces.trimming.written().started())
+                }
+                5 if setup.wireframe => guarded(s, || {
+                    gpu_tessellation::shading::wireframe_edges(&[[0, 1, 2]]).is_empty()
+                }),
+                _ => continue, // not used by this picture
+            };
+            if s.usable() {
+                *s = Status::NotReached;
+            }
         }
     };
 

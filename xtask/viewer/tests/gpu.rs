@@ -166,3 +166,32 @@ fn wgsl_that_does_not_compile_is_named_at_its_line_and_nothing_is_drawn() {
     let none = draw(&small(), &Stages::default());
     assert!(none.stages.iter().all(|s| s.status == Status::Missing));
 }
+
+#[test]
+fn every_unwritten_piece_is_named_not_only_the_first() {
+    course_viewer::stages::quiet_panics();
+    let pieces = GpuPieces {
+        control: wgsl::CONTROL.with_text("// TODO control: write fn tessellation_levels\n"),
+        evaluation: wgsl::EVALUATION.with_text("// TODO evaluation: write fn evaluate_patch\n"),
+        shading: wgsl::SHADING.with_text("// TODO render: write fn shade\n"),
+        ..GpuPieces::YOURS
+    };
+    let mut setup = small();
+    setup.trim.shape = TrimShape::Circle;
+    let Some(drawing) = drawn(&setup, pieces) else {
+        return;
+    };
+    let not_yet = |m: &str| Status::NotYet(m.to_owned());
+    assert_eq!(
+        statuses(&drawing),
+        [
+            ("control", not_yet("control: write fn tessellation_levels")),
+            ("primitive generator", Status::NotReached),
+            ("evaluation", not_yet("evaluation: write fn evaluate_patch")),
+            ("shading", not_yet("render: write fn shade")),
+            ("trimming", Status::NotReached),
+            ("wireframe", Status::NotReached),
+        ]
+    );
+    assert!(drawing.canvas.is_none());
+}

@@ -580,3 +580,23 @@ fn the_gpu_scene_draws_with_your_passes() {
     }
     harness.snapshot("viewer_gpu");
 }
+
+#[test]
+fn the_curve_scene_draws_your_nurbs_curve() {
+    let mut harness = harness(Stages::yours());
+    harness.state_mut().set_scene(course_viewer::Scene::Curves);
+    harness.run_steps(2);
+    harness.get_by_label("NURBS (08)").click();
+    harness.run_steps(2);
+    harness.state_mut().curves_mut().set_count(6);
+    harness.state_mut().curves_mut().degree = 2;
+    harness.state_mut().curves_mut().weights = vec![1.0, 4.0, 1.0, 0.3, 1.0, 1.0];
+    harness.run_steps(2);
+    settle_curves(&mut harness);
+    harness.get_by_label("NURBS curve: ok");
+    harness.get_by_label("knots: 0.00 0.00 0.00 0.25 0.50 0.75 1.00 1.00 1.00");
+    let drawing = harness.state().curve_drawing().unwrap();
+    assert_eq!(drawing.knot_points.len(), 3);
+    assert!(drawing.deviation.unwrap() < 1e-12);
+    harness.snapshot("viewer_curves_nurbs");
+}

@@ -14,41 +14,14 @@ pub use testkit::oracles::bernstein;
 
 /// `N_{i,p}(u)` by the definition (half-open steps; the last non-empty
 /// step of the domain closed at its end, so that the basis sums to 1 at
-/// the domain's end).
+/// the domain's end): the Cox–de Boor recursion of `testkit::oracles`.
 pub fn basis(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
-    let k = knots.knots();
-    if p == 0 {
-        let end = knots.domain().end;
-        // The last non-empty step ending at the domain's end.
-        let closing = k.iter().rposition(|&x| x < end).unwrap_or(0);
-        // At the domain's end only that step counts (the limit from the
-        // left); elsewhere the half-open steps.
-        let on = if u == end {
-            i == closing
-        } else {
-            k[i] <= u && u < k[i + 1]
-        };
-        return if on { 1.0 } else { 0.0 };
-    }
-    let mut value = 0.0;
-    if k[i + p] > k[i] {
-        value += (u - k[i]) / (k[i + p] - k[i]) * basis(knots, i, p - 1, u);
-    }
-    if k[i + p + 1] > k[i + 1] {
-        value += (k[i + p + 1] - u) / (k[i + p + 1] - k[i + 1]) * basis(knots, i + 1, p - 1, u);
-    }
-    value
+    testkit::oracles::bspline_basis(knots.knots(), knots.domain().end, i, p, u)
 }
 
 /// `C(u) = Σ N_{i,p}(u) Pᵢʷ`, projected, over all `i`.
 pub fn curve_point(knots: &KnotVector, points: &[DVec4], u: f64) -> DVec3 {
-    let p = knots.degree();
-    let sum: DVec4 = points
-        .iter()
-        .enumerate()
-        .map(|(i, &pw)| pw * basis(knots, i, p, u))
-        .sum();
-    sum.truncate() / sum.w
+    testkit::oracles::nurbs_curve(knots.knots(), knots.degree(), points, u)
 }
 
 /// `S(u, v)` by the double sum over the whole net (seed 001, (1.15)).
