@@ -112,6 +112,54 @@ pub fn triangle_bezier(
     out
 }
 
+/// The B-spline basis function `N_{i,p}(u)` over `knots` by the Cox–de
+/// Boor recursion (seed 001, (1.8)), with half-open steps
+/// `[u_i, u_{i+1})`; at the domain's end `end` only the last non-empty
+/// step ending there counts (the limit from the left), so that the basis
+/// sums to 1 on the whole closed domain. `0/0` terms are 0.
+///
+/// # Panics
+/// If `knots` has fewer than `i + p + 2` entries.
+#[must_use]
+pub fn bspline_basis(knots: &[f64], end: f64, i: usize, p: usize, u: f64) -> f64 {
+    let k = knots;
+    if p == 0 {
+        let closing = k.iter().rposition(|&x| x < end).unwrap_or(0);
+        let on = if u == end {
+            i == closing
+        } else {
+            k[i] <= u && u < k[i + 1]
+        };
+        return if on { 1.0 } else { 0.0 };
+    }
+    let mut value = 0.0;
+    if k[i + p] > k[i] {
+        value += (u - k[i]) / (k[i + p] - k[i]) * bspline_basis(k, end, i, p - 1, u);
+    }
+    if k[i + p + 1] > k[i + 1] {
+        value +=
+            (k[i + p + 1] - u) / (k[i + p + 1] - k[i + 1]) * bspline_basis(k, end, i + 1, p - 1, u);
+    }
+    value
+}
+
+/// A NURBS curve of degree `p` by its definition (seed 001, (1.12)):
+/// `C(u) = Σ N_{i,p}(u) Pᵢʷ` over all homogeneous control points
+/// `Pᵢʷ = (wᵢ Pᵢ, wᵢ)`, projected. The domain is `[u_p, u_{m−p}]`.
+///
+/// # Panics
+/// If `knots` has fewer than `points.len() + p + 1` entries.
+#[must_use]
+pub fn nurbs_curve(knots: &[f64], p: usize, points: &[glam::DVec4], u: f64) -> glam::DVec3 {
+    let end = knots[knots.len() - 1 - p];
+    let sum: glam::DVec4 = points
+        .iter()
+        .enumerate()
+        .map(|(i, &pw)| pw * bspline_basis(knots, end, i, p, u))
+        .sum();
+    sum.truncate() / sum.w
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -162,52 +210,34 @@ mod tests {
         assert_eq!(bernstein_derivative(0, 0, 0.5), 0.0);
         assert!((bernstein_derivative(1, 2, 0.25) - 2.0 * (0.75 - 0.25)).abs() < 1e-15);
     }
-}
 
-/// The B-spline basis function `N_{i,p}(u)` over `knots` by the Cox–de
-/// Boor recursion (seed 001, (1.8)), with half-open steps
-/// `[u_i, u_{i+1})`; at the domain's end `end` only the last non-empty
-/// step ending there counts (the limit from the left), so that the basis
-/// sums to 1 on the whole closed domain. `0/0` terms are 0.
-///
-/// # Panics
-/// If `knots` has fewer than `i + p + 2` entries.
-#[must_use]
-pub fn bspline_basis(knots: &[f64], end: f64, i: usize, p: usize, u: f64) -> f64 {
-    let k = knots;
-    if p == 0 {
-        let closing = k.iter().rposition(|&x| x < end).unwrap_or(0);
-        let on = if u == end {
-            i == closing
-        } else {
-            k[i] <= u && u < k[i + 1]
-        };
-        return if on { 1.0 } else { 0.0 };
+    #[test]
+    fn the_bspline_basis_is_bernstein_for_the_bezier_knots_and_sums_to_one() {
+        // {0, 0, 0, 0, 1, 1, 1, 1}: the cubic Bernstein basis.
+        let bezier = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        for t in [0.0, 0.2, 0.5, 0.9, 1.0] {
+            for i in 0..4 {
+                let n = bspline_basis(&bezier, 1.0, i, 3, t);
+                assert!((n - bernstein(i, 3, t)).abs() < 1e-15, "N_{i},3({t}) = {n}");
+            }
+        }
+        // A clamped quadratic with interior knots: partition of unity on
+        // the closed domain, its end included.
+        let knots = [0.0, 0.0, 0.0, 0.3, 0.6, 1.0, 1.0, 1.0];
+        for u in [0.0, 0.1, 0.3, 0.45, 0.6, 0.99, 1.0] {
+            let sum: f64 = (0..5).map(|i| bspline_basis(&knots, 1.0, i, 2, u)).sum();
+            assert!((sum - 1.0).abs() < 1e-15, "Σ N_i,2({u}) = {sum}");
+        }
+        // With equal weights the rational curve is the polynomial one.
+        let points = [
+            glam::DVec4::new(0.0, 0.0, 0.0, 2.0),
+            glam::DVec4::new(2.0, 4.0, 0.0, 2.0),
+            glam::DVec4::new(4.0, 0.0, 0.0, 2.0),
+        ];
+        let mid = nurbs_curve(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 2, &points, 0.5);
+        assert!(
+            (mid - glam::DVec3::new(1.0, 1.0, 0.0)).length() < 1e-15,
+            "{mid}"
+        );
     }
-    let mut value = 0.0;
-    if k[i + p] > k[i] {
-        value += (u - k[i]) / (k[i + p] - k[i]) * bspline_basis(k, end, i, p - 1, u);
-    }
-    if k[i + p + 1] > k[i + 1] {
-        value +=
-            (k[i + p + 1] - u) / (k[i + p + 1] - k[i + 1]) * bspline_basis(k, end, i + 1, p - 1, u);
-    }
-    value
-}
-
-/// A NURBS curve of degree `p` by its definition (seed 001, (1.12)):
-/// `C(u) = Σ N_{i,p}(u) Pᵢʷ` over all homogeneous control points
-/// `Pᵢʷ = (wᵢ Pᵢ, wᵢ)`, projected. The domain is `[u_p, u_{m−p}]`.
-///
-/// # Panics
-/// If `knots` has fewer than `points.len() + p + 1` entries.
-#[must_use]
-pub fn nurbs_curve(knots: &[f64], p: usize, points: &[glam::DVec4], u: f64) -> glam::DVec3 {
-    let end = knots[knots.len() - 1 - p];
-    let sum: glam::DVec4 = points
-        .iter()
-        .enumerate()
-        .map(|(i, &pw)| pw * bspline_basis(knots, end, i, p, u))
-        .sum();
-    sum.truncate() / sum.w
 }
