@@ -1217,10 +1217,25 @@ impl ViewerApp {
     fn surface_controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Your trimmed surface");
         ui.label(
-            "The seed's hill, a bicubic Bézier patch: evaluated by your surface code, trimmed by your trim and tessellated, rasterized and lit by your render_surface.",
+            "The seed's hill, a bicubic Bézier patch whose control points you raise and lower: evaluated by your surface code, trimmed by your trim and tessellated, rasterized and lit by your render_surface.",
         );
         ui.separator();
         let setup = &mut self.surfaces.setup;
+        ui.label("Control points: their heights (u to the right, v up)");
+        egui::Grid::new("control net").show(ui, |ui| {
+            for j in (0..4).rev() {
+                for i in 0..4 {
+                    ui.add(
+                        egui::DragValue::new(&mut setup.heights[i][j])
+                            .speed(0.01)
+                            .range(surfaces::HEIGHTS)
+                            .prefix(format!("P{i}{j} ")),
+                    );
+                }
+                ui.end_row();
+            }
+        });
+        ui.separator();
         trim_controls(ui, &mut setup.trim);
         ui.separator();
         ui.add(

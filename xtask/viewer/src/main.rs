@@ -172,7 +172,7 @@ fn main() -> Result<()> {
                     ..SurfaceSetup::default()
                 };
                 surface.trim.shape = args.trim.shape();
-                Start::Surfaces(surface)
+                Start::Surfaces(Box::new(surface))
             } else if args.tessellation {
                 Start::Tessellation
             } else if args.gpu {
@@ -214,13 +214,12 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
 }
 
 /// The scene the window opens on.
-#[derive(Clone, Copy)]
 #[cfg_attr(not(feature = "window"), allow(dead_code))] // no window to open
 enum Start {
     Pipeline,
     Pixels,
     Curves,
-    Surfaces(SurfaceSetup),
+    Surfaces(Box<SurfaceSetup>),
     Tessellation,
     Gpu,
 }
@@ -256,7 +255,7 @@ fn window(
         Start::Curves => app.set_scene(course_viewer::Scene::Curves),
         Start::Surfaces(setup) => {
             app.set_scene(course_viewer::Scene::Surfaces);
-            *app.surfaces_mut() = setup;
+            *app.surfaces_mut() = *setup;
         }
         Start::Tessellation => app.set_scene(course_viewer::Scene::Tessellation),
         Start::Gpu => app.set_scene(course_viewer::Scene::Gpu),

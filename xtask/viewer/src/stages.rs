@@ -14,7 +14,7 @@
 //! scene, `07-bezier`'s `de_casteljau::de_casteljau` and `08-nurbs`'
 //! `NurbsCurve::point`; for the surface scene,
 //! `07-bezier`'s `surface::partial_derivatives` and `surface::normal` (the
-//! seed's hill), its trims (`simple_trim`, `newton_trim`) and
+//! seed's hill, its control points raised and lowered), its trims (`simple_trim`, `newton_trim`) and
 //! `render::render_surface`; for the tessellation scene, `09-tessellation`'s
 //! `uniform`, `per_patch`, `fully_adaptive` and `edge_tests`.
 //!
@@ -50,10 +50,11 @@ pub type CurveStage = dyn Fn(&[glam::DVec2], f64) -> Result<glam::DVec2, String>
 /// the clamped uniform knot vector, or why not.
 pub type NurbsStage =
     dyn Fn(&[glam::DVec2], &[f64], usize, f64) -> Result<glam::DVec2, String> + Send + Sync;
-/// A point of the seed's hill at `(u, v)`: its position and unit normal,
+/// A point of a bicubic patch at `(u, v)`: its position and unit normal,
 /// or why not.
-pub type SurfaceStage =
-    dyn Fn(glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String> + Send + Sync;
+pub type SurfaceStage = dyn Fn(&freeform::BezierPatch, glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String>
+    + Send
+    + Sync;
 /// Whether a trim cuts `(u, v)` away.
 pub type TrimFn = Arc<dyn Fn(glam::DVec2) -> bool + Send + Sync>;
 /// Builds the trim a set-up describes, or says why not.
@@ -289,7 +290,7 @@ impl Stages {
             stages.curve.run = Some(Arc::new(|points: &[glam::DVec2], t: f64| {
                 bezier::de_casteljau::de_casteljau(points, t).map_err(|e| e.to_string())
             }));
-            stages.surface.run = Some(Arc::new(hill_point));
+            stages.surface.run = Some(Arc::new(patch_point));
             stages.trim.run = Some(Arc::new(build_trim));
             stages.surface_render.run = Some(Arc::new(render_surface));
         }
@@ -321,13 +322,14 @@ impl Stages {
     }
 }
 
-/// The seed's hill by your surface code: its point and unit normal.
+/// A patch's point and unit normal by your surface code.
 #[cfg(feature = "bezier")]
-fn hill_point(uv: glam::DVec2) -> Result<(glam::DVec3, glam::DVec3), String> {
-    static HILL: std::sync::LazyLock<bezier::BezierPatch> =
-        std::sync::LazyLock::new(bezier::BezierPatch::seed_hill);
-    let point = bezier::surface::partial_derivatives(&HILL, uv).map_err(|e| e.to_string())?;
-    let normal = bezier::surface::normal(&HILL, uv).map_err(|e| e.to_string())?;
+fn patch_point(
+    net: &freeform::BezierPatch,
+    uv: glam::DVec2,
+) -> Result<(glam::DVec3, glam::DVec3), String> {
+    let point = bezier::surface::partial_derivatives(net, uv).map_err(|e| e.to_string())?;
+    let normal = bezier::surface::normal(net, uv).map_err(|e| e.to_string())?;
     Ok((point.position, normal))
 }
 

@@ -1,6 +1,6 @@
-//! The surface scene (topic 07): the seed's hill, a bicubic Bézier patch,
-//! evaluated by your surface code, trimmed by your trims and rendered by
-//! your `render_surface` — the thesis's program (seed 000 §3.1, §4), in
+//! The surface scene (topic 07): the seed's hill, a bicubic Bézier patch
+//! whose control points you raise and lower, evaluated by your surface
+//! code, trimmed by your trims and rendered by your `render_surface` — the thesis's program (seed 000 §3.1, §4), in
 //! which the user chooses the trim shape, its parameters and the
 //! tessellation level and looks at the result, lit or as a wireframe.
 //!
@@ -164,6 +164,10 @@ impl TrimSetup {
 /// What to draw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceSetup {
+    /// The heights (`y`) of the control points `P_ij` of the bicubic
+    /// patch over `[-0.5, 0.5]²` (`i` along `u` = +x, `j` along `v` = −z):
+    /// the seed's hill, or what you make of it.
+    pub heights: [[f64; 4]; 4],
     /// The trim.
     pub trim: TrimSetup,
     /// Grid cells per side of the parameter square (the seed's
@@ -185,6 +189,8 @@ pub struct SurfaceSetup {
 
 /// The point the camera looks at: the middle of the hill.
 pub const TARGET: DVec3 = DVec3::new(0.0, 0.1, 0.0);
+/// The lowest and highest control point.
+pub const HEIGHTS: std::ops::RangeInclusive<f64> = -1.5..=1.5;
 /// The highest tessellation level (topic 07's `MAX_TESS_LEVEL`).
 pub const MAX_LEVEL: u32 = 64;
 /// The background of the picture.
@@ -196,7 +202,9 @@ impl Default for SurfaceSetup {
     /// The seed's view of the hill (topic 07's figures): from above and in
     /// front, level 24, lit.
     fn default() -> Self {
+        let hill = freeform::BezierPatch::seed_hill();
         Self {
+            heights: std::array::from_fn(|i| std::array::from_fn(|j| hill.control_point(i, j).y)),
             trim: TrimSetup::default(),
             level: 24,
             wireframe: false,
@@ -221,6 +229,11 @@ impl SurfaceSetup {
         self.distance = finite_or(self.distance, defaults.distance).clamp(0.8, 8.0);
         self.width = self.width.clamp(16, 2048);
         self.height = self.height.clamp(16, 2048);
+        for (row, hill) in self.heights.iter_mut().zip(defaults.heights) {
+            for (h, fallback) in row.iter_mut().zip(hill) {
+                *h = finite_or(*h, fallback).clamp(*HEIGHTS.start(), *HEIGHTS.end());
+            }
+        }
         let trim = &mut self.trim;
         let fallback = TrimSetup::default();
         if !trim.centre.is_finite() {
@@ -234,6 +247,22 @@ impl SurfaceSetup {
         trim.scale = finite_or(trim.scale, 1.0).clamp(0.1, 2.0);
         trim.iterations = trim.iterations.clamp(1, 30);
         trim.epsilon = finite_or(trim.epsilon, fallback.epsilon).clamp(1e-6, 0.5);
+    }
+
+    /// The patch: the hill's grid of control points at the set heights.
+    ///
+    /// # Panics
+    /// If a height is not finite (`tidy` keeps them finite).
+    #[must_use]
+    pub fn net(&self) -> freeform::BezierPatch {
+        freeform::BezierPatch::from_fn(3, 3, |i, j| {
+            DVec3::new(
+                -0.5 + i as f64 / 3.0,
+                self.heights[i][j],
+                0.5 - j as f64 / 3.0,
+            )
+        })
+        .expect("finite heights")
     }
 
     /// Where the camera stands.
@@ -298,6 +327,7 @@ pub fn draw(setup: &SurfaceSetup, stages: &Stages) -> SurfaceDrawing {
 
     // The surface: one guarded call per point, so that a `todo!()` is
     // named and stops the evaluation, not the viewer.
+    let net = setup.net();
     let surface_status = RefCell::new(match stages.surface.run {
         Some(_) => Status::Unused,
         None => Status::Missing,
@@ -307,7 +337,7 @@ pub fn draw(setup: &SurfaceSetup, stages: &Stages) -> SurfaceDrawing {
             return Err("topic 07 is not in this build".to_owned());
         };
         let mut status = surface_status.borrow_mut();
-        match guarded(&mut status, || run(uv)) {
+        match guarded(&mut status, || run(&net, uv)) {
             Some(Ok(sample)) => Ok(sample),
             Some(Err(error)) => {
                 *status = Status::Failed(error.clone());

@@ -119,6 +119,12 @@ fn controls_change_the_picture() {
             },
         ),
     ];
+    let mut raised = base;
+    raised.heights[1][2] = 1.2;
+    let changes: Vec<(&str, SurfaceSetup)> = changes
+        .into_iter()
+        .chain([("raising a control point", raised)])
+        .collect();
     for (what, setup) in changes {
         assert_ne!(picture(&setup), first, "{what} changes the picture");
     }
@@ -136,9 +142,11 @@ fn controls_change_the_picture() {
 
 fn unwritten_surface() -> Stages {
     let mut stages = Stages::yours();
-    stages.surface.run = Some(Arc::new(|_: DVec2| -> Result<(DVec3, DVec3), String> {
-        todo!("surface: check u, v; de Casteljau each column at u")
-    }));
+    stages.surface.run = Some(Arc::new(
+        |_: &freeform::BezierPatch, _: DVec2| -> Result<(DVec3, DVec3), String> {
+            todo!("surface: check u, v; de Casteljau each column at u")
+        },
+    ));
     stages
 }
 
@@ -205,7 +213,11 @@ fn a_render_error_is_named_and_without_topic_07_every_stage_is_missing() {
 
 #[test]
 fn a_set_up_is_kept_drawable() {
+    let mut heights = SurfaceSetup::default().heights;
+    heights[0][0] = f64::NAN;
+    heights[3][3] = 40.0;
     let mut setup = SurfaceSetup {
+        heights,
         level: 0,
         yaw: f64::NAN,
         distance: 1e9,
@@ -226,6 +238,8 @@ fn a_set_up_is_kept_drawable() {
     assert_eq!(setup.width, 16);
     assert!(setup.trim.centre.is_finite() && setup.trim.size.min_element() > 0.0);
     assert_eq!(setup.trim.iterations, 1);
+    assert_eq!(setup.heights[0][0], 0.0, "the hill's corner");
+    assert_eq!(setup.heights[3][3], 1.5);
     assert!(setup.trim.epsilon > 0.0);
     // Drawn as it is, even unfinished.
     let drawing = draw(&setup, &Stages::yours());
