@@ -15,13 +15,14 @@ use egui::{Color32, RichText, TextureHandle, TextureOptions};
 use scene::Mode;
 
 use crate::curves::{self, CurveDrawing, CurveKind, CurveSetup, CurveWorker};
-use crate::gpu_scene::{self, GpuDrawing, GpuSetup, GpuWorker};
+use crate::gpu_scene::{self, GpuDrawing, GpuSetup};
 use crate::meshes::MeshEntry;
 use crate::playground::{self, Cell, Drawing, PlaygroundWorker, Primitive, Setup};
 use crate::render::{Frame, FrameWorker, Settings, frame_worker};
 use crate::stages::{Stages, Status};
-use crate::surfaces::{self, SurfaceDrawing, SurfaceSetup, SurfaceWorker, TrimShape};
-use crate::tessellation::{self as tess, TessDrawing, TessSetup, TessWorker};
+use crate::surfaces::{self, SurfaceDrawing, SurfaceSetup, TrimShape};
+use crate::tessellation::{self as tess, TessDrawing, TessSetup};
+use crate::worker::Worker;
 
 /// What the window shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -40,32 +41,68 @@ pub enum Scene {
     Gpu,
 }
 
-/// The GPU scene's state.
-struct GpuView {
-    setup: GpuSetup,
-    worker: GpuWorker,
-    asked: Option<GpuSetup>,
-    drawing: Option<GpuDrawing>,
-    texture: Option<TextureHandle>,
+/// A scene drawn by a worker: its set-up, what was last asked for and
+/// drawn, and the drawing's pictures on the GPU.
+struct Live<J, R> {
+    setup: J,
+    worker: Worker<J, R>,
+    asked: Option<J>,
+    drawing: Option<R>,
+    /// The drawing's pictures as textures, made when first shown.
+    textures: Vec<TextureHandle>,
+    /// Keeps a set-up drawable before it is asked for.
+    tidy: fn(&mut J),
 }
 
-/// The tessellation scene's state.
-struct Tessellation {
-    setup: TessSetup,
-    worker: TessWorker,
-    asked: Option<TessSetup>,
-    drawing: Option<TessDrawing>,
-    texture: Option<TextureHandle>,
-}
+impl<J: Clone + PartialEq + Send + 'static, R: Send + 'static> Live<J, R> {
+    fn new(setup: J, worker: Worker<J, R>, tidy: fn(&mut J)) -> Self {
+        Self {
+            setup,
+            worker,
+            asked: None,
+            drawing: None,
+            textures: Vec::new(),
+            tidy,
+        }
+    }
 
-/// The surface scene's state.
-struct Surfaces {
-    setup: SurfaceSetup,
-    worker: SurfaceWorker,
-    asked: Option<SurfaceSetup>,
-    drawing: Option<SurfaceDrawing>,
-    /// The picture and the parameter square of `drawing`, on the GPU.
-    textures: Option<(TextureHandle, TextureHandle)>,
+    /// Asks for a drawing if the set-up changed since the last one.
+    fn ask(&mut self) {
+        (self.tidy)(&mut self.setup);
+        if self.asked.as_ref() != Some(&self.setup) {
+            self.worker.request(self.setup.clone());
+            self.asked = Some(self.setup.clone());
+        }
+    }
+
+    fn arrived(&mut self, drawing: R) {
+        self.drawing = Some(drawing);
+        self.textures.clear();
+    }
+
+    /// Takes the newest drawing, if one arrived; asks the window to look
+    /// again soon while one is being drawn.
+    fn poll(&mut self, ui: &egui::Ui) {
+        if let Some(drawing) = self.worker.poll() {
+            self.arrived(drawing);
+        }
+        if self.worker.busy_for().is_some() {
+            ui.ctx().request_repaint_after(Duration::from_millis(100));
+        }
+    }
+
+    /// Asks for the drawing and waits for it, at most `limit` (for tests);
+    /// whether it arrived.
+    fn wait(&mut self, limit: Duration) -> bool {
+        self.ask();
+        match self.worker.wait(limit) {
+            Some(drawing) => {
+                self.arrived(drawing);
+                true
+            }
+            None => self.worker.busy_for().is_none(),
+        }
+    }
 }
 
 /// The curve scene's state.
@@ -108,9 +145,9 @@ pub struct ViewerApp {
     scene: Scene,
     playground: Playground,
     curves: Curves,
-    surfaces: Surfaces,
-    tessellation: Tessellation,
-    gpu: GpuView,
+    surfaces: Live<SurfaceSetup, SurfaceDrawing>,
+    tessellation: Live<TessSetup, TessDrawing>,
+    gpu: Live<GpuSetup, GpuDrawing>,
     meshes: Vec<MeshEntry>,
     selected: usize,
     settings: Settings,
@@ -172,27 +209,21 @@ impl ViewerApp {
                 construction: true,
                 definition: true,
             },
-            surfaces: Surfaces {
-                setup: SurfaceSetup::default(),
-                worker: surfaces::worker(stages.clone()),
-                asked: None,
-                drawing: None,
-                textures: None,
-            },
-            tessellation: Tessellation {
-                setup: TessSetup::default(),
-                worker: tess::worker(stages.clone()),
-                asked: None,
-                drawing: None,
-                texture: None,
-            },
-            gpu: GpuView {
-                setup: GpuSetup::default(),
-                worker: gpu_scene::worker(stages.clone()),
-                asked: None,
-                drawing: None,
-                texture: None,
-            },
+            surfaces: Live::new(
+                SurfaceSetup::default(),
+                surfaces::worker(stages.clone()),
+                SurfaceSetup::tidy,
+            ),
+            tessellation: Live::new(
+                TessSetup::default(),
+                tess::worker(stages.clone()),
+                TessSetup::tidy,
+            ),
+            gpu: Live::new(
+                GpuSetup::default(),
+                gpu_scene::worker(stages.clone()),
+                GpuSetup::tidy,
+            ),
             meshes,
             selected: 0,
             settings: Settings::default(),
@@ -242,7 +273,7 @@ impl ViewerApp {
             Scene::Pipeline => self.texture.is_some(),
             Scene::Pixels => self.playground.drawing.is_some(),
             Scene::Curves => self.curves.drawing.is_some(),
-            Scene::Surfaces => self.surfaces.textures.is_some(),
+            Scene::Surfaces => !self.surfaces.textures.is_empty(),
             Scene::Tessellation => self.tessellation.drawing.is_some(),
             Scene::Gpu => self.gpu.drawing.is_some(),
         };
@@ -328,15 +359,7 @@ impl ViewerApp {
     /// Asks for the surface scene's drawing and waits for it, at most
     /// `limit` (for tests); whether it arrived.
     pub fn wait_for_surface(&mut self, limit: Duration) -> bool {
-        self.ask_surfaces();
-        match self.surfaces.worker.wait(limit) {
-            Some(drawing) => {
-                self.surfaces.drawing = Some(drawing);
-                self.surfaces.textures = None;
-                true
-            }
-            None => self.surfaces.worker.busy_for().is_none(),
-        }
+        self.surfaces.wait(limit)
     }
 
     /// The tessellation scene's set-up, to change what it draws.
@@ -353,15 +376,7 @@ impl ViewerApp {
     /// Asks for the tessellation scene's drawing and waits for it, at most
     /// `limit` (for tests); whether it arrived.
     pub fn wait_for_tessellation(&mut self, limit: Duration) -> bool {
-        self.ask_tessellation();
-        match self.tessellation.worker.wait(limit) {
-            Some(drawing) => {
-                self.tessellation.drawing = Some(drawing);
-                self.tessellation.texture = None;
-                true
-            }
-            None => self.tessellation.worker.busy_for().is_none(),
-        }
+        self.tessellation.wait(limit)
     }
 
     /// The GPU scene's set-up, to change what it draws.
@@ -378,45 +393,7 @@ impl ViewerApp {
     /// Asks for the GPU scene's drawing and waits for it, at most `limit`
     /// (for tests); whether it arrived.
     pub fn wait_for_gpu(&mut self, limit: Duration) -> bool {
-        self.ask_gpu();
-        match self.gpu.worker.wait(limit) {
-            Some(drawing) => {
-                self.gpu.drawing = Some(drawing);
-                self.gpu.texture = None;
-                true
-            }
-            None => self.gpu.worker.busy_for().is_none(),
-        }
-    }
-
-    /// Asks for the GPU scene's drawing if its set-up changed.
-    fn ask_gpu(&mut self) {
-        let scene = &mut self.gpu;
-        scene.setup.tidy();
-        if scene.asked.as_ref() != Some(&scene.setup) {
-            scene.worker.request(scene.setup);
-            scene.asked = Some(scene.setup);
-        }
-    }
-
-    /// Asks for the tessellation scene's drawing if its set-up changed.
-    fn ask_tessellation(&mut self) {
-        let scene = &mut self.tessellation;
-        scene.setup.tidy();
-        if scene.asked.as_ref() != Some(&scene.setup) {
-            scene.worker.request(scene.setup);
-            scene.asked = Some(scene.setup);
-        }
-    }
-
-    /// Asks for the surface scene's drawing if its set-up changed.
-    fn ask_surfaces(&mut self) {
-        let surfaces = &mut self.surfaces;
-        surfaces.setup.tidy();
-        if surfaces.asked.as_ref() != Some(&surfaces.setup) {
-            surfaces.worker.request(surfaces.setup);
-            surfaces.asked = Some(surfaces.setup);
-        }
+        self.gpu.wait(limit)
     }
 
     /// Asks for the curve scene's drawing if its set-up changed.
@@ -620,6 +597,25 @@ impl ViewerApp {
         ui.separator();
     }
 
+    /// A scene's controls on the right (under the scene switch) and its
+    /// picture on the left, as in seed 004's Figure 2.
+    fn two_panels(
+        &mut self,
+        ui: &mut egui::Ui,
+        controls: fn(&mut Self, &mut egui::Ui),
+        picture: fn(&mut Self, &mut egui::Ui),
+    ) {
+        egui::Panel::right("controls")
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    self.scene_switch(ui);
+                    controls(self, ui);
+                });
+            });
+        egui::CentralPanel::default().show(ui, |ui| picture(self, ui));
+    }
+
     fn controls(&mut self, ui: &mut egui::Ui) {
         self.scene_switch(ui);
         ui.heading("Your pipeline");
@@ -708,11 +704,7 @@ impl ViewerApp {
             return;
         };
         for stage in &frame.stages {
-            let colour = status_colour(&stage.status);
-            ui.label(
-                RichText::new(format!("{}: {}", stage.name, stage.status.describe())).color(colour),
-            );
-            ui.label(RichText::new(stage.source).small().weak());
+            stage_label(ui, stage.name, stage.source, &stage.status);
         }
         let (total, drawn) = frame.polygons;
         let timing = self
@@ -734,40 +726,14 @@ impl ViewerApp {
         };
         let texture = self
             .texture
-            .get_or_insert_with(|| {
-                ui.ctx().load_texture(
-                    "picture",
-                    colour_image(&frame.canvas),
-                    TextureOptions::NEAREST,
-                )
-            })
+            .get_or_insert_with(|| texture(ui, "picture", &frame.canvas))
             .clone();
-        // The largest whole-pixel magnification that fits, so that every
-        // pixel shows as a sharp square.
-        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
-        let (w, h) = (
-            frame.canvas.width().max(1) as f32,
-            frame.canvas.height().max(1) as f32,
-        );
-        let scale = (available.x / w).min(available.y / h);
-        let scale = if scale >= 1.0 { scale.floor() } else { scale };
-        let size = egui::vec2(w * scale, h * scale);
-        let response = ui.add(
-            egui::Image::from_texture(egui::load::SizedTexture::new(texture.id(), size))
-                .sense(egui::Sense::drag()),
-        );
-        if response.dragged() {
-            let delta = response.drag_delta();
-            self.settings.yaw = (self.settings.yaw - delta.x * 0.5).clamp(-180.0, 180.0);
-            self.settings.pitch = (self.settings.pitch + delta.y * 0.5).clamp(-89.0, 89.0);
-        }
-        if response.hovered() {
-            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
-            if scroll != 0.0 {
-                self.settings.distance =
-                    (self.settings.distance * (1.0 - scroll * 0.002)).clamp(1.0, 12.0);
-            }
-        }
+        let response = magnified(ui, &texture, 0.0);
+        let (around, above, zoom) = orbit(ui, &response);
+        let settings = &mut self.settings;
+        settings.yaw = (settings.yaw + around).clamp(-180.0, 180.0);
+        settings.pitch = (settings.pitch + above).clamp(-89.0, 89.0);
+        settings.distance = (settings.distance * zoom).clamp(1.0, 12.0);
         slow_notice(ui, "Your stages have been drawing this frame", slow);
     }
 }
@@ -808,15 +774,7 @@ impl ViewerApp {
         if self.playground.worker.busy_for().is_some() {
             ui.ctx().request_repaint_after(Duration::from_millis(100));
         }
-        egui::Panel::right("controls")
-            .default_size(320.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.scene_switch(ui);
-                    self.playground_controls(ui);
-                });
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.pixel_grid(ui));
+        self.two_panels(ui, Self::playground_controls, Self::pixel_grid);
     }
 
     fn playground_controls(&mut self, ui: &mut egui::Ui) {
@@ -843,9 +801,7 @@ impl ViewerApp {
             return;
         };
         let (name, source) = drawing.stage;
-        let colour = status_colour(&drawing.status);
-        ui.label(RichText::new(format!("{name}: {}", drawing.status.describe())).color(colour));
-        ui.label(RichText::new(source).small().weak());
+        stage_label(ui, name, source, &drawing.status);
         ui.label(drawing.summary());
         ui.separator();
         let count = drawing.yours.len();
@@ -1010,15 +966,7 @@ impl ViewerApp {
         if self.curves.worker.busy_for().is_some() {
             ui.ctx().request_repaint_after(Duration::from_millis(100));
         }
-        egui::Panel::right("controls")
-            .default_size(320.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.scene_switch(ui);
-                    self.curve_controls(ui);
-                });
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.curve_area(ui));
+        self.two_panels(ui, Self::curve_controls, Self::curve_area);
     }
 
     fn curve_controls(&mut self, ui: &mut egui::Ui) {
@@ -1082,11 +1030,7 @@ impl ViewerApp {
             CurveKind::Bezier => (stages.curve.name, stages.curve.source),
             CurveKind::Nurbs => (stages.nurbs.name, stages.nurbs.source),
         };
-        ui.label(
-            RichText::new(format!("{name}: {}", drawing.status.describe()))
-                .color(status_colour(&drawing.status)),
-        );
-        ui.label(RichText::new(source).small().weak());
+        stage_label(ui, name, source, &drawing.status);
         if let Some(deviation) = drawing.deviation {
             ui.label(format!(
                 "largest distance from the definition: {deviation:.1e}"
@@ -1195,23 +1139,9 @@ impl ViewerApp {
     /// The surface scene: its controls on the right, the picture and the
     /// parameter square on the left.
     fn show_surfaces(&mut self, ui: &mut egui::Ui) {
-        self.ask_surfaces();
-        if let Some(drawing) = self.surfaces.worker.poll() {
-            self.surfaces.drawing = Some(drawing);
-            self.surfaces.textures = None;
-        }
-        if self.surfaces.worker.busy_for().is_some() {
-            ui.ctx().request_repaint_after(Duration::from_millis(100));
-        }
-        egui::Panel::right("controls")
-            .default_size(320.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.scene_switch(ui);
-                    self.surface_controls(ui);
-                });
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.surface_picture(ui));
+        self.surfaces.ask();
+        self.surfaces.poll(ui);
+        self.two_panels(ui, Self::surface_controls, Self::surface_picture);
     }
 
     fn surface_controls(&mut self, ui: &mut egui::Ui) {
@@ -1266,11 +1196,7 @@ impl ViewerApp {
                 &drawing.render,
             ),
         ] {
-            ui.label(
-                RichText::new(format!("{name}: {}", status.describe()))
-                    .color(status_colour(status)),
-            );
-            ui.label(RichText::new(source).small().weak());
+            stage_label(ui, name, source, status);
         }
     }
 
@@ -1282,48 +1208,21 @@ impl ViewerApp {
             slow_notice(ui, "Your surface code has been drawing", slow);
             return;
         };
-        let (picture, uv_map) = surfaces
-            .textures
-            .get_or_insert_with(|| {
-                let load = |name: &str, canvas: &Canvas| {
-                    ui.ctx()
-                        .load_texture(name, colour_image(canvas), TextureOptions::NEAREST)
-                };
-                (
-                    load("surface", &drawing.canvas),
-                    load("parameter square", &drawing.uv_map),
-                )
-            })
-            .clone();
-        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui) + 140.0);
-        let (w, h) = (
-            drawing.canvas.width().max(1) as f32,
-            drawing.canvas.height().max(1) as f32,
-        );
-        let scale = (available.x / w).min(available.y / h);
-        let scale = if scale >= 1.0 { scale.floor() } else { scale };
-        let response = ui.add(
-            egui::Image::from_texture(egui::load::SizedTexture::new(
-                picture.id(),
-                egui::vec2(w * scale, h * scale),
-            ))
-            .sense(egui::Sense::drag()),
-        );
+        if surfaces.textures.is_empty() {
+            surfaces.textures = vec![
+                texture(ui, "surface", &drawing.canvas),
+                texture(ui, "parameter square", &drawing.uv_map),
+            ];
+        }
+        let response = magnified(ui, &surfaces.textures[0], 140.0);
+        let (around, above, zoom) = orbit(ui, &response);
         let setup = &mut surfaces.setup;
-        if response.dragged() {
-            let delta = response.drag_delta();
-            setup.yaw = (setup.yaw - f64::from(delta.x) * 0.5).clamp(-180.0, 180.0);
-            setup.pitch = (setup.pitch + f64::from(delta.y) * 0.5).clamp(-89.0, 89.0);
-        }
-        if response.hovered() {
-            let scroll = f64::from(ui.input(|i| i.smooth_scroll_delta.y));
-            if scroll != 0.0 {
-                setup.distance = (setup.distance * (1.0 - scroll * 0.002)).clamp(0.8, 8.0);
-            }
-        }
+        setup.yaw = (setup.yaw + f64::from(around)).clamp(-180.0, 180.0);
+        setup.pitch = (setup.pitch + f64::from(above)).clamp(-89.0, 89.0);
+        setup.distance = (setup.distance * f64::from(zoom)).clamp(0.8, 8.0);
         ui.horizontal(|ui| {
             ui.add(egui::Image::from_texture(egui::load::SizedTexture::new(
-                uv_map.id(),
+                surfaces.textures[1].id(),
                 egui::vec2(128.0, 128.0),
             )));
             ui.label(
@@ -1338,23 +1237,9 @@ impl ViewerApp {
     /// The tessellation scene: its controls on the right, the triangles
     /// on the left.
     fn show_tessellation(&mut self, ui: &mut egui::Ui) {
-        self.ask_tessellation();
-        if let Some(drawing) = self.tessellation.worker.poll() {
-            self.tessellation.drawing = Some(drawing);
-            self.tessellation.texture = None;
-        }
-        if self.tessellation.worker.busy_for().is_some() {
-            ui.ctx().request_repaint_after(Duration::from_millis(100));
-        }
-        egui::Panel::right("controls")
-            .default_size(320.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.scene_switch(ui);
-                    self.tessellation_controls(ui);
-                });
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.tessellation_picture(ui));
+        self.tessellation.ask();
+        self.tessellation.poll(ui);
+        self.two_panels(ui, Self::tessellation_controls, Self::tessellation_picture);
     }
 
     fn tessellation_controls(&mut self, ui: &mut egui::Ui) {
@@ -1441,11 +1326,7 @@ impl ViewerApp {
             return;
         };
         let name = Stages::default().tessellate.name;
-        ui.label(
-            RichText::new(format!("{name}: {}", drawing.status.describe()))
-                .color(status_colour(&drawing.status)),
-        );
-        ui.label(RichText::new(drawing.setup.method.source()).small().weak());
+        stage_label(ui, name, drawing.setup.method.source(), &drawing.status);
         if let Some(result) = &drawing.result {
             ui.label(format!(
                 "{} vertices, {} triangles",
@@ -1465,33 +1346,15 @@ impl ViewerApp {
             slow_notice(ui, "Your tessellation has been running", slow);
             return;
         };
-        let texture = scene
-            .texture
-            .get_or_insert_with(|| {
-                ui.ctx().load_texture(
-                    "tessellation",
-                    colour_image(&result.canvas),
-                    TextureOptions::NEAREST,
-                )
-            })
-            .clone();
-        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
-        let side = result.canvas.width().max(1) as f32;
-        let scale = (available.x / side).min(available.y / side);
-        let scale = if scale >= 1.0 { scale.floor() } else { scale };
-        let response = ui.add(
-            egui::Image::from_texture(egui::load::SizedTexture::new(
-                texture.id(),
-                egui::vec2(side * scale, side * scale),
-            ))
-            .sense(egui::Sense::drag()),
-        );
-        if response.dragged() {
-            let delta = response.drag_delta();
-            let setup = &mut scene.setup;
-            setup.yaw = (setup.yaw - f64::from(delta.x) * 0.5).clamp(-180.0, 180.0);
-            setup.pitch = (setup.pitch - f64::from(delta.y) * 0.5).clamp(-180.0, 180.0);
+        if scene.textures.is_empty() {
+            scene.textures = vec![texture(ui, "tessellation", &result.canvas)];
         }
+        let response = magnified(ui, &scene.textures[0], 0.0);
+        // Turn and tilt; the renderer fits the mesh, so no zoom.
+        let (around, above, _) = orbit(ui, &response);
+        let setup = &mut scene.setup;
+        setup.yaw = (setup.yaw + f64::from(around)).clamp(-180.0, 180.0);
+        setup.pitch = (setup.pitch - f64::from(above)).clamp(-180.0, 180.0);
         slow_notice(ui, "Your tessellation has been running", slow);
     }
 }
@@ -1499,23 +1362,9 @@ impl ViewerApp {
 impl ViewerApp {
     /// The GPU scene: its controls on the right, the picture on the left.
     fn show_gpu(&mut self, ui: &mut egui::Ui) {
-        self.ask_gpu();
-        if let Some(drawing) = self.gpu.worker.poll() {
-            self.gpu.drawing = Some(drawing);
-            self.gpu.texture = None;
-        }
-        if self.gpu.worker.busy_for().is_some() {
-            ui.ctx().request_repaint_after(Duration::from_millis(100));
-        }
-        egui::Panel::right("controls")
-            .default_size(320.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.scene_switch(ui);
-                    self.gpu_controls(ui);
-                });
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.gpu_picture(ui));
+        self.gpu.ask();
+        self.gpu.poll(ui);
+        self.two_panels(ui, Self::gpu_controls, Self::gpu_picture);
     }
 
     fn gpu_controls(&mut self, ui: &mut egui::Ui) {
@@ -1582,11 +1431,7 @@ impl ViewerApp {
             return;
         };
         for stage in &drawing.stages {
-            ui.label(
-                RichText::new(format!("{}: {}", stage.name, stage.status.describe()))
-                    .color(status_colour(&stage.status)),
-            );
-            ui.label(RichText::new(stage.source).small().weak());
+            stage_label(ui, stage.name, stage.source, &stage.status);
         }
         if drawing.canvas.is_some() {
             ui.label(format!("{} triangles", drawing.triangles));
@@ -1607,38 +1452,64 @@ impl ViewerApp {
             slow_notice(ui, "Your GPU passes have been running", slow);
             return;
         };
-        let texture = scene
-            .texture
-            .get_or_insert_with(|| {
-                ui.ctx()
-                    .load_texture("gpu", colour_image(canvas), TextureOptions::NEAREST)
-            })
-            .clone();
-        let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
-        let (w, h) = (canvas.width().max(1) as f32, canvas.height().max(1) as f32);
-        let scale = (available.x / w).min(available.y / h);
-        let scale = if scale >= 1.0 { scale.floor() } else { scale };
-        let response = ui.add(
-            egui::Image::from_texture(egui::load::SizedTexture::new(
-                texture.id(),
-                egui::vec2(w * scale, h * scale),
-            ))
-            .sense(egui::Sense::drag()),
-        );
+        if scene.textures.is_empty() {
+            scene.textures = vec![texture(ui, "gpu", canvas)];
+        }
+        let response = magnified(ui, &scene.textures[0], 0.0);
+        let (around, above, zoom) = orbit(ui, &response);
         let setup = &mut scene.setup;
-        if response.dragged() {
-            let delta = response.drag_delta();
-            setup.yaw = (setup.yaw - delta.x * 0.5).clamp(-180.0, 180.0);
-            setup.pitch = (setup.pitch + delta.y * 0.5).clamp(-89.0, 89.0);
-        }
-        if response.hovered() {
-            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
-            if scroll != 0.0 {
-                setup.distance = (setup.distance * (1.0 - scroll * 0.002)).clamp(0.8, 10.0);
-            }
-        }
+        setup.yaw = (setup.yaw + around).clamp(-180.0, 180.0);
+        setup.pitch = (setup.pitch + above).clamp(-89.0, 89.0);
+        setup.distance = (setup.distance * zoom).clamp(0.8, 10.0);
         slow_notice(ui, "Your GPU passes have been running", slow);
     }
+}
+
+/// A picture at the largest whole-pixel magnification that fits (every
+/// pixel a sharp square), `reserve` points kept free below it, sensing
+/// drags (to orbit the camera).
+fn magnified(ui: &mut egui::Ui, texture: &TextureHandle, reserve: f32) -> egui::Response {
+    let [w, h] = texture.size().map(|s| s.max(1) as f32);
+    let available = ui.available_size() - egui::vec2(0.0, notice_room(ui) + reserve);
+    let scale = (available.x / w).min(available.y / h);
+    let scale = if scale >= 1.0 { scale.floor() } else { scale };
+    ui.add(
+        egui::Image::from_texture(egui::load::SizedTexture::new(
+            texture.id(),
+            egui::vec2(w * scale, h * scale),
+        ))
+        .sense(egui::Sense::drag()),
+    )
+}
+
+/// How a drag over a picture and the scroll wheel move an orbiting
+/// camera: degrees around and above (half a degree a point, the picture
+/// following the pointer), and the factor for its distance.
+fn orbit(ui: &egui::Ui, response: &egui::Response) -> (f32, f32, f32) {
+    let delta = if response.dragged() {
+        response.drag_delta()
+    } else {
+        egui::Vec2::ZERO
+    };
+    let scroll = if response.hovered() {
+        ui.input(|i| i.smooth_scroll_delta.y)
+    } else {
+        0.0
+    };
+    (-delta.x * 0.5, delta.y * 0.5, 1.0 - scroll * 0.002)
+}
+
+/// A canvas as a texture, drawn without smoothing.
+fn texture(ui: &egui::Ui, name: &str, canvas: &Canvas) -> TextureHandle {
+    ui.ctx()
+        .load_texture(name, colour_image(canvas), TextureOptions::NEAREST)
+}
+
+/// One stage in a panel: `name: status` in the status's colour, its
+/// source below.
+fn stage_label(ui: &mut egui::Ui, name: &str, source: &str, status: &Status) {
+    ui.label(RichText::new(format!("{name}: {}", status.describe())).color(status_colour(status)));
+    ui.label(RichText::new(source).small().weak());
 }
 
 /// The trim's shape and parameters (the surface and GPU scenes).
