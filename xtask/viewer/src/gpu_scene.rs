@@ -143,14 +143,8 @@ impl GpuSetup {
     /// Where the camera stands, looking at `target` (y up).
     #[must_use]
     pub fn eye(&self, target: glam::Vec3) -> glam::Vec3 {
-        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
-        target
-            + self.distance
-                * glam::Vec3::new(
-                    pitch.cos() * yaw.sin(),
-                    pitch.sin(),
-                    pitch.cos() * yaw.cos(),
-                )
+        let direction = crate::render::orbit_direction(f64::from(self.yaw), f64::from(self.pitch));
+        target + self.distance * direction.as_vec3()
     }
 }
 

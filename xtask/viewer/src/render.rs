@@ -69,17 +69,24 @@ impl Default for Settings {
     }
 }
 
+/// The unit direction from an orbit's centre to a camera `yaw` degrees
+/// around the vertical (y) axis and `pitch` degrees above the horizontal
+/// plane, `+z` at yaw 0 (every scene's orbiting camera).
+#[must_use]
+pub fn orbit_direction(yaw: f64, pitch: f64) -> glam::DVec3 {
+    let (yaw, pitch) = (yaw.to_radians(), pitch.to_radians());
+    glam::DVec3::new(
+        yaw.sin() * pitch.cos(),
+        pitch.sin(),
+        yaw.cos() * pitch.cos(),
+    )
+}
+
 impl Settings {
     /// Where the eye stands: on a sphere around the origin.
     #[must_use]
     pub fn eye(&self) -> Vec3 {
-        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
-        self.distance
-            * Vec3::new(
-                yaw.sin() * pitch.cos(),
-                pitch.sin(),
-                yaw.cos() * pitch.cos(),
-            )
+        self.distance * orbit_direction(f64::from(self.yaw), f64::from(self.pitch)).as_vec3()
     }
 
     /// The course pipeline for `mesh`, with this camera.

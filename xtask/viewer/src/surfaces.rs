@@ -268,14 +268,7 @@ impl SurfaceSetup {
     /// Where the camera stands.
     #[must_use]
     pub fn eye(&self) -> DVec3 {
-        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
-        TARGET
-            + self.distance
-                * DVec3::new(
-                    pitch.cos() * yaw.sin(),
-                    pitch.sin(),
-                    pitch.cos() * yaw.cos(),
-                )
+        TARGET + self.distance * crate::render::orbit_direction(self.yaw, self.pitch)
     }
 }
 
