@@ -13,6 +13,7 @@ mod gradescope;
 mod hint;
 mod release;
 mod review;
+mod sandbox;
 mod setup;
 mod stage;
 mod stubs;
@@ -182,6 +183,10 @@ struct GradeArgs {
     /// cargo's target directory for the build [default: cargo's].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
+    /// The longest a build of student code may take, in seconds; a build over it fails
+    /// that submission, and a class goes on with the next [default: 2700].
+    #[arg(long, value_name = "SECONDS")]
+    build_time_limit: Option<u64>,
 }
 
 fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
@@ -196,6 +201,9 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
         options.submissions_at_once = Some(jobs);
     }
     options.target_dir = args.target_dir;
+    if let Some(seconds) = args.build_time_limit {
+        options.build_time_limit = std::time::Duration::from_secs(seconds);
+    }
     match args.submission {
         Some(_) if args.reference => {
             anyhow::bail!("--reference grades this course's solutions; a submission has none")

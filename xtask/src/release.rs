@@ -373,7 +373,7 @@ pub fn write(
 
 /// Lets cargo drop the packages the edition no longer uses from its lock
 /// file, without touching the versions of the others.
-fn trim_lock_file(dir: &Path) -> Result<()> {
+pub(crate) fn trim_lock_file(dir: &Path) -> Result<()> {
     // Offline first; cargo needs the manifests of every platform's
     // packages, which a machine that never built for Windows may lack.
     let mut output = None;

@@ -120,8 +120,12 @@ pub enum Overlay<'a> {
     /// `reference/*/src` laid over the student files.
     Reference,
     /// Another checkout's task files (see [`task_files`]) laid over the
-    /// stubs; everything else, `lib.rs` and given code included, stays the
-    /// course's. A task file the submission lacks keeps its stub.
+    /// stubs of the student edition of every topic (`cargo xtask
+    /// release`): no solutions, no history, nothing of the course's
+    /// tooling tests or benchmarks; everything else, `lib.rs` and given
+    /// code included, stays the course's. A task file the submission
+    /// lacks, or reaches through a symbolic link ([`plain_file`]), keeps
+    /// its stub.
     Submission(&'a Path),
     /// The stubs with each `todo!()` replaced by the cheapest body that
     /// compiles (see `stubs::do_nothing`), except on the lines listed per
@@ -245,19 +249,84 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
             }
         }
         Overlay::Submission(submission) => {
+            let topics = crate::topics::discover(root)?;
+            let (edition, _) = crate::release::edition_files(root, &topics)?;
+            files = edition;
+            // The course's lock file, trimmed to the edition's packages by
+            // cargo when it is staged (see `stage_files`).
+            if root.join(LOCK_FILE).is_file() {
+                files.push((PathBuf::from(LOCK_FILE), Source::File(root.join(LOCK_FILE))));
+            }
             for task_file in task_files(root)? {
-                let theirs = submission.join(&task_file);
-                // A plain file only: a link could point anywhere.
-                let is_file = fs::symlink_metadata(&theirs).is_ok_and(|m| m.is_file());
-                if is_file {
+                // A plain file only, reached through folders only: a link
+                // could point anywhere.
+                if plain_file(submission, &task_file).is_ok() {
                     files.retain(|(to, _)| *to != task_file);
-                    files.push((task_file, Source::File(theirs)));
+                    files.push((task_file.clone(), Source::File(submission.join(task_file))));
                 }
             }
         }
     }
     files.sort();
     Ok(files)
+}
+
+/// The lock file of a workspace.
+const LOCK_FILE: &str = "Cargo.lock";
+
+/// The most a file of a submission may hold to be read (a task file, a
+/// grading file compared with the course's).
+pub const MAX_SUBMITTED_FILE: u64 = 4 << 20;
+
+/// Whether `relative` under `root` is a plain file reached through plain
+/// folders: `Err` names the first symbolic link (or other non-file) on
+/// the way, for the report.
+pub fn plain_file(root: &Path, relative: &Path) -> std::result::Result<(), String> {
+    let mut path = root.to_path_buf();
+    let parts: Vec<Component<'_>> = relative.components().collect();
+    for (i, part) in parts.iter().enumerate() {
+        let Component::Normal(name) = part else {
+            return Err(format!("{} is not a plain path", relative.display()));
+        };
+        path.push(name);
+        let shown = || {
+            parts[..=i]
+                .iter()
+                .map(|c| c.as_os_str().to_string_lossy())
+                .collect::<Vec<_>>()
+                .join("/")
+        };
+        let meta =
+            fs::symlink_metadata(&path).map_err(|_| format!("{} does not exist", shown()))?;
+        if meta.file_type().is_symlink() {
+            return Err(format!("{} is a symbolic link", shown()));
+        }
+        let last = i + 1 == parts.len();
+        if last && !meta.is_file() {
+            return Err(format!("{} is not a plain file", shown()));
+        }
+        if !last && !meta.is_dir() {
+            return Err(format!("{} is not a folder", shown()));
+        }
+    }
+    Ok(())
+}
+
+/// The contents of `relative` under `root` if it is a plain file reached
+/// through plain folders ([`plain_file`]) and holds at most
+/// [`MAX_SUBMITTED_FILE`] bytes; `None` otherwise (a link, a device, a
+/// pipe, a flood: nothing the grader reads could block it or follow a
+/// link out of the submission).
+#[must_use]
+pub fn read_plain(root: &Path, relative: &Path) -> Option<Vec<u8>> {
+    use std::io::Read as _;
+    plain_file(root, relative).ok()?;
+    let file = File::open(root.join(relative)).ok()?;
+    let mut bytes = Vec::new();
+    file.take(MAX_SUBMITTED_FILE + 1)
+        .read_to_end(&mut bytes)
+        .ok()?;
+    (bytes.len() as u64 <= MAX_SUBMITTED_FILE).then_some(bytes)
 }
 
 /// Writes `contents` to `path`, creating the folders it lies in.
@@ -363,33 +432,6 @@ pub fn stage_plan(root: &Path, files: &Files, target_dir: Option<&Path>) -> Resu
     stage_files(&home, files, target_dir, lock)
 }
 
-/// The folders under `dir` to hide so that only `keep` (folders under it)
-/// and what lies on the way to them show: every entry of `dir` that is
-/// neither kept nor leads to a kept folder, and so on down.
-pub fn hidden_beside(dir: &Path, keep: &[&Path]) -> Vec<PathBuf> {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let mut hidden = Vec::new();
-    let mut entries: Vec<PathBuf> = entries
-        .filter_map(|entry| entry.ok())
-        .filter(|entry| entry.file_type().is_ok_and(|kind| kind.is_dir()))
-        .map(|entry| entry.path())
-        .collect();
-    entries.sort();
-    for entry in entries {
-        if keep.iter().any(|kept| *kept == entry) {
-            continue;
-        }
-        if keep.iter().any(|kept| kept.starts_with(&entry)) {
-            hidden.extend(hidden_beside(&entry, keep));
-        } else {
-            hidden.push(entry);
-        }
-    }
-    hidden
-}
-
 /// Takes the lock of the stage of the checkout at `root`, waiting for
 /// another run: a class run holds it throughout, since its slots build
 /// into the same cache.
@@ -423,7 +465,18 @@ fn lock_stage(home: &Path) -> Result<File> {
 fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File) -> Result<Stage> {
     let stage_root = home.join("stage");
     claim(&stage_root)?;
+    // A lock file staged anew is trimmed to the stage's packages by cargo
+    // (no student file takes part in resolving them), so that the build,
+    // which cannot write the stage, finds it current.
+    let planned_lock = files.iter().find(|(to, _)| to == Path::new(LOCK_FILE));
+    let relock = match planned_lock {
+        Some((_, source)) => fs::read(stage_root.join(LOCK_FILE)).ok() != Some(source.read()?),
+        None => false,
+    };
     sync(files, &stage_root)?;
+    if relock {
+        crate::release::trim_lock_file(&stage_root)?;
+    }
     let target_dir = target_dir.map_or_else(|| home.join("build"), Path::to_path_buf);
     claim_build(&stage_root, &target_dir)?;
     Ok(Stage {
@@ -606,41 +659,6 @@ mod tests {
         assert_eq!(
             fs::read_to_string(target.join(BUILT_FROM)).unwrap(),
             a.to_string_lossy()
-        );
-        fs::remove_dir_all(&dir).unwrap();
-    }
-
-    #[test]
-    fn hidden_beside_shows_only_the_way_to_what_is_kept() {
-        let dir = scratch("beside");
-        for folder in [
-            "debug/deps",
-            "grade",
-            "xtask/stage/exercises",
-            "xtask/build",
-            "xtask/shortcuts",
-            "xtask/class/0/stage",
-            "xtask/class/1/stage",
-        ] {
-            fs::create_dir_all(dir.join(folder)).unwrap();
-        }
-        write(&dir.join("xtask/stage.lock"), "");
-        let slot = dir.join("xtask/class/1");
-        let hidden = hidden_beside(&dir, &[&slot]);
-        let relative: Vec<String> = hidden
-            .iter()
-            .map(|h| h.strip_prefix(&dir).unwrap().display().to_string())
-            .collect();
-        assert_eq!(
-            relative,
-            [
-                "debug",
-                "grade",
-                "xtask/build",
-                "xtask/class/0",
-                "xtask/shortcuts",
-                "xtask/stage"
-            ]
         );
         fs::remove_dir_all(&dir).unwrap();
     }

@@ -7,7 +7,7 @@
 //! ```text
 //! +++
 //! time_limit_s = 20          # optional: per-test wall-clock limit (default 20)
-//! memory_limit_mib = 4096    # optional: per-test address-space limit (0 = none)
+//! memory_limit_mib = 4096    # optional: per-test memory: each process's address space, and all its processes together where cgroups can be made (default 4096)
 //! gpu = false                # optional: the topic needs a GPU adapter (see `setup`)
 //! [[tasks]]
 //! id = "dda"

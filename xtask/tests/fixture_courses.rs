@@ -10,138 +10,18 @@
 //! - `fixtures/tiny`: a correct course, on which `cargo xtask test` passes
 //!   until a stub starts scoring points.
 
-use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::time::{Duration, Instant};
+mod common;
 
+use std::fs;
+use std::path::Path;
+use std::process::Command;
+use std::time::Duration;
+
+use common::{copy_dir, fixture, grade, read_json, reason, stdout, task, topic, xtask};
 use serde_json::Value;
 
 /// The hostile fixture's per-test time limit (its task sheet says so).
 const HOSTILE_TIME_LIMIT: Duration = Duration::from_secs(3);
-
-/// Copies `tests/fixtures/<name>` to a scratch folder of its own for
-/// `case`, keeping an earlier copy's `target/` so that builds stay warm.
-fn fixture(name: &str, case: &str) -> PathBuf {
-    let source = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures")
-        .join(name);
-    let copy = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}-{case}"));
-    if copy.exists() {
-        for entry in fs::read_dir(&copy).unwrap() {
-            let path = entry.unwrap().path();
-            if path.file_name().unwrap() != "target" {
-                if path.is_dir() {
-                    fs::remove_dir_all(&path).unwrap();
-                } else {
-                    fs::remove_file(&path).unwrap();
-                }
-            }
-        }
-    }
-    copy_dir(&source, &copy);
-    // The course's `#[testkit::test]`, which the fixtures' tests use.
-    let macros = Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/testkit-macros");
-    for file in ["Cargo.toml", "src/lib.rs"] {
-        let target = copy.join("crates/testkit-macros").join(file);
-        fs::create_dir_all(target.parent().unwrap()).unwrap();
-        fs::copy(macros.join(file), target).unwrap();
-    }
-    copy
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let target = to.join(entry.file_name());
-        if entry.file_type().unwrap().is_dir() {
-            copy_dir(&entry.path(), &target);
-        } else {
-            fs::copy(entry.path(), &target).unwrap();
-        }
-    }
-}
-
-/// Runs the xtask binary on the course at `root`.
-fn xtask(root: &Path, args: &[&str]) -> Output {
-    let output = Command::new(env!("CARGO_BIN_EXE_xtask"))
-        .arg("--root")
-        .arg(root)
-        .args(args)
-        // The fixtures build with their own target dir and flags.
-        .env_remove("CARGO_TARGET_DIR")
-        .env_remove("CARGO_BUILD_TARGET_DIR")
-        .env_remove("RUSTFLAGS")
-        .env_remove("CARGO_ENCODED_RUSTFLAGS")
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("xtask runs");
-    eprintln!(
-        "$ xtask --root {} {}\n{}\n{}",
-        root.display(),
-        args.join(" "),
-        String::from_utf8_lossy(&output.stdout),
-        String::from_utf8_lossy(&output.stderr)
-    );
-    output
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn read_json(path: &Path) -> Value {
-    let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{} is not JSON: {e}", path.display()))
-}
-
-fn topic<'a>(report: &'a Value, name: &str) -> &'a Value {
-    report["topics"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|t| t["name"] == name)
-        .unwrap()
-}
-
-fn task<'a>(report: &'a Value, topic_name: &str, id: &str) -> &'a Value {
-    let topic = topic(report, topic_name);
-    topic["tasks"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|t| t["id"] == id)
-        .unwrap()
-}
-
-/// The reason of the task's first failing test.
-fn reason(task: &Value) -> String {
-    let test = task["tests"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|t| t["status"] == "failed");
-    let test = test.unwrap_or_else(|| panic!("no failed test in {task:#}"));
-    test["reason"].as_str().unwrap().to_owned()
-}
-
-fn grade(root: &Path, out: &str, extra: &[&str]) -> (Output, Value, Duration) {
-    let out = root.join("target").join(out);
-    let mut args = vec!["grade", "--out", out.to_str().unwrap()];
-    if !extra.contains(&"--jobs") {
-        args.extend(["--jobs", "4"]);
-    }
-    args.extend(extra);
-    let started = Instant::now();
-    let output = xtask(root, &args);
-    let elapsed = started.elapsed();
-    assert!(
-        output.status.success(),
-        "grading itself must finish: {output:?}"
-    );
-    (output, read_json(&out.join("report.json")), elapsed)
-}
 
 #[test]
 fn each_misbehaviour_fails_its_task_with_its_reason() {

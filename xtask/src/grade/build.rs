@@ -5,26 +5,38 @@
 //! `compiler-artifact` ones) and renders the compiler's diagnostics on
 //! stderr, where a failed build's errors are read from.
 //!
-//! Where the tests run in a sandbox, so does the build ([`BuildSandbox`]):
-//! compiling reads the student's files, and whatever a macro of a
-//! dependency might read or write at compile time, it finds the file
-//! system read-only, the solutions, the submissions and the reports
-//! hidden, and no network; only the build's target folder is writable.
-//! The dependencies are fetched before, outside it.
+//! The build compiles student code, so it is a job of the one runner
+//! ([`crate::sandbox`]): it sees the toolchain, the dependencies' sources
+//! and the course's files read-only, writes its build folder alone, has
+//! no network (the dependencies are fetched before, outside it), and has
+//! a time and a memory limit. A build over either fails with that reason
+//! ("the build of 01-lines did not finish in 600 s") and is not tried
+//! again topic by topic.
 
+use std::ffi::OsString;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::time::Duration;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
+use crate::sandbox::{Jail, Job, Limits, Purpose};
 use crate::topics::Topic;
 
 /// At most this many compiler error blocks are shown for a topic.
 const MAX_ERROR_BLOCKS: usize = 8;
 /// At most this many lines of compiler errors are shown for a topic.
 const MAX_ERROR_LINES: usize = 120;
+/// What a build may take by default, the dependencies' first build
+/// included (a cold build of the whole course takes some ten minutes on
+/// two cores).
+pub const DEFAULT_BUILD_TIME_LIMIT: Duration = Duration::from_secs(45 * 60);
+/// The CPU time each compiler process may take: no crate of the course or
+/// its dependencies takes a tenth of it, while an endless constant
+/// evaluation in student code is stopped by it even within the
+/// wall-clock limit of a build.
+const COMPILER_CPU_LIMIT_S: u64 = 900;
 
 /// An integration-test executable: `tests/<name>.rs`.
 #[derive(Debug, Clone)]
@@ -40,78 +52,132 @@ pub struct TestBinary {
 pub enum Build {
     /// The test executables, sorted by name.
     Built(Vec<TestBinary>),
-    /// The readable compiler errors.
+    /// The readable compiler errors, or the limit the build ran into.
     Failed(String),
 }
 
-/// The bubblewrap sandbox of a build: `/` read-only, `hidden` folders
-/// empty, `target_dir` writable (the compiler's temporary files go to a
-/// folder in it: `/tmp` stays read-only, and no tmpfs covers it, since the
-/// course itself may live under `/tmp`), no network, its own process
-/// namespace.
+/// Where and within what a course is built.
 #[derive(Debug, Clone)]
-pub struct BuildSandbox {
-    /// The `bwrap` program.
-    pub program: PathBuf,
-    /// Folders shown empty (a hidden folder holding the workspace or the
-    /// target folder is left alone).
-    pub hidden: Vec<PathBuf>,
-    /// cargo's `--target-dir`: the one folder the build writes.
+pub struct Builder {
+    /// The workspace (a stage, or a checkout graded in place).
+    pub root: PathBuf,
+    /// cargo's `--target-dir`.
     pub target_dir: PathBuf,
+    /// Where cargo's output is kept (the report folder's `build/`).
+    pub logs: PathBuf,
+    /// The wall-clock limit of one cargo run.
+    pub time_limit: Duration,
+    /// Folders under the build folder that are not cargo's (a checkout's
+    /// reports and stages): shown empty to the build.
+    pub emptied: Vec<PathBuf>,
 }
 
-impl BuildSandbox {
-    /// `cargo`, run offline inside the sandbox, in `cargo`'s folder.
-    pub(crate) fn wrap(&self, cargo: &Command) -> Result<Command> {
-        std::fs::create_dir_all(&self.target_dir)
-            .with_context(|| format!("cannot create {}", self.target_dir.display()))?;
+/// How one cargo run of a build ended.
+pub struct CargoRun {
+    /// It succeeded.
+    pub success: bool,
+    /// cargo's JSON messages.
+    pub stdout: String,
+    /// Its rendered diagnostics.
+    pub stderr: String,
+    /// The limit it ran into, said for a student.
+    pub stopped: Option<String>,
+}
+
+impl Builder {
+    /// Runs cargo with `args` in the workspace as a job of the runner.
+    pub fn cargo(&self, what: &str, args: &[&str], env: &[(&str, &str)]) -> Result<CargoRun> {
+        fetch(&self.root);
+        let stdout = self.logs.join(format!("{what}.out"));
+        let stderr = self.logs.join(format!("{what}.err"));
         let temporary = self.target_dir.join("tmp-build");
-        std::fs::create_dir_all(&temporary)
-            .with_context(|| format!("cannot create {}", temporary.display()))?;
-        let cwd = cargo.get_current_dir().map(Path::to_path_buf);
-        let mut command = Command::new(&self.program);
-        command.args(["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc"]);
-        let keeps = |dir: &Path| {
-            cwd.as_deref().is_some_and(|c| c.starts_with(dir)) || self.target_dir.starts_with(dir)
+        let mut limits = Limits::build(self.time_limit);
+        limits.output = 256 << 20;
+        limits.cpu_s = COMPILER_CPU_LIMIT_S;
+        let mut job_env: Vec<(OsString, OsString)> =
+            vec![("CARGO_TARGET_DIR".into(), self.target_dir.clone().into())];
+        job_env.extend(
+            env.iter()
+                .map(|(k, v)| (OsString::from(k), OsString::from(v))),
+        );
+        let job = Job {
+            purpose: Purpose::Build,
+            program: PathBuf::from("cargo"),
+            args: args.iter().map(OsString::from).collect(),
+            cwd: self.root.clone(),
+            course: self.root.clone(),
+            read_only: Vec::new(),
+            writable: vec![temporary, self.target_dir.clone()],
+            emptied: self.emptied.clone(),
+            env: job_env,
+            gpu: false,
+            limits,
+            stdout: stdout.clone(),
+            stderr: Some(stderr.clone()),
         };
-        // The target folder first, so that a hidden folder inside it (the
-        // reports, under `target/grade`) is hidden too.
-        command
-            .arg("--bind")
-            .arg(&self.target_dir)
-            .arg(&self.target_dir);
-        for dir in self.hidden.iter().filter(|d| d.exists() && !keeps(d)) {
-            command.arg("--tmpfs").arg(dir);
-        }
-        command.args(["--unshare-all", "--die-with-parent", "--new-session"]);
-        if let Some(cwd) = &cwd {
-            command.arg("--chdir").arg(cwd);
-            command.current_dir(cwd);
-        }
-        command.arg(cargo.get_program()).args(cargo.get_args());
-        for (key, value) in cargo.get_envs() {
-            match value {
-                Some(value) => command.env(key, value),
-                None => command.env_remove(key),
-            };
-        }
-        command.env("CARGO_NET_OFFLINE", "true");
-        command.env("TMPDIR", &temporary);
-        Ok(command)
+        let ended = Jail::get().run(&job)?;
+        let read = |path: &Path| {
+            std::fs::read(path)
+                .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
+                .unwrap_or_default()
+        };
+        let seconds = self.time_limit.as_secs();
+        let stopped = if ended.exit.timed_out {
+            Some(format!(
+                "the build of {what} did not finish in {seconds} s (an endless constant evaluation?), and was stopped"
+            ))
+        } else if ended.exit.memory_limit.is_some()
+            || ended.exit.signal == Some(9)
+            || read(&stderr).contains("signal: 9, SIGKILL")
+            || read(&stderr).contains("memory allocation of")
+        {
+            Some(format!(
+                "the build of {what} took more than {} MiB of memory, and was stopped",
+                limits_memory()
+            ))
+        } else if ended.exit.signal == Some(24) || read(&stderr).contains("(signal: 24, SIGXCPU") {
+            Some(format!(
+                "the build of {what} took the compiler more than {COMPILER_CPU_LIMIT_S} s of CPU time (an endless constant evaluation?), and was stopped"
+            ))
+        } else if ended.exit.output_limit.is_some() {
+            Some(format!(
+                "the build of {what} printed without end, and was stopped"
+            ))
+        } else {
+            None
+        };
+        Ok(CargoRun {
+            success: ended.success(),
+            stdout: read(&stdout),
+            stderr: read(&stderr),
+            stopped,
+        })
     }
+}
+
+fn limits_memory() -> u64 {
+    Limits::build(Duration::ZERO).memory_mib
 }
 
 /// Downloads what the workspace at `root` depends on (outside any sandbox:
 /// the sandboxed build has no network), so that it builds offline. A
 /// machine without a network may have everything already: a failure is a
-/// warning, and the build says what is missing, if anything.
+/// warning, and the build says what is missing, if anything. The course's
+/// manifests are the course's own, not a student's.
 fn fetch(root: &Path) {
+    static FETCHED: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+    let mut fetched = FETCHED
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if fetched.iter().any(|done| done == root) {
+        return;
+    }
     let mut command = cargo();
     command
         .current_dir(root)
         .args(["fetch", "--color", "never"]);
     match command.output() {
-        Ok(output) if output.status.success() => {}
+        Ok(output) if output.status.success() => fetched.push(root.to_path_buf()),
         Ok(output) => eprintln!(
             "warning: `{}` failed; building with what is already downloaded: {}",
             cargo::display(&command),
@@ -121,22 +187,6 @@ fn fetch(root: &Path) {
             "warning: cannot run `{}`: {error}",
             cargo::display(&command)
         ),
-    }
-}
-
-/// `cargo test --no-run` for `root`, in `sandbox` when given.
-fn build_command(
-    root: &Path,
-    target_dir: Option<&Path>,
-    sandbox: Option<&BuildSandbox>,
-) -> Result<Command> {
-    let command = cargo_test(root, target_dir);
-    match sandbox {
-        Some(sandbox) => {
-            fetch(root);
-            sandbox.wrap(&command)
-        }
-        None => Ok(command),
     }
 }
 
@@ -184,64 +234,55 @@ struct Profile {
 /// Builds the tests of all `topics` in one cargo run, which builds their
 /// shared dependencies once, with the features of the whole set (as the
 /// course's own `cargo test --workspace` does, so its artifacts serve).
-/// `None` when the build fails: then each topic is built on its own with
-/// [`build`], so that one topic's compile errors fail that topic alone.
+/// `Err(None)` when the build fails: then each topic is built on its own
+/// with [`build`], so that one topic's compile errors fail that topic
+/// alone; `Err(Some(reason))` when it ran into a limit, which every topic
+/// fails with (building them one by one would only run into it again).
 pub fn build_all(
-    root: &Path,
+    builder: &Builder,
     topics: &[Topic],
-    target_dir: Option<&Path>,
-    sandbox: Option<&BuildSandbox>,
-) -> Result<Option<Vec<Vec<TestBinary>>>> {
-    let mut command = build_command(root, target_dir, sandbox)?;
+) -> Result<std::result::Result<Vec<Vec<TestBinary>>, Option<String>>> {
+    let mut args = cargo_test_args();
     for topic in topics {
-        command.args(["--package", &topic.package]);
+        args.extend(["--package", &topic.package]);
     }
-    let output = command
-        .output()
-        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
-    if !output.status.success() {
-        return Ok(None);
+    let names: Vec<&str> = topics.iter().map(|t| t.name.as_str()).collect();
+    let run = builder.cargo(&names.join("+"), &args, &[])?;
+    if let Some(stopped) = run.stopped {
+        return Ok(Err(Some(stopped)));
     }
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    Ok(Some(
-        topics
-            .iter()
-            .map(|topic| test_binaries(&stdout, Some(&topic.dir)))
-            .collect(),
-    ))
+    if !run.success {
+        return Ok(Err(None));
+    }
+    Ok(Ok(topics
+        .iter()
+        .map(|topic| test_binaries(&run.stdout, Some(&topic.dir)))
+        .collect()))
 }
 
-/// `cargo test --no-run` with JSON messages, in `root`.
-fn cargo_test(root: &Path, target_dir: Option<&Path>) -> Command {
-    let mut command = cargo();
-    command
-        .current_dir(root)
-        .args(["test", "--no-run", "--color", "never"])
-        .arg("--message-format=json-render-diagnostics");
-    if let Some(dir) = target_dir {
-        command.arg("--target-dir").arg(dir);
-    }
-    command
+/// `cargo test --no-run` with JSON messages.
+fn cargo_test_args() -> Vec<&'static str> {
+    vec![
+        "test",
+        "--no-run",
+        "--color",
+        "never",
+        "--message-format=json-render-diagnostics",
+    ]
 }
 
-/// Builds `topic`'s tests in the workspace at `root`.
-pub fn build(
-    root: &Path,
-    topic: &Topic,
-    target_dir: Option<&Path>,
-    sandbox: Option<&BuildSandbox>,
-) -> Result<Build> {
-    let mut command = build_command(root, target_dir, sandbox)?;
-    command.args(["--package", &topic.package]);
-    let output = command
-        .output()
-        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    if !output.status.success() {
-        return Ok(Build::Failed(compiler_errors(&stderr)));
+/// Builds `topic`'s tests in the workspace.
+pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
+    let mut args = cargo_test_args();
+    args.extend(["--package", &topic.package]);
+    let run = builder.cargo(&topic.name, &args, &[])?;
+    if let Some(stopped) = run.stopped {
+        return Ok(Build::Failed(stopped));
     }
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    Ok(Build::Built(test_binaries(&stdout, None)))
+    if !run.success {
+        return Ok(Build::Failed(compiler_errors(&run.stderr)));
+    }
+    Ok(Build::Built(test_binaries(&run.stdout, None)))
 }
 
 /// The integration-test executables among cargo's JSON messages, of the

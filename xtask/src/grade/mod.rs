@@ -75,13 +75,8 @@ pub struct GradeOptions {
     pub submissions_at_once: Option<usize>,
     /// cargo's `--target-dir`; `None`: cargo's default for the workspace.
     pub target_dir: Option<PathBuf>,
-    /// Folders the tests must not see (shown empty in the sandbox): the
-    /// official solutions, the submissions, other reports. The graded
-    /// tree's own `reference/` and the report folder are always hidden.
-    pub hidden: Vec<PathBuf>,
-    /// Folders hidden from the tests but not from the build (the build
-    /// folder, once the executables are kept elsewhere).
-    pub hidden_from_tests: Vec<PathBuf>,
+    /// The wall-clock limit of each build of student code.
+    pub build_time_limit: Duration,
     /// Where to keep the test executables once built (hard links), so
     /// that they run from there while the build folder builds another
     /// stage: a class slot's `bin/`. `None`: they run where cargo put them.
@@ -146,8 +141,7 @@ impl GradeOptions {
             jobs: default_jobs(),
             submissions_at_once: None,
             target_dir: None,
-            hidden: Vec::new(),
-            hidden_from_tests: Vec::new(),
+            build_time_limit: build::DEFAULT_BUILD_TIME_LIMIT,
             keep_binaries: None,
             permits: None,
             progress: true,
@@ -220,7 +214,6 @@ pub(crate) struct Prepared {
     root: PathBuf,
     out: PathBuf,
     plans: Vec<Plan>,
-    sandbox: Option<SandboxPlan>,
     viewer: pipeline::Viewer,
 }
 
@@ -243,18 +236,12 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
     if topics.iter().any(|topic| topic.sheet.gpu) {
         crate::setup::ensure_vulkan();
     }
-    let sandbox = crate::setup::sandbox().map(|program| SandboxPlan {
-        program,
-        hidden: options
-            .hidden
-            .iter()
-            .cloned()
-            .chain([root.join(stage::SOLUTIONS)])
-            .collect(),
-        hidden_from_tests: options.hidden_from_tests.clone(),
-    });
     let spinner = |message: String| spinner(message, options.progress);
-    for stale in [out.join(PENDING_SNAPSHOTS), out.join("scratch")] {
+    for stale in [
+        out.join(PENDING_SNAPSHOTS),
+        out.join("scratch"),
+        out.join("build"),
+    ] {
         if stale.exists() {
             fs::remove_dir_all(&stale)
                 .with_context(|| format!("cannot clear {}", stale.display()))?;
@@ -263,26 +250,33 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
 
     // Build every topic first: cargo serialises builds anyway. All at
     // once when they compile, one by one to tell whose errors they are.
-    // The build is sandboxed as the tests are, with the build's own target
-    // folder writable.
-    let build_sandbox = sandbox.as_ref().map(|s| build::BuildSandbox {
-        program: s.program.clone(),
-        hidden: s.hidden.iter().cloned().chain([out.clone()]).collect(),
-        target_dir: build::target_dir_of(&root, options.target_dir.as_deref()),
-    });
-    let mut together = if topics.len() > 1 {
-        let spinner = spinner(format!("building {} topics", topics.len()));
-        let built = build::build_all(
-            &root,
-            &topics,
-            options.target_dir.as_deref(),
-            build_sandbox.as_ref(),
-        )?;
-        spinner.finish_and_clear();
-        built.map(|all| all.into_iter())
-    } else {
-        None
+    let target_dir = build::target_dir_of(&root, options.target_dir.as_deref());
+    let builder = build::Builder {
+        root: root.clone(),
+        logs: out.join("build"),
+        time_limit: options.build_time_limit,
+        // A checkout graded in place builds into its own `target/`, which
+        // also holds its stages and reports: not cargo's, not shown.
+        emptied: [
+            target_dir.join("xtask"),
+            target_dir.join("grade"),
+            out.clone(),
+        ]
+        .into_iter()
+        .filter(|dir| dir.starts_with(&target_dir))
+        .collect(),
+        target_dir,
     };
+    let mut together: Option<std::vec::IntoIter<Vec<TestBinary>>> = None;
+    let mut stopped: Option<String> = None;
+    if topics.len() > 1 {
+        let spinner = spinner(format!("building {} topics", topics.len()));
+        match build::build_all(&builder, &topics)? {
+            Ok(all) => together = Some(all.into_iter()),
+            Err(reason) => stopped = reason,
+        }
+        spinner.finish_and_clear();
+    }
     let mut plans = Vec::new();
     for topic in &topics {
         for stale in [
@@ -294,17 +288,13 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
                     .with_context(|| format!("cannot clear {}", stale.display()))?;
             }
         }
-        let build = match together.as_mut().and_then(Iterator::next) {
+        let build = match (together.as_mut().and_then(Iterator::next), &stopped) {
             // (None found: built on its own, which says why.)
-            Some(binaries) if !binaries.is_empty() => Build::Built(binaries),
+            (Some(binaries), _) if !binaries.is_empty() => Build::Built(binaries),
+            (_, Some(reason)) => Build::Failed(reason.clone()),
             _ => {
                 let spinner = spinner(format!("building {}", topic.name));
-                let build = build::build(
-                    &root,
-                    topic,
-                    options.target_dir.as_deref(),
-                    build_sandbox.as_ref(),
-                );
+                let build = build::build(&builder, topic);
                 spinner.finish_and_clear();
                 build?
             }
@@ -315,14 +305,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             }
             (_, build) => build,
         };
-        plans.push(plan(
-            &root,
-            &out,
-            topic,
-            build,
-            &sandbox,
-            options.keep_binaries.as_deref(),
-        ));
+        plans.push(plan(&root, &out, topic, build));
     }
     let compiled: Vec<&str> = plans
         .iter()
@@ -330,13 +313,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         .map(|plan| plan.topic.name.as_str())
         .collect();
     let graded: Vec<&str> = plans.iter().map(|plan| plan.topic.name.as_str()).collect();
-    let viewer = pipeline::build_viewer(
-        &root,
-        options.target_dir.as_deref(),
-        build_sandbox.as_ref(),
-        &graded,
-        &compiled,
-    );
+    let viewer = pipeline::build_viewer(&builder, &graded, &compiled);
     let viewer = match (&options.keep_binaries, viewer) {
         (Some(keep), pipeline::Viewer::Built(binary)) => {
             match keep_binary(&binary, &keep.join("viewer")) {
@@ -353,7 +330,6 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         root,
         out,
         plans,
-        sandbox,
         viewer,
     })
 }
@@ -409,7 +385,6 @@ impl Prepared {
             root,
             out,
             plans,
-            sandbox,
             viewer,
         } = self;
         let out = out.as_path();
@@ -459,26 +434,7 @@ impl Prepared {
             "drawing the pipeline with your stages".to_owned(),
             options.progress,
         );
-        let hidden: Vec<PathBuf> = sandbox
-            .as_ref()
-            .map(|s| {
-                s.hidden
-                    .iter()
-                    .chain(&s.hidden_from_tests)
-                    .cloned()
-                    .collect()
-            })
-            .unwrap_or_default();
-        let pipeline = pipeline::draw_all(
-            &pipeline::Plan {
-                root: &root,
-                out,
-                sandbox: sandbox
-                    .as_ref()
-                    .map(|s| (s.program.as_path(), hidden.as_slice())),
-            },
-            &viewer,
-        );
+        let pipeline = pipeline::draw_all(&pipeline::Plan { root: &root, out }, &viewer);
         spinner.finish_and_clear();
         let report = Report {
             schema: report::SCHEMA,
@@ -496,7 +452,8 @@ impl Prepared {
                         .all(|task| task.status != TaskStatus::Error)
             }),
             integrity: None,
-            sandboxed: sandbox.is_some(),
+            sandboxed: crate::sandbox::Jail::get().sandboxed(),
+            containment: crate::sandbox::Jail::get().containment(),
             topics,
             pipeline,
         };
@@ -574,25 +531,9 @@ fn in_declaration_order(tests: &mut [String], source: &str) {
     });
 }
 
-/// The sandbox of the tests of one grading run: its program and the
-/// folders it hides (see [`GradeOptions::hidden`]).
-struct SandboxPlan {
-    program: PathBuf,
-    hidden: Vec<PathBuf>,
-    hidden_from_tests: Vec<PathBuf>,
-}
-
-/// The tests of `topic` built as `build`, ready to run. The executables
-/// lie in cargo's target folder, or in `kept` (see
-/// [`GradeOptions::keep_binaries`]); the sandbox shows that folder.
-fn plan(
-    root: &Path,
-    out: &Path,
-    topic: &Topic,
-    build: Build,
-    sandbox: &Option<SandboxPlan>,
-    kept: Option<&Path>,
-) -> Plan {
+/// The tests of `topic` built as `build`, ready to run (each sees the
+/// course at `root` and its own executable).
+fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan {
     let mut plan = Plan {
         topic: topic.clone(),
         compile_error: None,
@@ -618,8 +559,12 @@ fn plan(
             continue;
         };
         has_binary[task] = true;
-        let listed = run::list_tests(&executable, &topic.dir, false)
-            .and_then(|all| Ok((all, run::list_tests(&executable, &topic.dir, true)?)));
+        let listing = out
+            .join("scratch")
+            .join(&topic.name)
+            .join(format!("list-{name}"));
+        let list = |ignored| run::list_tests(&executable, &topic.dir, root, &listing, ignored);
+        let listed = list(false).and_then(|all| Ok((all, list(true)?)));
         let (mut all, ignored) = match listed {
             Ok(lists) => lists,
             Err(error) => {
@@ -643,32 +588,14 @@ fn plan(
             let mut env = test_env(root, topic, &images_dir);
             env.push(("TMPDIR".into(), scratch.clone().into()));
             env.push(("INSTA_PENDING_DIR".into(), pending.clone().into()));
-            let sandbox = sandbox.as_ref().map(|s| run::Sandbox {
-                program: s.program.clone(),
-                // The course and its build (the executable's `target/`,
-                // or the folder it is kept in).
-                read_only: std::iter::once(root.to_path_buf())
-                    .chain(match kept {
-                        Some(kept) => Some(kept.to_path_buf()),
-                        None => executable.ancestors().nth(3).map(Path::to_path_buf),
-                    })
-                    .collect(),
-                hidden: s
-                    .hidden
-                    .iter()
-                    .chain(&s.hidden_from_tests)
-                    .cloned()
-                    .chain([out.to_path_buf()])
-                    .collect(),
-                writable: vec![scratch.clone(), images_dir.clone(), pending.clone()],
-            });
             let command = (!ignored.contains(&test)).then(|| TestCommand {
                 executable: executable.clone(),
                 name: test.clone(),
                 cwd: topic.dir.clone(),
-                sandbox,
+                course: root.to_path_buf(),
+                writable: vec![scratch.clone(), images_dir.clone(), pending.clone()],
+                gpu: topic.sheet.gpu,
                 env,
-                env_remove: ENV_REMOVE.to_vec(),
                 time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
                 memory_limit_mib: topic.sheet.memory_limit_mib,
                 verdict_file: scratch.join(".testkit-verdict"),
@@ -705,18 +632,6 @@ fn test_path(task: &str, test: &str) -> PathBuf {
     }
     path
 }
-
-/// Variables that would change how tests behave if the grader's caller had
-/// them set.
-const ENV_REMOVE: &[&str] = &[
-    "INSTA_FORCE_PASS",
-    "INSTA_FORCE_UPDATE",
-    "INSTA_FORCE_UPDATE_SNAPSHOTS",
-    "INSTA_GLOB_FILTER",
-    "CLICOLOR_FORCE",
-    "RUST_MIN_STACK",
-    "RUST_TEST_THREADS",
-];
 
 fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsString)> {
     vec![
@@ -756,7 +671,7 @@ fn run_all(
     permits: Option<&Permits>,
     progress: bool,
 ) -> Result<Vec<Finished>> {
-    run::stop_tests_on_interrupt();
+    crate::sandbox::stop_all_on_interrupt();
     let bar = if progress {
         let bar = ProgressBar::new(jobs.len() as u64).with_style(
             ProgressStyle::with_template(
@@ -916,7 +831,8 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
     } else {
         TestStatus::Failed
     };
-    let images = list_files(&test.images_dir);
+    // Never following a link, never without end: the folder is the test's.
+    let images = crate::sandbox::files_under(&test.images_dir);
     let ran = !run.exit.not_run;
     let relative = |path: PathBuf| {
         path.strip_prefix(out)
@@ -957,27 +873,6 @@ fn excerpt(output: &str) -> String {
         .find('\n')
         .map_or(start, |nl| start + nl + 1);
     format!("[... {} bytes cut ...]\n{}", start, &output[start..])
-}
-
-/// Files under `dir`, relative to it, sorted.
-fn list_files(dir: &Path) -> Vec<PathBuf> {
-    fn walk(base: &Path, dir: &Path, files: &mut Vec<PathBuf>) {
-        let Ok(entries) = fs::read_dir(dir) else {
-            return;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                walk(base, &path, files);
-            } else if let Ok(relative) = path.strip_prefix(base) {
-                files.push(relative.to_path_buf());
-            }
-        }
-    }
-    let mut files = Vec::new();
-    walk(dir, dir, &mut files);
-    files.sort();
-    files
 }
 
 #[cfg(test)]

@@ -59,6 +59,24 @@ pub struct Exit {
     /// Not run: an earlier test of the same task timed out, and a task
     /// that loops once is not given the time limit again for every test.
     pub not_run: bool,
+    /// Its processes together used more than this many MiB of memory
+    /// (a cgroup's limit: the kernel stopped one of them).
+    #[serde(default)]
+    pub memory_limit: Option<u64>,
+    /// The grader killed it for writing more than this many MiB of files.
+    #[serde(default)]
+    pub written_limit: Option<u64>,
+}
+
+impl Exit {
+    /// Whether a limit of the grader's stopped it.
+    #[must_use]
+    pub fn stopped(&self) -> bool {
+        self.timed_out
+            || self.output_limit.is_some()
+            || self.memory_limit.is_some()
+            || self.written_limit.is_some()
+    }
 }
 
 /// The verdict on one test run.
@@ -212,6 +230,12 @@ pub fn judge(output: &str, exit: &Exit, token: &str, time_limit_s: f64) -> Verdi
         format!(
             "printed more than {} MiB of output (endless printing?)",
             limit >> 20
+        )
+    } else if let Some(limit) = exit.written_limit {
+        format!("wrote more than {limit} MiB of files (or too many files), and was stopped")
+    } else if let Some(limit) = exit.memory_limit {
+        format!(
+            "out of memory: its processes together used more than {limit} MiB, and the system stopped them"
         )
     } else if output.contains("has overflowed its stack") {
         "stack overflow".to_owned()

@@ -4,20 +4,19 @@
 //! pictures the solutions draw (`xtask/viewer/expected/`). No points
 //! depend on it; it is there to be looked at.
 //!
-//! The viewer is built in the build sandbox and run in the test sandbox,
-//! as the tests are, with a time limit: it is student code.
+//! The viewer is student code: it is built and run by the one runner
+//! ([`crate::sandbox`]) as the tests are, with their limits.
 
+use std::ffi::OsString;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use anyhow::{Context, Result};
 use serde::Serialize;
 
-use super::build::BuildSandbox;
-use super::run::Sandbox;
-use crate::cargo::{self, cargo};
+use super::build::Builder;
+use crate::sandbox::{Jail, Job, Limits, Purpose};
 
 /// The viewer's package.
 pub const VIEWER: &str = "course-viewer";
@@ -114,8 +113,6 @@ pub struct Plan<'a> {
     pub root: &'a Path,
     /// The report folder.
     pub out: &'a Path,
-    /// The test sandbox's program and hidden folders, if any.
-    pub sandbox: Option<(&'a Path, &'a [PathBuf])>,
 }
 
 /// The viewer of a grade, built before the tests run.
@@ -132,14 +129,9 @@ pub enum Viewer {
 /// Builds the viewer of the staged course at `root` with the stages of the
 /// `compiled` topics, when the course has one and a pipeline topic is
 /// among the `graded`.
-pub fn build_viewer(
-    root: &Path,
-    target_dir: Option<&Path>,
-    build_sandbox: Option<&BuildSandbox>,
-    graded: &[&str],
-    compiled: &[&str],
-) -> Viewer {
-    let has_viewer = root
+pub fn build_viewer(builder: &Builder, graded: &[&str], compiled: &[&str]) -> Viewer {
+    let has_viewer = builder
+        .root
         .join("xtask")
         .join("viewer")
         .join("Cargo.toml")
@@ -152,7 +144,7 @@ pub fn build_viewer(
         .filter(|(_, topic)| compiled.contains(topic))
         .map(|(feature, _)| *feature)
         .collect();
-    match build(root, target_dir, build_sandbox, &features) {
+    match build(builder, &features) {
         Ok(binary) => Viewer::Built(binary),
         Err(error) => Viewer::Failed(format!("{error:#}")),
     }
@@ -216,45 +208,35 @@ fn expected(root: &Path, out: &Path, scene: &Scene) -> Option<PathBuf> {
 }
 
 /// Builds the viewer without its window; its executable.
-fn build(
-    root: &Path,
-    target_dir: Option<&Path>,
-    build_sandbox: Option<&BuildSandbox>,
-    features: &[&str],
-) -> Result<PathBuf> {
-    let mut command = cargo();
-    command
-        .current_dir(root)
-        .args(["build", "--package", VIEWER, "--no-default-features"])
-        .args([
-            "--message-format",
-            "json-render-diagnostics",
-            "--color",
-            "never",
-        ]);
+fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
+    let features = features.join(",");
+    let mut args = vec![
+        "build",
+        "--package",
+        VIEWER,
+        "--no-default-features",
+        "--message-format",
+        "json-render-diagnostics",
+        "--color",
+        "never",
+    ];
     if !features.is_empty() {
-        command.args(["--features", &features.join(",")]);
+        args.extend(["--features", &features]);
     }
-    if let Some(dir) = target_dir {
-        command.env("CARGO_TARGET_DIR", dir);
+    let run = builder.cargo("viewer", &args, &[])?;
+    if let Some(stopped) = run.stopped {
+        anyhow::bail!("{stopped}");
     }
-    let mut command = match build_sandbox {
-        Some(sandbox) => sandbox.wrap(&command)?,
-        None => command,
-    };
-    let output = command
-        .output()
-        .with_context(|| format!("cannot run `{}`", cargo::display(&command)))?;
     anyhow::ensure!(
-        output.status.success(),
+        run.success,
         "{}",
-        String::from_utf8_lossy(&output.stderr)
+        run.stderr
             .lines()
             .filter(|l| l.starts_with("error"))
             .collect::<Vec<_>>()
             .join("; ")
     );
-    String::from_utf8_lossy(&output.stdout)
+    run.stdout
         .lines()
         .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
         .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == VIEWER)
@@ -262,37 +244,10 @@ fn build(
         .context("cargo built no viewer executable")
 }
 
-/// Runs the viewer for one picture, in the sandbox, within the time limit.
+/// Runs the viewer for one picture as a job of the runner, within the
+/// time limit.
 fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePicture {
     let picture = dir.join(scene.file);
-    let mut command = match plan.sandbox {
-        Some((program, hidden)) => Sandbox {
-            program: program.to_path_buf(),
-            read_only: std::iter::once(plan.root.to_path_buf())
-                .chain(binary.ancestors().nth(2).map(Path::to_path_buf))
-                .collect(),
-            hidden: hidden
-                .iter()
-                .cloned()
-                .chain([plan.out.to_path_buf()])
-                .collect(),
-            writable: vec![dir.to_path_buf()],
-        }
-        .command(plan.root),
-        None => {
-            let mut command = Command::new("env");
-            command.current_dir(plan.root);
-            command
-        }
-    };
-    command
-        .arg(binary)
-        .args(scene.args)
-        .args(["--size", SIZE, "--time-limit", "25", "--screenshot"])
-        .arg(&picture)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
     let mut result = PipelinePicture {
         what: scene.what.to_owned(),
         yours: None,
@@ -300,14 +255,45 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         stages: Vec::new(),
         error: None,
     };
-    let output = match run_with_limit(command, TIME_LIMIT) {
-        Ok(output) => output,
+    let logs = plan.out.join("scratch").join("pipeline");
+    let stdout = logs.join(scene.file).with_extension("out");
+    let stderr = logs.join(scene.file).with_extension("err");
+    let mut args: Vec<OsString> = scene.args.iter().map(OsString::from).collect();
+    args.extend(["--size", SIZE, "--time-limit", "25", "--screenshot"].map(OsString::from));
+    args.push(picture.clone().into());
+    let job = Job {
+        purpose: Purpose::Run,
+        program: binary.to_path_buf(),
+        args,
+        cwd: plan.root.to_path_buf(),
+        course: plan.root.to_path_buf(),
+        read_only: vec![binary.to_path_buf()],
+        writable: vec![
+            logs.join(scene.file).with_extension("tmp"),
+            dir.to_path_buf(),
+        ],
+        emptied: Vec::new(),
+        env: Vec::new(),
+        gpu: false,
+        limits: Limits::test(TIME_LIMIT, 0),
+        stdout: stdout.clone(),
+        stderr: Some(stderr.clone()),
+    };
+    let ended = match Jail::get().run(&job) {
+        Ok(ended) => ended,
         Err(error) => {
             result.error = Some(format!("{error:#}"));
             return result;
         }
     };
-    let stdout = String::from_utf8_lossy(&output.stdout);
+    if ended.exit.timed_out {
+        result.error = Some(format!(
+            "the picture took longer than {} s (an endless loop in a stage?)",
+            TIME_LIMIT.as_secs()
+        ));
+        return result;
+    }
+    let stdout = tail(&stdout);
     // The viewer's report, one line a stage: `name  status  (source)`;
     // anything the stages printed themselves is left out.
     result.stages = stdout
@@ -315,16 +301,22 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         .filter(|line| is_stage_line(line))
         .map(str::to_owned)
         .collect();
-    if output.status.success() && picture.is_file() {
+    if ended.success() && picture.is_file() {
         result.yours = Some(Path::new("pipeline").join(scene.file));
     } else {
-        let stderr = String::from_utf8_lossy(&output.stderr);
+        let stderr = tail(&stderr);
         result.error = Some(
             stderr
                 .lines()
                 .find(|l| l.starts_with("Error") || l.starts_with("error"))
-                .unwrap_or("the viewer drew no picture")
-                .to_owned(),
+                .map(str::to_owned)
+                .or_else(|| {
+                    ended
+                        .exit
+                        .stopped()
+                        .then(|| format!("stopped: {:?}", ended.exit))
+                })
+                .unwrap_or_else(|| "the viewer drew no picture".to_owned()),
         );
     }
     result
@@ -337,107 +329,31 @@ fn is_stage_line(line: &str) -> bool {
     line.ends_with(')') && line.contains("  (") && line.contains(" · ")
 }
 
-/// How much of the viewer's output is kept, per stream: its end, where the
-/// stage report is (a stage that prints while it draws, `println!` for
-/// debugging, can print far more).
-const OUTPUT_KEPT: usize = 64 * 1024;
+/// How much of the viewer's output is read back, per stream: its end,
+/// where the stage report is (a stage that prints while it draws,
+/// `println!` for debugging, can print far more).
+const OUTPUT_KEPT: u64 = 64 * 1024;
 
-/// Runs `command` to its end or `limit`, reading its output while it runs
-/// (a pipe nobody reads fills up and stops the writer, which would look
-/// like an endless loop) and keeping the last [`OUTPUT_KEPT`] bytes of each
-/// stream.
-fn run_with_limit(mut command: Command, limit: Duration) -> Result<std::process::Output> {
-    let mut child = command.spawn().context("cannot start the viewer")?;
-    let stdout = drain(child.stdout.take());
-    let stderr = drain(child.stderr.take());
-    let started = Instant::now();
-    loop {
-        if let Some(status) = child.try_wait().context("cannot wait for the viewer")? {
-            let collect =
-                |reader: std::thread::JoinHandle<Vec<u8>>| reader.join().unwrap_or_default();
-            return Ok(std::process::Output {
-                status,
-                stdout: collect(stdout),
-                stderr: collect(stderr),
-            });
-        }
-        if started.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            anyhow::bail!(
-                "the picture took longer than {} s (an endless loop in a stage?)",
-                limit.as_secs_f64()
-            );
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-}
-
-/// Reads `pipe` to its end on a thread of its own; the last
-/// [`OUTPUT_KEPT`] bytes.
-fn drain(pipe: Option<impl std::io::Read + Send + 'static>) -> std::thread::JoinHandle<Vec<u8>> {
-    std::thread::spawn(move || {
-        let mut kept = Vec::new();
-        let Some(mut pipe) = pipe else {
-            return kept;
-        };
-        let mut buffer = [0; 8192];
-        loop {
-            match pipe.read(&mut buffer) {
-                Ok(0) | Err(_) => break,
-                Ok(n) => {
-                    kept.extend_from_slice(&buffer[..n]);
-                    if kept.len() > 2 * OUTPUT_KEPT {
-                        kept.drain(..kept.len() - OUTPUT_KEPT);
-                    }
-                }
-            }
-        }
-        if kept.len() > OUTPUT_KEPT {
-            kept.drain(..kept.len() - OUTPUT_KEPT);
-        }
-        kept
-    })
+/// The last [`OUTPUT_KEPT`] bytes of the file at `path`, lossily decoded.
+fn tail(path: &Path) -> String {
+    use std::io::{Read as _, Seek as _, SeekFrom};
+    let Ok(mut file) = fs::File::open(path) else {
+        return String::new();
+    };
+    let len = file.metadata().map_or(0, |m| m.len());
+    let _ = file.seek(SeekFrom::Start(len.saturating_sub(OUTPUT_KEPT)));
+    let mut bytes = Vec::new();
+    let _ = file.read_to_end(&mut bytes);
+    String::from_utf8_lossy(&bytes).into_owned()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn shell(script: &str) -> Command {
-        let mut command = Command::new("sh");
-        command
-            .args(["-c", script])
-            .stdin(Stdio::null())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped());
-        command
-    }
-
     #[test]
-    fn a_picture_that_never_ends_is_stopped_at_the_limit() {
-        let started = Instant::now();
-        let error = run_with_limit(shell("while :; do :; done"), Duration::from_millis(300))
-            .unwrap_err()
-            .to_string();
-        assert!(error.contains("took longer"), "{error}");
-        assert!(started.elapsed() < Duration::from_secs(10));
-    }
-
-    /// A stage that prints while it draws (println! for debugging) must
-    /// not look like an endless loop: a pipe nobody read would fill after
-    /// 64 KiB and stop the viewer until the limit.
-    #[test]
-    fn a_stage_that_prints_a_lot_still_finishes_and_its_report_is_kept() {
-        let script = "head -c 3000000 /dev/zero | tr '\\\\0' 'x'; echo; \
-                      echo 'lines      ok  (01-lines · dda::dda_line)'; \
-                      head -c 300000 /dev/zero >&2";
-        let output = run_with_limit(shell(script), Duration::from_secs(20)).unwrap();
-        assert!(output.status.success());
-        assert!(output.stdout.len() <= OUTPUT_KEPT && output.stderr.len() <= OUTPUT_KEPT);
-        let stdout = String::from_utf8_lossy(&output.stdout);
-        let stages: Vec<&str> = stdout.lines().filter(|l| is_stage_line(l)).collect();
-        assert_eq!(stages, ["lines      ok  (01-lines · dda::dda_line)"]);
+    fn only_the_viewers_own_lines_are_stage_lines() {
+        assert!(is_stage_line("lines      ok  (01-lines · dda::dda_line)"));
         assert!(
             !is_stage_line("(x, y) = (1, 2)"),
             "a student's print is not a stage line"

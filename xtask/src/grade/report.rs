@@ -18,8 +18,9 @@ use std::path::PathBuf;
 
 use serde::Serialize;
 
-use super::outcome::Exit;
+pub use super::outcome::Exit;
 pub use super::submission::Integrity;
+pub use crate::sandbox::Containment;
 
 /// Version of the `report.json` layout; bumped when a field changes meaning.
 pub const SCHEMA: u32 = 1;
@@ -55,10 +56,13 @@ pub struct Report {
     /// For a submission graded with `--submission`: how its grading files
     /// compare with the official course's (`None` for the checkout itself).
     pub integrity: Option<Integrity>,
-    /// The tests ran in the bubblewrap sandbox (see `run::Sandbox`);
-    /// `false`: none was available, and nothing kept student code from
-    /// the rest of the machine.
+    /// The builds and tests ran in the bubblewrap sandbox (see
+    /// `crate::sandbox`); `false`: none was available, and nothing kept
+    /// student code from the rest of the machine.
     pub sandboxed: bool,
+    /// What else held (see `crate::sandbox`): the seccomp filter, and
+    /// limits on all of a test's processes together.
+    pub containment: Containment,
     /// Per topic, in course order.
     pub topics: Vec<TopicReport>,
     /// The shipped meshes drawn by the graded stages (see `pipeline`);

@@ -179,7 +179,7 @@ pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
     for file in files_under(submission)? {
         if is_student_file(&file) && !tasks.contains(&file) {
             let same = fs::read(official.join(&file))
-                .is_ok_and(|ours| fs::read(submission.join(&file)).is_ok_and(|t| t == ours));
+                .is_ok_and(|ours| stage::read_plain(submission, &file).is_some_and(|t| t == ours));
             if !same {
                 integrity.not_graded.push(file);
             }
@@ -203,13 +203,12 @@ fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integ
         ..Integrity::default()
     };
     for (file, source) in &ours {
-        match fs::read(submission.join(file)) {
-            Ok(bytes) => {
-                if bytes != source.read()? {
-                    integrity.changed.push(file.clone());
-                }
-            }
-            Err(_) => integrity.missing.push(file.clone()),
+        // Read without following a link, and within a size: a grading
+        // file that is a link, a pipe or a flood counts as changed.
+        if fs::symlink_metadata(submission.join(file)).is_err() {
+            integrity.missing.push(file.clone());
+        } else if stage::read_plain(submission, file) != Some(source.read()?) {
+            integrity.changed.push(file.clone());
         }
     }
     integrity.added = theirs
@@ -221,7 +220,9 @@ fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integ
 
 /// Whether `dir` looks like a course checkout.
 fn is_checkout(dir: &Path) -> bool {
-    dir.join("exercises").is_dir() && dir.join("Cargo.toml").is_file()
+    // A link among a class's members is no member: it could name another.
+    let linked = fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink());
+    !linked && dir.join("exercises").is_dir() && dir.join("Cargo.toml").is_file()
 }
 
 /// A class slot: where one submission of a class is staged and its tests
@@ -249,20 +250,50 @@ fn grade_one(
 ) -> Result<Report> {
     let integrity = check(official, submission)?;
     let mut options = options.clone();
+    // The assignment is the official course's topics, whatever the
+    // submission holds: a topic it lacks scores 0, with the reason.
+    let all_topics = topics::discover(official)?;
     if options.topics.is_empty() {
-        // An edition of some topics is graded on those alone.
-        options.topics = submitted_topics(official, submission)?
-            .into_iter()
-            .map(|t| t.name)
-            .collect();
+        options.topics = all_topics.iter().map(|t| t.name.clone()).collect();
     }
     let options = &options;
     // A task file that reaches other files at compile time is not
-    // compiled: its stub is staged instead, and its topic scores 0.
+    // compiled: its stub is staged instead, and its topic scores 0. (The
+    // sandbox shows the build nothing but the stage; this says why
+    // early, and in words.)
     let mut files = stage::plan(official, Overlay::Submission(submission))?;
     let mut refused: Vec<(String, Vec<String>)> = Vec::new();
+    let mut unreadable: Vec<(String, String)> = Vec::new();
+    let topic_of = |task_file: &Path| {
+        task_file
+            .components()
+            .nth(1)
+            .map(|c| c.as_os_str().to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
     for task_file in stage::task_files(official)? {
-        let Ok(text) = fs::read_to_string(submission.join(&task_file)) else {
+        match stage::plain_file(submission, &task_file) {
+            Ok(()) => {}
+            Err(why)
+                if fs::symlink_metadata(submission.join(&task_file)).is_err()
+                    && !why.contains("symbolic link") =>
+            {
+                continue;
+            }
+            Err(why) => {
+                unreadable.push((
+                    topic_of(&task_file),
+                    format!(
+                        "{}: not graded ({why}); the stub was used",
+                        slashed(&task_file)
+                    ),
+                ));
+                continue;
+            }
+        }
+        let Some(text) = stage::read_plain(submission, &task_file)
+            .and_then(|bytes| String::from_utf8(bytes).ok())
+        else {
             continue;
         };
         // WGSL reaches no files; Rust may, by macros.
@@ -274,13 +305,11 @@ fn grade_one(
         if uses.is_empty() {
             continue;
         }
-        let topic = task_file
-            .components()
-            .nth(1)
-            .map(|c| c.as_os_str().to_string_lossy().into_owned())
-            .unwrap_or_default();
         let shown = task_file.display().to_string();
-        refused.push((topic, uses.iter().map(|u| format!("{shown}:{u}")).collect()));
+        refused.push((
+            topic_of(&task_file),
+            uses.iter().map(|u| format!("{shown}:{u}")).collect(),
+        ));
         files.retain(|(to, _)| *to != task_file);
         files.push((task_file.clone(), Source::File(official.join(&task_file))));
     }
@@ -290,15 +319,14 @@ fn grade_one(
         .iter()
         .map(|(to, from)| Ok((to.clone(), from.read()?)))
         .collect::<Result<_>>()?;
-    let build_output = official.join("target");
     let mut in_stage = options.clone();
     let (staged, prepared) = match slot {
         None => {
-            let staged = stage::stage_plan(official, &files, options.target_dir.as_deref())?;
-            in_stage.hidden.extend(stage::hidden_beside(
-                &build_output,
-                &[&staged.root, &staged.target_dir],
-            ));
+            let target_dir = options
+                .target_dir
+                .clone()
+                .unwrap_or_else(|| submissions_build(official));
+            let staged = stage::stage_plan(official, &files, Some(&target_dir))?;
             in_stage.root.clone_from(&staged.root);
             in_stage.target_dir = Some(staged.target_dir.clone());
             let prepared = super::prepare(&in_stage, Edition::Student)?;
@@ -307,10 +335,6 @@ fn grade_one(
         Some(slot) => {
             let _turn = slot.turn.lock().expect("no slot panics while building");
             let staged = stage::stage_slot(&slot.home, &files, &slot.target_dir)?;
-            in_stage
-                .hidden
-                .extend(stage::hidden_beside(&build_output, &[&slot.home]));
-            in_stage.hidden_from_tests.push(slot.target_dir.clone());
             in_stage.keep_binaries = Some(slot.home.join("bin"));
             in_stage.permits = Some(Arc::clone(&slot.permits));
             in_stage.progress = false;
@@ -323,6 +347,19 @@ fn grade_one(
     let mut report = prepared.finish()?;
     for (topic, uses) in refused {
         refuse(&mut report, &topic, &uses);
+    }
+    for topic in &mut report.topics {
+        if !submission.join("exercises").join(&topic.name).is_dir() {
+            topic.errors.push(format!(
+                "the submission has no exercises/{}: its tasks score 0",
+                topic.name
+            ));
+            report.complete = false;
+        }
+        for (_, why) in unreadable.iter().filter(|(t, _)| *t == topic.name) {
+            topic.errors.push(why.clone());
+            report.complete = false;
+        }
     }
     let mut integrity = integrity;
     integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
@@ -494,12 +531,6 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
         );
         let mut one = options.clone();
         one.out = options.out.join(&name);
-        // No test sees the solutions, a submission or another's report.
-        one.hidden.extend([
-            official.join(stage::SOLUTIONS),
-            dir.clone(),
-            options.out.clone(),
-        ]);
         (name, one)
     };
     if is_checkout(&dir) {
@@ -594,7 +625,7 @@ fn grade_class(
     options: &GradeOptions,
     out_for: impl Fn(&Path) -> (String, GradeOptions) + Sync,
 ) -> Result<Vec<Graded>> {
-    let sandboxed = crate::setup::sandbox().is_some();
+    let sandboxed = crate::sandbox::Jail::get().sandboxed();
     // Side by side, a submission's tests run while another builds. A grade
     // keeps two CPUs busy on its own (cargo's build, `--jobs` tests): on a
     // machine with two, one at a time was the faster (`BENCHMARKS.md`).
@@ -611,7 +642,7 @@ fn grade_class(
     let target_dir = options
         .target_dir
         .clone()
-        .unwrap_or_else(|| stage::home(official).join("build"));
+        .unwrap_or_else(|| submissions_build(official));
     // Every slot's folder exists before the first test runs, so that each
     // slot's sandbox hides all the others (`stage::hidden_beside` hides
     // what it finds).
@@ -692,6 +723,13 @@ fn grade_class(
         .into_iter()
         .map(|result| result.expect("every submission was graded"))
         .collect())
+}
+
+/// The build cache of submissions: never the one the solutions are built
+/// in, so that nothing a submission's build can read was compiled from
+/// them.
+fn submissions_build(official: &Path) -> PathBuf {
+    stage::home(official).join("submissions-build")
 }
 
 /// The gradebook as CSV: one row per submission, one column per topic.
