@@ -1193,3 +1193,59 @@ fn a_generated_class_is_graded_two_at_a_time_as_each_member_earns() {
         );
     }
 }
+
+/// A checkout whose every text file ends its lines in `\r\n` (Windows'
+/// git with `core.autocrlf`, where the course's `.gitattributes` was not
+/// honoured) grades exactly like the same checkout with `\n`: the same
+/// score, no grading file flagged.
+#[test]
+fn a_crlf_checkout_grades_like_an_lf_one() {
+    let official = fixture("tiny", "crlf");
+    let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("crlf-class");
+    if class.exists() {
+        fs::remove_dir_all(&class).unwrap();
+    }
+    let solved = fs::read_to_string(official.join("exercises/01-tiny/src/ops.rs"))
+        .unwrap()
+        .replace("todo!(\"double: return twice x\")", "x * 2");
+    for name in ["crlf", "lf"] {
+        let member = class.join(name);
+        for dir in ["exercises", "crates"] {
+            copy_dir(&official.join(dir), &member.join(dir));
+        }
+        fs::copy(official.join("Cargo.toml"), member.join("Cargo.toml")).unwrap();
+        fs::write(member.join("exercises/01-tiny/src/ops.rs"), &solved).unwrap();
+    }
+    let mut stack = vec![class.join("crlf")];
+    let mut converted = 0;
+    while let Some(dir) = stack.pop() {
+        for entry in fs::read_dir(&dir).unwrap().flatten() {
+            let path = entry.path();
+            if entry.file_type().unwrap().is_dir() {
+                stack.push(path);
+            } else if let Ok(text) = fs::read_to_string(&path) {
+                fs::write(&path, text.replace('\n', "\r\n")).unwrap();
+                converted += 1;
+            }
+        }
+    }
+    assert!(converted >= 6, "only {converted} files converted");
+    let out = official.join("target/crlf-class");
+    let output = xtask(
+        &official,
+        &[
+            "grade",
+            "--submission",
+            class.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert!(output.status.success(), "{output:?}");
+    assert_eq!(
+        fs::read_to_string(out.join("gradebook.csv")).unwrap(),
+        "submission,score,max_score,complete,flagged,01-tiny\n\
+         crlf,2,3,true,false,2\n\
+         lf,2,3,true,false,2\n"
+    );
+}

@@ -178,8 +178,9 @@ pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
     let tasks = stage::task_files(official)?;
     for file in files_under(submission)? {
         if is_student_file(&file) && !tasks.contains(&file) {
-            let same = fs::read(official.join(&file))
-                .is_ok_and(|ours| stage::read_plain(submission, &file).is_some_and(|t| t == ours));
+            let same = fs::read(official.join(&file)).is_ok_and(|ours| {
+                stage::read_plain(submission, &file).is_some_and(|t| same_text(&t, &ours))
+            });
             if !same {
                 integrity.not_graded.push(file);
             }
@@ -203,11 +204,14 @@ fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integ
         ..Integrity::default()
     };
     for (file, source) in &ours {
+        let official_bytes = source.read()?;
         // Read without following a link, and within a size: a grading
         // file that is a link, a pipe or a flood counts as changed.
         if fs::symlink_metadata(submission.join(file)).is_err() {
             integrity.missing.push(file.clone());
-        } else if stage::read_plain(submission, file) != Some(source.read()?) {
+        } else if !stage::read_plain(submission, file)
+            .is_some_and(|t| same_text(&t, &official_bytes))
+        {
             integrity.changed.push(file.clone());
         }
     }
@@ -216,6 +220,25 @@ fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integ
         .filter(|f| !ours.iter().any(|(file, _)| file == f))
         .collect();
     Ok(integrity)
+}
+
+/// Whether two files hold the same text, line endings aside: a checkout
+/// made on Windows with `core.autocrlf` has every line end in `\r\n`
+/// (where the course's `.gitattributes` is not honoured, e.g. a zip), and
+/// grades as the same files with `\n`.
+fn same_text(theirs: &[u8], ours: &[u8]) -> bool {
+    theirs == ours || without_cr(theirs) == without_cr(ours)
+}
+
+/// `bytes` with each `\r\n` made `\n`.
+fn without_cr(bytes: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(bytes.len());
+    for (i, &byte) in bytes.iter().enumerate() {
+        if !(byte == b'\r' && bytes.get(i + 1) == Some(&b'\n')) {
+            out.push(byte);
+        }
+    }
+    out
 }
 
 /// Whether `dir` looks like a course checkout.
@@ -804,6 +827,15 @@ mod tests {
         ] {
             assert!(!is_grading_file(Path::new(file)), "{file}");
         }
+    }
+
+    #[test]
+    fn text_is_the_same_whatever_its_line_endings() {
+        assert!(same_text(b"a\r\nb\r\n", b"a\nb\n"));
+        assert!(same_text(b"a\nb", b"a\nb"));
+        assert!(!same_text(b"a\r\nc\r\n", b"a\nb\n"));
+        // A lone carriage return is a change, not a line ending.
+        assert!(!same_text(b"a\rb", b"ab"));
     }
 
     #[test]
