@@ -617,6 +617,8 @@ impl Jail {
             args.ro_try(&Path::new("/etc").join(file));
         }
         args.words(["--dev", "/dev"]);
+        // Shared memory is files too: a small tmpfs of its own.
+        args.words(["--size", SHM_BYTES, "--tmpfs", "/dev/shm"]);
         if job.gpu {
             for device in GPU_DEVICES {
                 args.dev_try(Path::new(device));
@@ -652,7 +654,13 @@ impl Jail {
         }
         for dir in job.emptied.iter().filter(|d| d.is_dir()) {
             args.words([OsStr::new("--tmpfs"), dir.as_os_str()]);
+            args.words([OsStr::new("--remount-ro"), dir.as_os_str()]);
         }
+        // The sandbox's own root and `/dev` are tmpfs mounts bwrap makes,
+        // writable up to half the memory: read-only once everything is
+        // bound, so that `/tmp`, `/dev/shm` and the writable folders are
+        // all a job can write.
+        args.words(["--remount-ro", "/dev", "--remount-ro", "/"]);
         args.words([
             "--unshare-all",
             "--die-with-parent",
@@ -724,6 +732,8 @@ const SYSTEM_ETC: [&str; 9] = [
     "nsswitch.conf",
     "localtime",
 ];
+/// The size of a job's `/dev/shm`.
+const SHM_BYTES: &str = "67108864";
 /// A GPU's device files (Mesa's render nodes, NVIDIA's).
 const GPU_DEVICES: [&str; 5] = [
     "/dev/dri",

@@ -467,13 +467,16 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
     claim(&stage_root)?;
     // A lock file staged anew is trimmed to the stage's packages by cargo
     // (no student file takes part in resolving them), so that the build,
-    // which cannot write the stage, finds it current.
+    // which cannot write the stage, finds it current. Sync keeps the one
+    // cargo wrote for a course that has none.
     let planned_lock = files.iter().find(|(to, _)| to == Path::new(LOCK_FILE));
     let relock = match planned_lock {
         Some((_, source)) => fs::read(stage_root.join(LOCK_FILE)).ok() != Some(source.read()?),
         None => false,
     };
     sync(files, &stage_root)?;
+    // A course without a lock file gets one here, where cargo may write.
+    let relock = relock || !stage_root.join(LOCK_FILE).exists();
     if relock {
         crate::release::trim_lock_file(&stage_root)?;
     }

@@ -178,12 +178,13 @@ fn write_class(official: &Path, class: &Path) {
         )),
     );
 
-    // Fills `/tmp` and its scratch folder: right only if 3 GiB fit.
+    // Fills the sandbox's root, `/dev`, `/dev/shm`, `/tmp` and its scratch
+    // folder: right only if 3 GiB fit.
     let fill = "    use std::io::Write as _;\n\
          let chunk = vec![7_u8; 1 << 20];\n\
          let mut written = 0;\n\
          let scratch = std::env::var(\"TMPDIR\").unwrap_or_default();\n\
-         for dir in [\"/tmp\", scratch.as_str()] {\n\
+         for dir in [\"/\", \"/dev\", \"/dev/shm\", \"/tmp\", scratch.as_str()] {\n\
              for n in 0..2048 {\n\
                  let Ok(mut file) = std::fs::File::create(format!(\"{dir}/fill-{n}\")) else { break };\n\
                  if file.write_all(&chunk).is_err() { break; }\n\
@@ -378,8 +379,9 @@ fn every_attack_on_the_grader_is_contained_and_the_class_is_graded() {
         why.contains(&format!("did not finish in {BUILD_LIMIT_S} s")) || why.contains("CPU time"),
         "endless-build: {why}"
     );
-    // `/tmp` is full at its size; the scratch folder is stopped past the
-    // limit, and gone after the test.
+    // The root and `/dev` are read-only, `/dev/shm` and `/tmp` full at
+    // their sizes; the scratch folder is stopped past the limit, and gone
+    // after the test.
     let why = zero("fills-disk");
     assert!(
         why.contains("wrote more than 1024 MiB"),
