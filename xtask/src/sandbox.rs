@@ -437,6 +437,9 @@ impl Jail {
         let mut child = command
             .spawn()
             .with_context(|| format!("cannot start {}", job.program.display()))?;
+        // Windows: the process and all it starts are one job object,
+        // killed when the job is dropped below.
+        let _job_object = contain(&child);
         if let Ok(mut running) = RUNNING.lock() {
             running.insert(child.id());
         }
@@ -477,6 +480,8 @@ impl Jail {
         };
         let duration = started.elapsed();
         kill_group(child.id());
+        #[cfg(windows)]
+        drop(_job_object);
         if let Some(cgroup) = &cgroup {
             if cgroup.out_of_memory() {
                 exit.memory_limit = Some(job.limits.memory_mib);
@@ -1066,6 +1071,23 @@ fn seccomp_filter() -> Result<PathBuf> {
 )))]
 fn seccomp_filter() -> Result<PathBuf> {
     anyhow::bail!("seccomp filters are built for Linux on x86-64 and AArch64 only")
+}
+
+/// Puts `child` into a job object that kills every process in it when it
+/// is dropped (Windows, where there are no process groups to kill).
+#[cfg(windows)]
+fn contain(child: &Child) -> Option<win32job::Job> {
+    use std::os::windows::io::AsRawHandle as _;
+    let mut limits = win32job::ExtendedLimitInfo::new();
+    limits.limit_kill_on_job_close();
+    let job = win32job::Job::create_with_limit_info(&limits).ok()?;
+    job.assign_process(child.as_raw_handle() as isize).ok()?;
+    Some(job)
+}
+
+#[cfg(not(windows))]
+fn contain(_: &Child) -> Option<()> {
+    None
 }
 
 /// Kills what is left of the process group `pgid`; nothing left is fine.

@@ -12,484 +12,495 @@
 
 mod common;
 
-use std::fs;
-use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
-
-use common::{copy_dir, fixture, read_json, task, topic};
-use serde_json::Value;
-
-/// A secret in the grader's environment, which no student code may see.
-const SECRET: &str = "ghp_course-grader-secret-2f9c";
-/// The build limit the class is graded with: the endless build is stopped
-/// at it.
-const BUILD_LIMIT_S: u64 = 40;
-
-/// `ops.rs` for a member: `double` and `negate` as given (bodies of the
-/// functions).
-fn ops(double: &str, negate: &str) -> String {
-    format!(
-        "//! Two small operations.\n\n/// `2 x`.\npub fn double(x: i32) -> i32 {{\n{double}\n}}\n\n/// `-x`.\npub fn negate(x: i32) -> i32 {{\n{negate}\n}}\n"
-    )
-}
-
-/// A checkout of the tiny course with `ops.rs` as given, in `class/name`.
-fn member(official: &Path, class: &Path, name: &str, ops: Option<&str>) -> PathBuf {
-    let dir = class.join(name);
-    for folder in ["exercises", "crates"] {
-        copy_dir(&official.join(folder), &dir.join(folder));
-    }
-    fs::copy(official.join("Cargo.toml"), dir.join("Cargo.toml")).unwrap();
-    if let Some(ops) = ops {
-        fs::write(dir.join("exercises/01-tiny/src/ops.rs"), ops).unwrap();
-    }
-    dir
-}
-
-/// Python that asks for the memory of its parent (the test that started
-/// it) with `process_vm_readv` and to trace it with `ptrace`, and prints
-/// both `errno`s: `1 1` (EPERM) where both are denied; a read of an
-/// unmapped page that was allowed says EFAULT (14) instead.
-const READS_PARENT: &str = r#"
-import ctypes, os
-libc = ctypes.CDLL(None, use_errno=True)
-class Iovec(ctypes.Structure):
-    _fields_ = [("base", ctypes.c_void_p), ("len", ctypes.c_size_t)]
-buffer = ctypes.create_string_buffer(8)
-local = Iovec(ctypes.cast(buffer, ctypes.c_void_p), 8)
-remote = Iovec(4096, 8)
-parent = os.getppid()
-libc.process_vm_readv(parent, ctypes.byref(local), 1, ctypes.byref(remote), 1, 0)
-read = ctypes.get_errno()
-ctypes.set_errno(0)
-traced = libc.ptrace(16, parent, 0, 0)
-trace = ctypes.get_errno() if traced != 0 else 0
-print(read, trace)
-"#;
-
-/// The members of the class: the name, and `ops.rs`, or what to do to
-/// the checkout.
-fn write_class(official: &Path, class: &Path) {
-    let solution = official.join("reference/01-tiny/src/ops.rs");
-    let quoted = |path: &Path| format!("{:?}", path.display().to_string());
-    let home = std::env::var("HOME").unwrap_or_else(|_| "/root".into());
-    // The honest member: the baseline that grading works.
-    member(official, class, "a-honest", Some(&ops("x * 2", "-x")));
-
-    // The task folder is a link: to the solutions, and to a classmate.
-    let linked = member(official, class, "links-solutions", None);
-    fs::remove_dir_all(linked.join("exercises/01-tiny/src")).unwrap();
-    std::os::unix::fs::symlink(
-        official.join("reference/01-tiny/src"),
-        linked.join("exercises/01-tiny/src"),
-    )
-    .unwrap();
-    let linked = member(official, class, "links-classmate", None);
-    fs::remove_dir_all(linked.join("exercises/01-tiny/src")).unwrap();
-    std::os::unix::fs::symlink(
-        "../../../a-honest/exercises/01-tiny/src",
-        linked.join("exercises/01-tiny/src"),
-    )
-    .unwrap();
-
-    // `#[path]` built by a macro from a `meta` fragment: no `#[path =`
-    // for a textual check to find; only the sandbox keeps the file away.
-    member(
-        official,
-        class,
-        "macro-path",
-        Some(&format!(
-            "macro_rules! module {{ ($attribute:meta) => {{ #[$attribute] mod solution; }}; }}\n\
-             module!(path = {});\n\
-             pub fn double(x: i32) -> i32 {{ solution::double(x) }}\n\
-             pub fn negate(x: i32) -> i32 {{ solution::negate(x) }}\n",
-            quoted(&solution)
-        )),
-    );
-
-    // Right only where it can see the course's history, its solutions,
-    // the grader's home folder or a classmate's checkout.
-    let sees = format!(
-        "    let seen = std::path::Path::new({git}).exists()\n\
-         || std::fs::read_to_string({solution}).is_ok()\n\
-         || std::fs::read_dir({home}).is_ok_and(|mut e| e.next().is_some())\n\
-         || std::fs::read_to_string({classmate}).is_ok();\n\
-         assert!(seen, \"saw nothing of the machine\");",
-        git = quoted(&official.join(".git/HEAD")),
-        solution = quoted(&solution),
-        home = quoted(Path::new(&home)),
-        classmate = quoted(&class.join("a-honest/exercises/01-tiny/src/ops.rs")),
-    );
-    member(
-        official,
-        class,
-        "reads-machine",
-        Some(&ops(
-            &format!("{sees}\n    x * 2"),
-            &format!("{sees}\n    -x"),
-        )),
-    );
-
-    // Right only where the grader's environment reaches it; it prints
-    // what it finds into its failure, which the reports keep.
-    let secret = "    let found: Vec<String> = std::env::vars()\n\
-         .filter(|(k, _)| k.contains(\"TOKEN\") || k.contains(\"SECRET\"))\n\
-         .map(|(k, v)| format!(\"{k}={v}\"))\n\
-         .collect();\n\
-         assert!(!found.is_empty(), \"no secret in {:?}\", std::env::vars().map(|(k, _)| k).collect::<Vec<_>>());\n\
-         println!(\"{found:?}\");";
-    member(
-        official,
-        class,
-        "reads-secret",
-        Some(&ops(
-            &format!("{secret}\n    x * 2"),
-            &format!("{secret}\n    -x"),
-        )),
-    );
-
-    // A child reads the test's memory, or traces it.
-    let forge = format!(
-        "    let out = std::process::Command::new(\"/usr/bin/python3\").args([\"-c\", {script:?}]).output().expect(\"python3 runs\");\n\
-         let errnos = String::from_utf8_lossy(&out.stdout).trim().to_owned();\n\
-         assert!(errnos != \"1 1\", \"denied: {{errnos}}\");\n\
-         assert!(!errnos.is_empty(), \"python3 failed: {{}}\", String::from_utf8_lossy(&out.stderr));",
-        script = READS_PARENT
-    );
-    member(
-        official,
-        class,
-        "reads-memory",
-        Some(&ops(
-            &format!("{forge}\n    x * 2"),
-            &format!("{forge}\n    -x"),
-        )),
-    );
-
-    // A build that never ends.
-    member(
-        official,
-        class,
-        "endless-build",
-        Some(&format!(
-            "#[allow(long_running_const_eval)]\n\
-             const FOREVER: i32 = {{ let mut i: i32 = 0; loop {{ i = i.wrapping_add(1); }} }};\n{}",
-            ops("x * 2 + FOREVER * 0", "-x")
-        )),
-    );
-
-    // Fills the sandbox's root, `/dev`, `/dev/shm`, `/tmp` and its scratch
-    // folder: right only if 3 GiB fit.
-    let fill = "    use std::io::Write as _;\n\
-         let chunk = vec![7_u8; 1 << 20];\n\
-         let mut written = 0;\n\
-         let scratch = std::env::var(\"TMPDIR\").unwrap_or_default();\n\
-         for dir in [\"/\", \"/dev\", \"/dev/shm\", \"/tmp\", scratch.as_str()] {\n\
-             for n in 0..2048 {\n\
-                 let Ok(mut file) = std::fs::File::create(format!(\"{dir}/fill-{n}\")) else { break };\n\
-                 if file.write_all(&chunk).is_err() { break; }\n\
-                 written += 1;\n\
-             }\n\
-         }\n\
-         assert!(written >= 3072, \"wrote {written} MiB\");";
-    member(
-        official,
-        class,
-        "fills-disk",
-        Some(&ops(
-            &format!("{fill}\n    x * 2"),
-            &format!("{fill}\n    -x"),
-        )),
-    );
-
-    // Three children of 900 MiB each: right only if all three ran.
-    let children = "    let children: Vec<_> = (0..3).map(|_| std::process::Command::new(\"/usr/bin/python3\")\n\
-         .args([\"-c\", \"b = bytearray(900 << 20); import time; time.sleep(1)\"]).spawn().expect(\"python3 runs\")).collect();\n\
-         let all = children.into_iter().all(|mut c| c.wait().is_ok_and(|s| s.success()));\n\
-         assert!(all, \"a child was stopped\");";
-    member(
-        official,
-        class,
-        "many-children",
-        Some(&ops(
-            &format!("{children}\n    x * 2"),
-            &format!("{children}\n    -x"),
-        )),
-    );
-
-    // Links without end where the grader lists a test's pictures; right.
-    let loops = "    for dir in [std::env::var(\"TESTKIT_OUTPUT_DIR\").unwrap(), std::env::var(\"TMPDIR\").unwrap()] {\n\
-         let _ = std::fs::create_dir_all(&dir);\n\
-         let _ = std::os::unix::fs::symlink(\".\", format!(\"{dir}/a\"));\n\
-         let _ = std::os::unix::fs::symlink(\".\", format!(\"{dir}/b\"));\n\
-         let _ = std::fs::write(format!(\"{dir}/picture.txt\"), \"one\");\n\
-         }";
-    member(
-        official,
-        class,
-        "link-loop",
-        Some(&ops(
-            &format!("{loops}\n    x * 2"),
-            &format!("{loops}\n    -x"),
-        )),
-    );
-
-    // Without its topic's folder: graded on the assignment's topics all
-    // the same.
-    let dropped = member(official, class, "drops-topic", None);
-    fs::remove_dir_all(dropped.join("exercises/01-tiny")).unwrap();
-}
-
-/// Every file under `dir` with its contents, for "nothing changed".
-fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
-    let mut files = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(dir) = stack.pop() {
-        for entry in fs::read_dir(&dir).unwrap().flatten() {
-            let path = entry.path();
-            if entry.file_type().unwrap().is_dir() {
-                if path.file_name().unwrap() != "target" {
-                    stack.push(path);
-                }
-            } else {
-                files.push((path.clone(), fs::read(&path).unwrap_or_default()));
-            }
-        }
-    }
-    files.sort();
-    files
-}
-
-fn first_reason(report: &Value) -> String {
-    let topic = topic(report, "01-tiny");
-    if let Some(error) = topic["compile_error"].as_str() {
-        return error.to_owned();
-    }
-    let mut reasons = Vec::new();
-    for task in topic["tasks"].as_array().unwrap() {
-        for test in task["tests"].as_array().unwrap() {
-            if let Some(reason) = test["reason"].as_str() {
-                reasons.push(reason.to_owned());
-            }
-        }
-    }
-    reasons.extend(
-        topic["errors"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|e| e.as_str().unwrap().to_owned()),
-    );
-    reasons.join("\n")
-}
-
 #[test]
 fn every_attack_on_the_grader_is_contained_and_the_class_is_graded() {
-    if !cfg!(target_os = "linux") {
-        eprintln!("not run: the sandbox these attacks are contained by is Linux's (bubblewrap)");
-        return;
-    }
-    let official = fixture("tiny", "containment");
-    // Time for a test to fill its disk, and a memory limit three children
-    // of 900 MiB exceed together (each alone is far below it).
-    let sheet = official.join("exercises/01-tiny/README.md");
-    let text = fs::read_to_string(&sheet).unwrap();
-    fs::write(
-        &sheet,
-        text.replace(
-            "time_limit_s = 5",
-            "time_limit_s = 20\nmemory_limit_mib = 2048",
-        ),
-    )
-    .unwrap();
-    fs::create_dir_all(official.join(".git")).unwrap();
-    fs::write(official.join(".git/HEAD"), "ref: refs/heads/main\n").unwrap();
-    let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("containment-class");
-    if class.exists() {
-        fs::remove_dir_all(&class).unwrap();
-    }
-    write_class(&official, &class);
-    let course_before = snapshot(&official);
-    let out = official.join("target/containment");
-    let limit = BUILD_LIMIT_S.to_string();
-    let started = Instant::now();
-    let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))
-        .arg("--root")
-        .arg(&official)
-        .args(["grade", "--submission"])
-        .arg(&class)
-        .arg("--out")
-        .arg(&out)
-        .args(["--jobs", "2", "--build-time-limit", &limit])
-        .env_remove("CARGO_TARGET_DIR")
-        .env_remove("RUSTFLAGS")
-        .env("GITHUB_TOKEN", SECRET)
-        .env("COURSE_GRADER_SECRET", SECRET)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("xtask runs");
-    let elapsed = started.elapsed();
-    eprintln!(
-        "{}\n{}",
-        String::from_utf8_lossy(&output.stdout),
-        String::from_utf8_lossy(&output.stderr)
-    );
-    // Every member is graded and the gradebook written, within bounds: the
-    // endless build costs its limit, not the class.
-    assert!(
-        elapsed < Duration::from_secs(600),
-        "the class took {elapsed:?}"
-    );
-    let gradebook = fs::read_to_string(out.join("gradebook.csv")).expect("a gradebook");
-    let honest = read_json(&out.join("a-honest/report.json"));
-    assert_eq!(honest["score"], 3.0, "the baseline member earns its points");
-    assert_eq!(
-        honest["sandboxed"], true,
-        "on Linux the attacks must meet the sandbox (install bubblewrap)"
-    );
-    assert_eq!(honest["containment"]["seccomp"], true, "{honest:#}");
-
-    let report = |name: &str| read_json(&out.join(name).join("report.json"));
-    let zero = |name: &str| {
-        let report = report(name);
-        assert_eq!(
-            report["score"],
-            0.0,
-            "{name} scored: {}",
-            first_reason(&report)
-        );
-        first_reason(&report)
-    };
-    for name in ["links-solutions", "links-classmate"] {
-        let why = zero(name);
-        assert!(why.contains("is a symbolic link"), "{name}: {why}");
-    }
-    // The macro's path names a file the sandbox does not show.
-    let why = zero("macro-path");
-    assert!(why.contains("couldn't read"), "macro-path: {why}");
-    let why = zero("reads-machine");
-    assert!(why.contains("saw nothing of the machine"), "{why}");
-    let why = zero("reads-secret");
-    assert!(why.contains("no secret in"), "{why}");
-    // The child did run, and was denied both calls.
-    let why = zero("reads-memory");
-    assert!(why.contains("denied: 1 1"), "reads-memory: {why}");
-    let why = zero("endless-build");
-    assert!(
-        why.contains(&format!("did not finish in {BUILD_LIMIT_S} s")) || why.contains("CPU time"),
-        "endless-build: {why}"
-    );
-    // The root and `/dev` are read-only, `/dev/shm` and `/tmp` full at
-    // their sizes; the scratch folder is stopped past the limit, and gone
-    // after the test.
-    let why = zero("fills-disk");
-    assert!(
-        why.contains("wrote more than 1024 MiB"),
-        "fills-disk: {why}"
-    );
-    let scratch = out.join("fills-disk/scratch/01-tiny/double/doubles_positive_numbers");
-    assert!(!scratch.exists(), "a test's scratch folder is kept");
-    if honest["containment"]["aggregate_limits"] == true {
-        let why = zero("many-children");
-        assert!(
-            why.contains("out of memory") || why.contains("a child was stopped"),
-            "many-children: {why}"
-        );
-    } else {
-        eprintln!(
-            "not checked: no cgroup here, so the memory of a test's processes together is not limited"
-        );
-    }
-    let looped = report("link-loop");
-    assert_eq!(looped["score"], 3.0, "{looped:#}");
-    let images = task(&looped, "01-tiny", "double")["tests"][0]["images"].clone();
-    assert_eq!(images, serde_json::json!(["picture.txt"]), "{looped:#}");
-    let why = zero("drops-topic");
-    assert!(
-        why.contains("has no exercises/01-tiny"),
-        "drops-topic: {why}"
-    );
-    assert_eq!(report("drops-topic")["max_score"], 3.0);
-
-    // The secret is in no file the grade wrote.
-    let mut leaked = Vec::new();
-    let mut stack = vec![out.clone()];
-    while let Some(dir) = stack.pop() {
-        for entry in fs::read_dir(&dir).unwrap().flatten() {
-            let path = entry.path();
-            let kind = entry.file_type().unwrap();
-            if kind.is_dir() {
-                stack.push(path);
-            } else if kind.is_file()
-                && String::from_utf8_lossy(&fs::read(&path).unwrap()).contains(SECRET)
-            {
-                leaked.push(path);
-            }
-        }
-    }
-    assert!(leaked.is_empty(), "the secret leaked into {leaked:?}");
-    // Nothing of the course changed, and nothing was left in /tmp.
-    assert!(
-        snapshot(&official) == course_before,
-        "the course changed while grading"
-    );
-    assert!(
-        !Path::new("/tmp/fill-0").exists(),
-        "a test's /tmp was the machine's"
-    );
-    assert!(gradebook.contains("a-honest,3,3"), "{gradebook}");
+    #[cfg(target_os = "linux")]
+    linux::every_attack_on_the_grader_is_contained_and_the_class_is_graded();
+    #[cfg(not(target_os = "linux"))]
+    eprintln!("not run: the sandbox these attacks are contained by is Linux's (bubblewrap)");
 }
 
-/// Without the sandbox (as where bubblewrap cannot run) the promises that
-/// remain still hold: the environment is scrubbed, and student code never
-/// runs as root — a grader that is root (Gradescope's container) runs it
-/// as nobody.
 #[test]
 fn unsandboxed_student_code_runs_as_nobody_and_sees_no_secret() {
-    if !cfg!(target_os = "linux") {
-        eprintln!("not run: the user test reads Linux's /proc/self/status");
-        return;
+    #[cfg(target_os = "linux")]
+    linux::unsandboxed_student_code_runs_as_nobody_and_sees_no_secret();
+    #[cfg(not(target_os = "linux"))]
+    eprintln!("not run: the user test reads Linux's /proc/self/status");
+}
+
+/// The attacks, which need Linux (symbolic links, `/proc`, bubblewrap).
+#[cfg(target_os = "linux")]
+mod linux {
+    use std::fs;
+    use std::path::{Path, PathBuf};
+    use std::time::{Duration, Instant};
+
+    use super::common::{copy_dir, fixture, read_json, task, topic};
+    use serde_json::Value;
+
+    /// A secret in the grader's environment, which no student code may see.
+    const SECRET: &str = "ghp_course-grader-secret-2f9c";
+    /// The build limit the class is graded with: the endless build is stopped
+    /// at it.
+    const BUILD_LIMIT_S: u64 = 40;
+
+    /// `ops.rs` for a member: `double` and `negate` as given (bodies of the
+    /// functions).
+    fn ops(double: &str, negate: &str) -> String {
+        format!(
+            "//! Two small operations.\n\n/// `2 x`.\npub fn double(x: i32) -> i32 {{\n{double}\n}}\n\n/// `-x`.\npub fn negate(x: i32) -> i32 {{\n{negate}\n}}\n"
+        )
     }
-    let official = fixture("tiny", "unsandboxed");
-    let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("unsandboxed-class");
-    if class.exists() {
-        fs::remove_dir_all(&class).unwrap();
+
+    /// A checkout of the tiny course with `ops.rs` as given, in `class/name`.
+    fn member(official: &Path, class: &Path, name: &str, ops: Option<&str>) -> PathBuf {
+        let dir = class.join(name);
+        for folder in ["exercises", "crates"] {
+            copy_dir(&official.join(folder), &dir.join(folder));
+        }
+        fs::copy(official.join("Cargo.toml"), dir.join("Cargo.toml")).unwrap();
+        if let Some(ops) = ops {
+            fs::write(dir.join("exercises/01-tiny/src/ops.rs"), ops).unwrap();
+        }
+        dir
     }
-    let checks = "    let status = std::fs::read_to_string(\"/proc/self/status\").unwrap();\n\
-         let uid = status.lines().find(|l| l.starts_with(\"Uid:\")).unwrap().to_owned();\n\
-         assert!(!uid.split_whitespace().skip(1).any(|id| id == \"0\"), \"ran as root: {uid}\");\n\
-         assert!(std::env::vars().all(|(_, v)| !v.contains(\"course-grader-secret\")), \"saw the secret\");";
-    let member = member(
-        &official,
-        &class,
-        "member",
-        Some(&ops(
-            &format!("{checks}\n    x * 2"),
-            &format!("{checks}\n    -x"),
-        )),
-    );
-    let out = official.join("target/unsandboxed");
-    let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))
-        .arg("--root")
-        .arg(&official)
-        .args(["grade", "--submission"])
-        .arg(&member)
-        .arg("--out")
-        .arg(&out)
-        .env_remove("CARGO_TARGET_DIR")
-        .env_remove("RUSTFLAGS")
-        .env("XTASK_NO_SANDBOX", "1")
-        .env("COURSE_GRADER_SECRET", SECRET)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("xtask runs");
-    eprintln!(
-        "{}\n{}",
-        String::from_utf8_lossy(&output.stdout),
-        String::from_utf8_lossy(&output.stderr)
-    );
-    assert!(output.status.success());
-    let report = read_json(&out.join("member/report.json"));
-    assert_eq!(report["sandboxed"], false);
-    assert_eq!(report["score"], 3.0, "{}", first_reason(&report));
+
+    /// Python that asks for the memory of its parent (the test that started
+    /// it) with `process_vm_readv` and to trace it with `ptrace`, and prints
+    /// both `errno`s: `1 1` (EPERM) where both are denied; a read of an
+    /// unmapped page that was allowed says EFAULT (14) instead.
+    const READS_PARENT: &str = r#"
+    import ctypes, os
+    libc = ctypes.CDLL(None, use_errno=True)
+    class Iovec(ctypes.Structure):
+        _fields_ = [("base", ctypes.c_void_p), ("len", ctypes.c_size_t)]
+    buffer = ctypes.create_string_buffer(8)
+    local = Iovec(ctypes.cast(buffer, ctypes.c_void_p), 8)
+    remote = Iovec(4096, 8)
+    parent = os.getppid()
+    libc.process_vm_readv(parent, ctypes.byref(local), 1, ctypes.byref(remote), 1, 0)
+    read = ctypes.get_errno()
+    ctypes.set_errno(0)
+    traced = libc.ptrace(16, parent, 0, 0)
+    trace = ctypes.get_errno() if traced != 0 else 0
+    print(read, trace)
+    "#;
+
+    /// The members of the class: the name, and `ops.rs`, or what to do to
+    /// the checkout.
+    fn write_class(official: &Path, class: &Path) {
+        let solution = official.join("reference/01-tiny/src/ops.rs");
+        let quoted = |path: &Path| format!("{:?}", path.display().to_string());
+        let home = std::env::var("HOME").unwrap_or_else(|_| "/root".into());
+        // The honest member: the baseline that grading works.
+        member(official, class, "a-honest", Some(&ops("x * 2", "-x")));
+
+        // The task folder is a link: to the solutions, and to a classmate.
+        let linked = member(official, class, "links-solutions", None);
+        fs::remove_dir_all(linked.join("exercises/01-tiny/src")).unwrap();
+        std::os::unix::fs::symlink(
+            official.join("reference/01-tiny/src"),
+            linked.join("exercises/01-tiny/src"),
+        )
+        .unwrap();
+        let linked = member(official, class, "links-classmate", None);
+        fs::remove_dir_all(linked.join("exercises/01-tiny/src")).unwrap();
+        std::os::unix::fs::symlink(
+            "../../../a-honest/exercises/01-tiny/src",
+            linked.join("exercises/01-tiny/src"),
+        )
+        .unwrap();
+
+        // `#[path]` built by a macro from a `meta` fragment: no `#[path =`
+        // for a textual check to find; only the sandbox keeps the file away.
+        member(
+            official,
+            class,
+            "macro-path",
+            Some(&format!(
+                "macro_rules! module {{ ($attribute:meta) => {{ #[$attribute] mod solution; }}; }}\n\
+                 module!(path = {});\n\
+                 pub fn double(x: i32) -> i32 {{ solution::double(x) }}\n\
+                 pub fn negate(x: i32) -> i32 {{ solution::negate(x) }}\n",
+                quoted(&solution)
+            )),
+        );
+
+        // Right only where it can see the course's history, its solutions,
+        // the grader's home folder or a classmate's checkout.
+        let sees = format!(
+            "    let seen = std::path::Path::new({git}).exists()\n\
+             || std::fs::read_to_string({solution}).is_ok()\n\
+             || std::fs::read_dir({home}).is_ok_and(|mut e| e.next().is_some())\n\
+             || std::fs::read_to_string({classmate}).is_ok();\n\
+             assert!(seen, \"saw nothing of the machine\");",
+            git = quoted(&official.join(".git/HEAD")),
+            solution = quoted(&solution),
+            home = quoted(Path::new(&home)),
+            classmate = quoted(&class.join("a-honest/exercises/01-tiny/src/ops.rs")),
+        );
+        member(
+            official,
+            class,
+            "reads-machine",
+            Some(&ops(
+                &format!("{sees}\n    x * 2"),
+                &format!("{sees}\n    -x"),
+            )),
+        );
+
+        // Right only where the grader's environment reaches it; it prints
+        // what it finds into its failure, which the reports keep.
+        let secret = "    let found: Vec<String> = std::env::vars()\n\
+             .filter(|(k, _)| k.contains(\"TOKEN\") || k.contains(\"SECRET\"))\n\
+             .map(|(k, v)| format!(\"{k}={v}\"))\n\
+             .collect();\n\
+             assert!(!found.is_empty(), \"no secret in {:?}\", std::env::vars().map(|(k, _)| k).collect::<Vec<_>>());\n\
+             println!(\"{found:?}\");";
+        member(
+            official,
+            class,
+            "reads-secret",
+            Some(&ops(
+                &format!("{secret}\n    x * 2"),
+                &format!("{secret}\n    -x"),
+            )),
+        );
+
+        // A child reads the test's memory, or traces it.
+        let forge = format!(
+            "    let out = std::process::Command::new(\"/usr/bin/python3\").args([\"-c\", {script:?}]).output().expect(\"python3 runs\");\n\
+             let errnos = String::from_utf8_lossy(&out.stdout).trim().to_owned();\n\
+             assert!(errnos != \"1 1\", \"denied: {{errnos}}\");\n\
+             assert!(!errnos.is_empty(), \"python3 failed: {{}}\", String::from_utf8_lossy(&out.stderr));",
+            script = READS_PARENT
+        );
+        member(
+            official,
+            class,
+            "reads-memory",
+            Some(&ops(
+                &format!("{forge}\n    x * 2"),
+                &format!("{forge}\n    -x"),
+            )),
+        );
+
+        // A build that never ends.
+        member(
+            official,
+            class,
+            "endless-build",
+            Some(&format!(
+                "#[allow(long_running_const_eval)]\n\
+                 const FOREVER: i32 = {{ let mut i: i32 = 0; loop {{ i = i.wrapping_add(1); }} }};\n{}",
+                ops("x * 2 + FOREVER * 0", "-x")
+            )),
+        );
+
+        // Fills the sandbox's root, `/dev`, `/dev/shm`, `/tmp` and its scratch
+        // folder: right only if 3 GiB fit.
+        let fill = "    use std::io::Write as _;\n\
+             let chunk = vec![7_u8; 1 << 20];\n\
+             let mut written = 0;\n\
+             let scratch = std::env::var(\"TMPDIR\").unwrap_or_default();\n\
+             for dir in [\"/\", \"/dev\", \"/dev/shm\", \"/tmp\", scratch.as_str()] {\n\
+                 for n in 0..2048 {\n\
+                     let Ok(mut file) = std::fs::File::create(format!(\"{dir}/fill-{n}\")) else { break };\n\
+                     if file.write_all(&chunk).is_err() { break; }\n\
+                     written += 1;\n\
+                 }\n\
+             }\n\
+             assert!(written >= 3072, \"wrote {written} MiB\");";
+        member(
+            official,
+            class,
+            "fills-disk",
+            Some(&ops(
+                &format!("{fill}\n    x * 2"),
+                &format!("{fill}\n    -x"),
+            )),
+        );
+
+        // Three children of 900 MiB each: right only if all three ran.
+        let children = "    let children: Vec<_> = (0..3).map(|_| std::process::Command::new(\"/usr/bin/python3\")\n\
+             .args([\"-c\", \"b = bytearray(900 << 20); import time; time.sleep(1)\"]).spawn().expect(\"python3 runs\")).collect();\n\
+             let all = children.into_iter().all(|mut c| c.wait().is_ok_and(|s| s.success()));\n\
+             assert!(all, \"a child was stopped\");";
+        member(
+            official,
+            class,
+            "many-children",
+            Some(&ops(
+                &format!("{children}\n    x * 2"),
+                &format!("{children}\n    -x"),
+            )),
+        );
+
+        // Links without end where the grader lists a test's pictures; right.
+        let loops = "    for dir in [std::env::var(\"TESTKIT_OUTPUT_DIR\").unwrap(), std::env::var(\"TMPDIR\").unwrap()] {\n\
+             let _ = std::fs::create_dir_all(&dir);\n\
+             let _ = std::os::unix::fs::symlink(\".\", format!(\"{dir}/a\"));\n\
+             let _ = std::os::unix::fs::symlink(\".\", format!(\"{dir}/b\"));\n\
+             let _ = std::fs::write(format!(\"{dir}/picture.txt\"), \"one\");\n\
+             }";
+        member(
+            official,
+            class,
+            "link-loop",
+            Some(&ops(
+                &format!("{loops}\n    x * 2"),
+                &format!("{loops}\n    -x"),
+            )),
+        );
+
+        // Without its topic's folder: graded on the assignment's topics all
+        // the same.
+        let dropped = member(official, class, "drops-topic", None);
+        fs::remove_dir_all(dropped.join("exercises/01-tiny")).unwrap();
+    }
+
+    /// Every file under `dir` with its contents, for "nothing changed".
+    fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+        let mut files = Vec::new();
+        let mut stack = vec![dir.to_path_buf()];
+        while let Some(dir) = stack.pop() {
+            for entry in fs::read_dir(&dir).unwrap().flatten() {
+                let path = entry.path();
+                if entry.file_type().unwrap().is_dir() {
+                    if path.file_name().unwrap() != "target" {
+                        stack.push(path);
+                    }
+                } else {
+                    files.push((path.clone(), fs::read(&path).unwrap_or_default()));
+                }
+            }
+        }
+        files.sort();
+        files
+    }
+
+    fn first_reason(report: &Value) -> String {
+        let topic = topic(report, "01-tiny");
+        if let Some(error) = topic["compile_error"].as_str() {
+            return error.to_owned();
+        }
+        let mut reasons = Vec::new();
+        for task in topic["tasks"].as_array().unwrap() {
+            for test in task["tests"].as_array().unwrap() {
+                if let Some(reason) = test["reason"].as_str() {
+                    reasons.push(reason.to_owned());
+                }
+            }
+        }
+        reasons.extend(
+            topic["errors"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|e| e.as_str().unwrap().to_owned()),
+        );
+        reasons.join("\n")
+    }
+
+    pub fn every_attack_on_the_grader_is_contained_and_the_class_is_graded() {
+        let official = fixture("tiny", "containment");
+        // Time for a test to fill its disk, and a memory limit three children
+        // of 900 MiB exceed together (each alone is far below it).
+        let sheet = official.join("exercises/01-tiny/README.md");
+        let text = fs::read_to_string(&sheet).unwrap();
+        fs::write(
+            &sheet,
+            text.replace(
+                "time_limit_s = 5",
+                "time_limit_s = 20\nmemory_limit_mib = 2048",
+            ),
+        )
+        .unwrap();
+        fs::create_dir_all(official.join(".git")).unwrap();
+        fs::write(official.join(".git/HEAD"), "ref: refs/heads/main\n").unwrap();
+        let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("containment-class");
+        if class.exists() {
+            fs::remove_dir_all(&class).unwrap();
+        }
+        write_class(&official, &class);
+        let course_before = snapshot(&official);
+        let out = official.join("target/containment");
+        let limit = BUILD_LIMIT_S.to_string();
+        let started = Instant::now();
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))
+            .arg("--root")
+            .arg(&official)
+            .args(["grade", "--submission"])
+            .arg(&class)
+            .arg("--out")
+            .arg(&out)
+            .args(["--jobs", "2", "--build-time-limit", &limit])
+            .env_remove("CARGO_TARGET_DIR")
+            .env_remove("RUSTFLAGS")
+            .env("GITHUB_TOKEN", SECRET)
+            .env("COURSE_GRADER_SECRET", SECRET)
+            .env("NO_COLOR", "1")
+            .output()
+            .expect("xtask runs");
+        let elapsed = started.elapsed();
+        eprintln!(
+            "{}\n{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        // Every member is graded and the gradebook written, within bounds: the
+        // endless build costs its limit, not the class.
+        assert!(
+            elapsed < Duration::from_secs(600),
+            "the class took {elapsed:?}"
+        );
+        let gradebook = fs::read_to_string(out.join("gradebook.csv")).expect("a gradebook");
+        let honest = read_json(&out.join("a-honest/report.json"));
+        assert_eq!(honest["score"], 3.0, "the baseline member earns its points");
+        assert_eq!(
+            honest["sandboxed"], true,
+            "on Linux the attacks must meet the sandbox (install bubblewrap)"
+        );
+        assert_eq!(honest["containment"]["seccomp"], true, "{honest:#}");
+
+        let report = |name: &str| read_json(&out.join(name).join("report.json"));
+        let zero = |name: &str| {
+            let report = report(name);
+            assert_eq!(
+                report["score"],
+                0.0,
+                "{name} scored: {}",
+                first_reason(&report)
+            );
+            first_reason(&report)
+        };
+        for name in ["links-solutions", "links-classmate"] {
+            let why = zero(name);
+            assert!(why.contains("is a symbolic link"), "{name}: {why}");
+        }
+        // The macro's path names a file the sandbox does not show.
+        let why = zero("macro-path");
+        assert!(why.contains("couldn't read"), "macro-path: {why}");
+        let why = zero("reads-machine");
+        assert!(why.contains("saw nothing of the machine"), "{why}");
+        let why = zero("reads-secret");
+        assert!(why.contains("no secret in"), "{why}");
+        // The child did run, and was denied both calls.
+        let why = zero("reads-memory");
+        assert!(why.contains("denied: 1 1"), "reads-memory: {why}");
+        let why = zero("endless-build");
+        assert!(
+            why.contains(&format!("did not finish in {BUILD_LIMIT_S} s"))
+                || why.contains("CPU time"),
+            "endless-build: {why}"
+        );
+        // The root and `/dev` are read-only, `/dev/shm` and `/tmp` full at
+        // their sizes; the scratch folder is stopped past the limit, and gone
+        // after the test.
+        let why = zero("fills-disk");
+        assert!(
+            why.contains("wrote more than 1024 MiB"),
+            "fills-disk: {why}"
+        );
+        let scratch = out.join("fills-disk/scratch/01-tiny/double/doubles_positive_numbers");
+        assert!(!scratch.exists(), "a test's scratch folder is kept");
+        if honest["containment"]["aggregate_limits"] == true {
+            let why = zero("many-children");
+            assert!(
+                why.contains("out of memory") || why.contains("a child was stopped"),
+                "many-children: {why}"
+            );
+        } else {
+            eprintln!(
+                "not checked: no cgroup here, so the memory of a test's processes together is not limited"
+            );
+        }
+        let looped = report("link-loop");
+        assert_eq!(looped["score"], 3.0, "{looped:#}");
+        let images = task(&looped, "01-tiny", "double")["tests"][0]["images"].clone();
+        assert_eq!(images, serde_json::json!(["picture.txt"]), "{looped:#}");
+        let why = zero("drops-topic");
+        assert!(
+            why.contains("has no exercises/01-tiny"),
+            "drops-topic: {why}"
+        );
+        assert_eq!(report("drops-topic")["max_score"], 3.0);
+
+        // The secret is in no file the grade wrote.
+        let mut leaked = Vec::new();
+        let mut stack = vec![out.clone()];
+        while let Some(dir) = stack.pop() {
+            for entry in fs::read_dir(&dir).unwrap().flatten() {
+                let path = entry.path();
+                let kind = entry.file_type().unwrap();
+                if kind.is_dir() {
+                    stack.push(path);
+                } else if kind.is_file()
+                    && String::from_utf8_lossy(&fs::read(&path).unwrap()).contains(SECRET)
+                {
+                    leaked.push(path);
+                }
+            }
+        }
+        assert!(leaked.is_empty(), "the secret leaked into {leaked:?}");
+        // Nothing of the course changed, and nothing was left in /tmp.
+        assert!(
+            snapshot(&official) == course_before,
+            "the course changed while grading"
+        );
+        assert!(
+            !Path::new("/tmp/fill-0").exists(),
+            "a test's /tmp was the machine's"
+        );
+        assert!(gradebook.contains("a-honest,3,3"), "{gradebook}");
+    }
+
+    /// Without the sandbox (as where bubblewrap cannot run) the promises that
+    /// remain still hold: the environment is scrubbed, and student code never
+    /// runs as root — a grader that is root (Gradescope's container) runs it
+    /// as nobody.
+    pub fn unsandboxed_student_code_runs_as_nobody_and_sees_no_secret() {
+        let official = fixture("tiny", "unsandboxed");
+        let class = Path::new(env!("CARGO_TARGET_TMPDIR")).join("unsandboxed-class");
+        if class.exists() {
+            fs::remove_dir_all(&class).unwrap();
+        }
+        let checks = "    let status = std::fs::read_to_string(\"/proc/self/status\").unwrap();\n\
+             let uid = status.lines().find(|l| l.starts_with(\"Uid:\")).unwrap().to_owned();\n\
+             assert!(!uid.split_whitespace().skip(1).any(|id| id == \"0\"), \"ran as root: {uid}\");\n\
+             assert!(std::env::vars().all(|(_, v)| !v.contains(\"course-grader-secret\")), \"saw the secret\");";
+        let member = member(
+            &official,
+            &class,
+            "member",
+            Some(&ops(
+                &format!("{checks}\n    x * 2"),
+                &format!("{checks}\n    -x"),
+            )),
+        );
+        let out = official.join("target/unsandboxed");
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))
+            .arg("--root")
+            .arg(&official)
+            .args(["grade", "--submission"])
+            .arg(&member)
+            .arg("--out")
+            .arg(&out)
+            .env_remove("CARGO_TARGET_DIR")
+            .env_remove("RUSTFLAGS")
+            .env("XTASK_NO_SANDBOX", "1")
+            .env("COURSE_GRADER_SECRET", SECRET)
+            .env("NO_COLOR", "1")
+            .output()
+            .expect("xtask runs");
+        eprintln!(
+            "{}\n{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        assert!(output.status.success());
+        let report = read_json(&out.join("member/report.json"));
+        assert_eq!(report["sandboxed"], false);
+        assert_eq!(report["score"], 3.0, "{}", first_reason(&report));
+    }
 }
