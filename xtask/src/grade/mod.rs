@@ -11,8 +11,14 @@
 //!   └─────────────────────> Report ──> table, report.json, results.json, junit.xml, report.html
 //! ```
 //!
+//! One module a stage of the pipeline: [`build`] (a job of the runner,
+//! [`crate::sandbox`]), [`plan`] (the tests listed), [`pool`] (run
+//! [`run`] by the workers), [`verdict`] (from finished tests to points),
+//! and the report's formats ([`export`], [`html`], [`table`]); a
+//! submission is staged first ([`submission`]).
+//!
 //! What a grade promises: each test runs in a bubblewrap sandbox
-//! ([`run::Sandbox`]) where one can be had, and a test passed only when it
+//! ([`crate::sandbox`]) where one can be had, and a test passed only when it
 //! exited with status 0 and printed the random token the grader made for
 //! that run ([`outcome::judge`]; the test side is `crates/testkit-macros`),
 //! so student code that prints a passing summary and exits has not passed.
@@ -23,39 +29,36 @@ mod forbidden;
 mod html;
 mod outcome;
 pub mod pipeline;
+mod plan;
+mod pool;
 pub mod report;
 mod run;
 pub mod submission;
 mod table;
+mod verdict;
 
 use std::collections::HashMap;
-use std::ffi::OsString;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
+pub use pool::Permits;
 pub use report::{Edition, Report, TaskStatus, TestStatus};
 
 use crate::stage;
 pub use crate::stage::Overlay;
-use crate::topics::{self, Topic};
+use crate::topics;
 use build::{Build, TestBinary};
-use outcome::Exit;
-use report::{TaskReport, TestReport, TopicReport};
-use run::{Finished, TestCommand};
+use report::TopicReport;
+use run::Finished;
 
 /// Where insta writes the snapshots a test failed (`.snap.new`), under the
 /// report folder: the course's own stay untouched (and read-only in the
 /// sandbox).
 pub const PENDING_SNAPSHOTS: &str = "snapshots";
-
-/// The excerpt of a failed test's output kept in the report.
-const OUTPUT_EXCERPT_CHARS: usize = 4000;
 
 /// What to grade and where to put the results.
 #[derive(Debug, Clone)]
@@ -87,45 +90,6 @@ pub struct GradeOptions {
     /// Progress bars and spinners on stderr (off where several grades
     /// share the terminal).
     pub progress: bool,
-}
-
-/// A counting semaphore: the tests that may run at once, shared by the
-/// submissions of a class graded side by side.
-#[derive(Debug)]
-pub struct Permits {
-    free: Mutex<usize>,
-    freed: std::sync::Condvar,
-}
-
-impl Permits {
-    /// `count` permits (at least one).
-    #[must_use]
-    pub fn new(count: usize) -> Self {
-        Self {
-            free: Mutex::new(count.max(1)),
-            freed: std::sync::Condvar::new(),
-        }
-    }
-
-    /// Waits for a permit, which is given back when the guard drops.
-    pub fn take(&self) -> PermitGuard<'_> {
-        let mut free = self.free.lock().expect("no permit holder panics");
-        while *free == 0 {
-            free = self.freed.wait(free).expect("no permit holder panics");
-        }
-        *free -= 1;
-        PermitGuard(self)
-    }
-}
-
-/// A permit of [`Permits`], held while a test runs.
-pub struct PermitGuard<'a>(&'a Permits);
-
-impl Drop for PermitGuard<'_> {
-    fn drop(&mut self) {
-        *self.0.free.lock().expect("no permit holder panics") += 1;
-        self.0.freed.notify_one();
-    }
 }
 
 impl GradeOptions {
@@ -213,7 +177,7 @@ pub(crate) struct Prepared {
     started: Instant,
     root: PathBuf,
     out: PathBuf,
-    plans: Vec<Plan>,
+    plans: Vec<plan::Plan>,
     viewer: pipeline::Viewer,
 }
 
@@ -305,7 +269,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             }
             (_, build) => build,
         };
-        plans.push(plan(&root, &out, topic, build));
+        plans.push(plan::plan(&root, &out, topic, build));
     }
     let compiled: Vec<&str> = plans
         .iter()
@@ -413,7 +377,7 @@ impl Prepared {
             *next += 1;
         }
         jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
-        let results = run_all(
+        let results = pool::run_all(
             &plans,
             &jobs,
             options.jobs.max(1),
@@ -428,7 +392,7 @@ impl Prepared {
         let topics: Vec<TopicReport> = plans
             .into_iter()
             .enumerate()
-            .map(|(p, plan)| topic_report(out, plan, |t| finished.remove(&(p, t))))
+            .map(|(p, plan)| verdict::topic_report(out, plan, |t| finished.remove(&(p, t))))
             .collect();
         let spinner = spinner(
             "drawing the pipeline with your stages".to_owned(),
@@ -502,156 +466,6 @@ pub fn one_screen(report: &Report, out: &Path) -> String {
     )
 }
 
-/// A topic ready to run: its tests, or why there are none.
-struct Plan {
-    topic: Topic,
-    compile_error: Option<String>,
-    errors: Vec<String>,
-    /// Per task (sheet order): an error that keeps it from being graded.
-    task_errors: Vec<Option<String>>,
-    tests: Vec<PlannedTest>,
-}
-
-struct PlannedTest {
-    task: usize,
-    name: String,
-    /// `None` for ignored tests, which are not run.
-    command: Option<TestCommand>,
-    images_dir: PathBuf,
-}
-
-/// Sorts `tests` (libtest lists them alphabetically) in the order their
-/// file `source` declares them: the order its author wrote them in,
-/// named cases before the random ones, so that the first failure shown is
-/// the first a reader of the file meets. Names not found go last.
-fn in_declaration_order(tests: &mut [String], source: &str) {
-    tests.sort_by_cached_key(|test| {
-        let name = test.rsplit("::").next().unwrap_or(test);
-        source.find(&format!("fn {name}(")).unwrap_or(usize::MAX)
-    });
-}
-
-/// The tests of `topic` built as `build`, ready to run (each sees the
-/// course at `root` and its own executable).
-fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan {
-    let mut plan = Plan {
-        topic: topic.clone(),
-        compile_error: None,
-        errors: Vec::new(),
-        task_errors: vec![None; topic.sheet.tasks.len()],
-        tests: Vec::new(),
-    };
-    let binaries = match build {
-        Build::Built(binaries) => binaries,
-        Build::Failed(errors) => {
-            plan.compile_error = Some(errors);
-            return plan;
-        }
-    };
-    let mut has_binary = vec![false; topic.sheet.tasks.len()];
-    for TestBinary { name, executable } in binaries {
-        let Some(task) = topic.sheet.tasks.iter().position(|task| task.id == name) else {
-            plan.errors.push(format!(
-                "test binary `tests/{name}.rs` is not a task of {} (the task sheet lists: {}); its tests were not run",
-                topic.name,
-                topic.sheet.task_ids()
-            ));
-            continue;
-        };
-        has_binary[task] = true;
-        let listing = out
-            .join("scratch")
-            .join(&topic.name)
-            .join(format!("list-{name}"));
-        let list = |ignored| run::list_tests(&executable, &topic.dir, root, &listing, ignored);
-        let listed = list(false).and_then(|all| Ok((all, list(true)?)));
-        let (mut all, ignored) = match listed {
-            Ok(lists) => lists,
-            Err(error) => {
-                plan.task_errors[task] = Some(format!(
-                    "cannot list the tests of tests/{name}.rs: {error:#}"
-                ));
-                continue;
-            }
-        };
-        if all.is_empty() {
-            plan.task_errors[task] = Some(format!("tests/{name}.rs has no tests"));
-        }
-        if let Ok(source) = fs::read_to_string(topic.dir.join("tests").join(format!("{name}.rs"))) {
-            in_declaration_order(&mut all, &source);
-        }
-        for test in all {
-            let relative = test_path(&name, &test);
-            let images_dir = out.join("images").join(&topic.name).join(&relative);
-            let scratch = out.join("scratch").join(&topic.name).join(&relative);
-            let pending = out.join(PENDING_SNAPSHOTS);
-            let mut env = test_env(root, topic, &images_dir);
-            env.push(("TMPDIR".into(), scratch.clone().into()));
-            env.push(("INSTA_PENDING_DIR".into(), pending.clone().into()));
-            let command = (!ignored.contains(&test)).then(|| TestCommand {
-                executable: executable.clone(),
-                name: test.clone(),
-                cwd: topic.dir.clone(),
-                course: root.to_path_buf(),
-                writable: vec![scratch.clone(), images_dir.clone(), pending.clone()],
-                gpu: topic.sheet.gpu,
-                env,
-                time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
-                memory_limit_mib: topic.sheet.memory_limit_mib,
-                verdict_file: scratch.join(".testkit-verdict"),
-                log: out
-                    .join("logs")
-                    .join(&topic.name)
-                    .join(relative.with_extension("log")),
-            });
-            plan.tests.push(PlannedTest {
-                task,
-                name: test,
-                command,
-                images_dir,
-            });
-        }
-    }
-    for (task, has) in has_binary.iter().enumerate() {
-        if !has {
-            plan.task_errors[task] = Some(format!(
-                "no tests: tests/{}.rs does not exist",
-                topic.sheet.tasks[task].id
-            ));
-        }
-    }
-    plan
-}
-
-/// `dda/octants/steep_line` for test `octants::steep_line` of task `dda`:
-/// unique across the topic, one folder per module.
-fn test_path(task: &str, test: &str) -> PathBuf {
-    let mut path = PathBuf::from(task);
-    for part in test.split("::") {
-        path.push(part);
-    }
-    path
-}
-
-fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsString)> {
-    vec![
-        ("RUST_BACKTRACE".into(), "0".into()),
-        ("RUST_LIB_BACKTRACE".into(), "0".into()),
-        // A failing snapshot leaves `.snap.new` for `cargo insta review`,
-        // never touching the official `.snap`.
-        ("INSTA_UPDATE".into(), "new".into()),
-        // Saves insta a `cargo metadata` in every test process.
-        ("INSTA_WORKSPACE_ROOT".into(), root.into()),
-        ("TESTKIT_OUTPUT_DIR".into(), images_dir.into()),
-        ("PROPTEST_DISABLE_FAILURE_PERSISTENCE".into(), "1".into()),
-        // A GPU test without an adapter fails instead of skipping.
-        (crate::setup::GPU_REQUIRED_VAR.into(), "1".into()),
-        // What `cargo test` sets for a test process.
-        ("CARGO_MANIFEST_DIR".into(), topic.dir.clone().into()),
-        ("CARGO_PKG_NAME".into(), topic.package.clone().into()),
-    ]
-}
-
 fn spinner(message: String, shown: bool) -> ProgressBar {
     if !shown {
         return ProgressBar::hidden();
@@ -659,264 +473,4 @@ fn spinner(message: String, shown: bool) -> ProgressBar {
     let spinner = ProgressBar::new_spinner().with_message(message);
     spinner.enable_steady_tick(Duration::from_millis(100));
     spinner
-}
-
-/// Runs the given tests `threads` at a time (and, with `permits`, only
-/// while one is free), with a progress bar on stderr (hidden when stderr
-/// is not a terminal or `progress` is off).
-fn run_all(
-    plans: &[Plan],
-    jobs: &[(usize, usize)],
-    threads: usize,
-    permits: Option<&Permits>,
-    progress: bool,
-) -> Result<Vec<Finished>> {
-    crate::sandbox::stop_all_on_interrupt();
-    let bar = if progress {
-        let bar = ProgressBar::new(jobs.len() as u64).with_style(
-            ProgressStyle::with_template(
-                "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
-            )
-            .expect("a valid progress template"),
-        );
-        bar.enable_steady_tick(Duration::from_millis(100));
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Finished>>>> =
-        Mutex::new((0..jobs.len()).map(|_| None).collect());
-    // Fail fast: the tasks (plan, task) one of whose tests timed out; their
-    // tests not started yet are not run.
-    let timed_out: Mutex<std::collections::HashSet<(usize, usize)>> = Mutex::default();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.min(jobs.len()) {
-            scope.spawn(|| {
-                loop {
-                    let index = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(&(p, t)) = jobs.get(index) else {
-                        break;
-                    };
-                    let plan = &plans[p];
-                    let test = &plan.tests[t];
-                    bar.set_message(format!("{} {}", plan.topic.name, test.name));
-                    let command = test.command.as_ref().expect("only runnable tests are jobs");
-                    let key = (p, test.task);
-                    let skip = timed_out.lock().expect("no worker panics").contains(&key);
-                    let result = if skip {
-                        Ok(Finished::not_run())
-                    } else {
-                        let _permit = permits.map(Permits::take);
-                        command.run()
-                    };
-                    if result.as_ref().is_ok_and(|f| f.exit.timed_out) {
-                        timed_out.lock().expect("no worker panics").insert(key);
-                    }
-                    results.lock().expect("no worker panics")[index] = Some(result);
-                    bar.inc(1);
-                }
-            });
-        }
-    });
-    bar.finish_and_clear();
-    results
-        .into_inner()
-        .expect("no worker panics")
-        .into_iter()
-        .map(|result| result.expect("every job ran"))
-        .collect()
-}
-
-fn topic_report(
-    out: &Path,
-    plan: Plan,
-    mut finished: impl FnMut(usize) -> Option<Finished>,
-) -> TopicReport {
-    let topic = &plan.topic;
-    let time_limit_s = topic.sheet.time_limit_s;
-    let mut tasks: Vec<TaskReport> = topic
-        .sheet
-        .tasks
-        .iter()
-        .zip(&plan.task_errors)
-        .map(|(task, error)| TaskReport {
-            id: task.id.clone(),
-            title: task.title.clone(),
-            points: task.points,
-            bonus: task.bonus,
-            score: 0.0,
-            status: if plan.compile_error.is_some() {
-                TaskStatus::CompileError
-            } else if error.is_some() {
-                TaskStatus::Error
-            } else {
-                TaskStatus::Ok
-            },
-            error: if plan.compile_error.is_some() {
-                None
-            } else {
-                error.clone()
-            },
-            hints: task.hints.clone(),
-            passed: 0,
-            failed: 0,
-            ignored: 0,
-            tests: Vec::new(),
-        })
-        .collect();
-    for (t, test) in plan.tests.into_iter().enumerate() {
-        let task = &mut tasks[test.task];
-        let report = match finished(t) {
-            None => ignored_test(test.name),
-            Some(run) => test_report(out, test, run, time_limit_s),
-        };
-        match report.status {
-            TestStatus::Passed => task.passed += 1,
-            TestStatus::Failed => task.failed += 1,
-            TestStatus::Ignored => task.ignored += 1,
-        }
-        task.tests.push(report);
-    }
-    for task in &mut tasks {
-        let counted = task.passed + task.failed;
-        if task.status == TaskStatus::Ok && counted == 0 {
-            task.status = TaskStatus::Error;
-            task.error = Some(format!("all {} tests are #[ignore]d", task.ignored));
-        }
-        if task.status == TaskStatus::Ok {
-            task.score = task.points * task.passed as f64 / counted as f64;
-            if task.failed > 0 {
-                task.status = TaskStatus::Fail;
-            }
-        }
-        task.score = report::round2(task.score);
-    }
-    TopicReport {
-        name: topic.name.clone(),
-        package: topic.package.clone(),
-        dir: topic.dir.clone(),
-        time_limit_s,
-        memory_limit_mib: topic.sheet.memory_limit_mib,
-        compile_error: plan.compile_error,
-        errors: plan.errors,
-        score: report::round2(tasks.iter().map(|t| t.score).sum()),
-        max_score: report::round2(tasks.iter().map(TaskReport::max_score).sum()),
-        tasks,
-    }
-}
-
-fn ignored_test(name: String) -> TestReport {
-    TestReport {
-        name,
-        status: TestStatus::Ignored,
-        reason: None,
-        panic_location: None,
-        minimal_input: None,
-        raster_diff: None,
-        snapshot_diff: None,
-        duration_s: 0.0,
-        exit: Exit::default(),
-        output: None,
-        log: None,
-        images_dir: None,
-        images: Vec::new(),
-    }
-}
-
-fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
-    let verdict = outcome::judge(&run.output, &run.exit, &run.token, time_limit_s);
-    let status = if verdict.passed {
-        TestStatus::Passed
-    } else {
-        TestStatus::Failed
-    };
-    // Never following a link, never without end: the folder is the test's.
-    let images = crate::sandbox::files_under(&test.images_dir);
-    let ran = !run.exit.not_run;
-    let relative = |path: PathBuf| {
-        path.strip_prefix(out)
-            .map(Path::to_path_buf)
-            .unwrap_or(path)
-    };
-    TestReport {
-        name: test.name,
-        status,
-        reason: verdict.reason,
-        panic_location: verdict.panic_location,
-        minimal_input: verdict.minimal_input,
-        raster_diff: verdict.raster_diff,
-        snapshot_diff: verdict.snapshot_diff,
-        duration_s: report::round2(run.duration.as_secs_f64()),
-        exit: run.exit,
-        output: (status == TestStatus::Failed).then(|| excerpt(&run.output)),
-        log: test
-            .command
-            .filter(|_| ran)
-            .map(|command| relative(command.log)),
-        images_dir: (!images.is_empty()).then(|| relative(test.images_dir)),
-        images,
-    }
-}
-
-/// The end of a long output, cut at a line start.
-fn excerpt(output: &str) -> String {
-    let output = output.trim();
-    if output.len() <= OUTPUT_EXCERPT_CHARS {
-        return output.to_owned();
-    }
-    let mut start = output.len() - OUTPUT_EXCERPT_CHARS;
-    while !output.is_char_boundary(start) {
-        start += 1;
-    }
-    let start = output[start..]
-        .find('\n')
-        .map_or(start, |nl| start + nl + 1);
-    format!("[... {} bytes cut ...]\n{}", start, &output[start..])
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn tests_are_graded_in_the_order_their_file_declares_them() {
-        let source = "#[testkit::test]\nfn zero_length_line() {}\n\nproptest! {\n    #[testkit::test]\n    fn a_random_property(x in 0..3) {}\n}\n\nmod more {\n    #[test]\n    fn backwards() {}\n}\n";
-        let mut tests: Vec<String> = [
-            "a_random_property",
-            "more::backwards",
-            "unknown",
-            "zero_length_line",
-        ]
-        .map(str::to_owned)
-        .to_vec();
-        in_declaration_order(&mut tests, source);
-        assert_eq!(
-            tests,
-            [
-                "zero_length_line",
-                "a_random_property",
-                "more::backwards",
-                "unknown"
-            ]
-        );
-    }
-
-    #[test]
-    fn test_paths_are_unique_per_task_and_nest_modules() {
-        assert_eq!(
-            test_path("dda", "octants::steep"),
-            Path::new("dda/octants/steep")
-        );
-        assert_eq!(test_path("wu", "steep"), Path::new("wu/steep"));
-    }
-
-    #[test]
-    fn excerpt_keeps_the_end_from_a_line_start() {
-        let long = format!("{}\nlast line", "x".repeat(OUTPUT_EXCERPT_CHARS));
-        let cut = excerpt(&long);
-        assert!(cut.starts_with("[... "), "{cut}");
-        assert!(cut.ends_with("\nlast line"), "{cut}");
-        assert_eq!(excerpt(" short \n"), "short");
-    }
 }

@@ -1,0 +1,120 @@
+//! The pool tests run in: `--jobs` workers, and across the submissions of
+//! a class graded side by side, one count of tests running at once
+//! ([`Permits`]).
+
+use std::collections::HashSet;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Duration;
+
+use anyhow::Result;
+use indicatif::{ProgressBar, ProgressStyle};
+
+use super::plan::Plan;
+use super::run::Finished;
+
+/// A counting semaphore: the tests that may run at once, shared by the
+/// submissions of a class graded side by side.
+#[derive(Debug)]
+pub struct Permits {
+    free: Mutex<usize>,
+    freed: std::sync::Condvar,
+}
+
+impl Permits {
+    /// `count` permits (at least one).
+    #[must_use]
+    pub fn new(count: usize) -> Self {
+        Self {
+            free: Mutex::new(count.max(1)),
+            freed: std::sync::Condvar::new(),
+        }
+    }
+
+    /// Waits for a permit, which is given back when the guard drops.
+    pub fn take(&self) -> PermitGuard<'_> {
+        let mut free = self.free.lock().expect("no permit holder panics");
+        while *free == 0 {
+            free = self.freed.wait(free).expect("no permit holder panics");
+        }
+        *free -= 1;
+        PermitGuard(self)
+    }
+}
+
+/// A permit of [`Permits`], held while a test runs.
+pub struct PermitGuard<'a>(&'a Permits);
+
+impl Drop for PermitGuard<'_> {
+    fn drop(&mut self) {
+        *self.0.free.lock().expect("no permit holder panics") += 1;
+        self.0.freed.notify_one();
+    }
+}
+
+/// Runs the given tests `threads` at a time (and, with `permits`, only
+/// while one is free), with a progress bar on stderr (hidden when stderr
+/// is not a terminal or `progress` is off).
+pub(super) fn run_all(
+    plans: &[Plan],
+    jobs: &[(usize, usize)],
+    threads: usize,
+    permits: Option<&Permits>,
+    progress: bool,
+) -> Result<Vec<Finished>> {
+    crate::sandbox::stop_all_on_interrupt();
+    let bar = if progress {
+        let bar = ProgressBar::new(jobs.len() as u64).with_style(
+            ProgressStyle::with_template(
+                "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
+            )
+            .expect("a valid progress template"),
+        );
+        bar.enable_steady_tick(Duration::from_millis(100));
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Result<Finished>>>> =
+        Mutex::new((0..jobs.len()).map(|_| None).collect());
+    // Fail fast: the tasks (plan, task) one of whose tests timed out; their
+    // tests not started yet are not run.
+    let timed_out: Mutex<HashSet<(usize, usize)>> = Mutex::default();
+    std::thread::scope(|scope| {
+        for _ in 0..threads.min(jobs.len()) {
+            scope.spawn(|| {
+                loop {
+                    let index = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(&(p, t)) = jobs.get(index) else {
+                        break;
+                    };
+                    let plan = &plans[p];
+                    let test = &plan.tests[t];
+                    bar.set_message(format!("{} {}", plan.topic.name, test.name));
+                    let command = test.command.as_ref().expect("only runnable tests are jobs");
+                    let key = (p, test.task);
+                    let skip = timed_out.lock().expect("no worker panics").contains(&key);
+                    let result = if skip {
+                        Ok(Finished::not_run())
+                    } else {
+                        let _permit = permits.map(Permits::take);
+                        command.run()
+                    };
+                    if result.as_ref().is_ok_and(|f| f.exit.timed_out) {
+                        timed_out.lock().expect("no worker panics").insert(key);
+                    }
+                    results.lock().expect("no worker panics")[index] = Some(result);
+                    bar.inc(1);
+                }
+            });
+        }
+    });
+    bar.finish_and_clear();
+    results
+        .into_inner()
+        .expect("no worker panics")
+        .into_iter()
+        .map(|result| result.expect("every job ran"))
+        .collect()
+}

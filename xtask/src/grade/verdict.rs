@@ -1,0 +1,173 @@
+//! From finished tests to the report of a topic: each test's verdict
+//! ([`super::outcome::judge`]), its pictures, and each task's points.
+
+use std::path::{Path, PathBuf};
+
+use super::outcome::{self, Exit};
+use super::plan::{Plan, PlannedTest};
+use super::report::{self, TaskReport, TaskStatus, TestReport, TestStatus, TopicReport};
+use super::run::Finished;
+
+/// The excerpt of a failed test's output kept in the report.
+const OUTPUT_EXCERPT_CHARS: usize = 4000;
+
+pub(super) fn topic_report(
+    out: &Path,
+    plan: Plan,
+    mut finished: impl FnMut(usize) -> Option<Finished>,
+) -> TopicReport {
+    let topic = &plan.topic;
+    let time_limit_s = topic.sheet.time_limit_s;
+    let mut tasks: Vec<TaskReport> = topic
+        .sheet
+        .tasks
+        .iter()
+        .zip(&plan.task_errors)
+        .map(|(task, error)| TaskReport {
+            id: task.id.clone(),
+            title: task.title.clone(),
+            points: task.points,
+            bonus: task.bonus,
+            score: 0.0,
+            status: if plan.compile_error.is_some() {
+                TaskStatus::CompileError
+            } else if error.is_some() {
+                TaskStatus::Error
+            } else {
+                TaskStatus::Ok
+            },
+            error: if plan.compile_error.is_some() {
+                None
+            } else {
+                error.clone()
+            },
+            hints: task.hints.clone(),
+            passed: 0,
+            failed: 0,
+            ignored: 0,
+            tests: Vec::new(),
+        })
+        .collect();
+    for (t, test) in plan.tests.into_iter().enumerate() {
+        let task = &mut tasks[test.task];
+        let report = match finished(t) {
+            None => ignored_test(test.name),
+            Some(run) => test_report(out, test, run, time_limit_s),
+        };
+        match report.status {
+            TestStatus::Passed => task.passed += 1,
+            TestStatus::Failed => task.failed += 1,
+            TestStatus::Ignored => task.ignored += 1,
+        }
+        task.tests.push(report);
+    }
+    for task in &mut tasks {
+        let counted = task.passed + task.failed;
+        if task.status == TaskStatus::Ok && counted == 0 {
+            task.status = TaskStatus::Error;
+            task.error = Some(format!("all {} tests are #[ignore]d", task.ignored));
+        }
+        if task.status == TaskStatus::Ok {
+            task.score = task.points * task.passed as f64 / counted as f64;
+            if task.failed > 0 {
+                task.status = TaskStatus::Fail;
+            }
+        }
+        task.score = report::round2(task.score);
+    }
+    TopicReport {
+        name: topic.name.clone(),
+        package: topic.package.clone(),
+        dir: topic.dir.clone(),
+        time_limit_s,
+        memory_limit_mib: topic.sheet.memory_limit_mib,
+        compile_error: plan.compile_error,
+        errors: plan.errors,
+        score: report::round2(tasks.iter().map(|t| t.score).sum()),
+        max_score: report::round2(tasks.iter().map(TaskReport::max_score).sum()),
+        tasks,
+    }
+}
+
+fn ignored_test(name: String) -> TestReport {
+    TestReport {
+        name,
+        status: TestStatus::Ignored,
+        reason: None,
+        panic_location: None,
+        minimal_input: None,
+        raster_diff: None,
+        snapshot_diff: None,
+        duration_s: 0.0,
+        exit: Exit::default(),
+        output: None,
+        log: None,
+        images_dir: None,
+        images: Vec::new(),
+    }
+}
+
+fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
+    let verdict = outcome::judge(&run.output, &run.exit, &run.token, time_limit_s);
+    let status = if verdict.passed {
+        TestStatus::Passed
+    } else {
+        TestStatus::Failed
+    };
+    // Never following a link, never without end: the folder is the test's.
+    let images = crate::sandbox::files_under(&test.images_dir);
+    let ran = !run.exit.not_run;
+    let relative = |path: PathBuf| {
+        path.strip_prefix(out)
+            .map(Path::to_path_buf)
+            .unwrap_or(path)
+    };
+    TestReport {
+        name: test.name,
+        status,
+        reason: verdict.reason,
+        panic_location: verdict.panic_location,
+        minimal_input: verdict.minimal_input,
+        raster_diff: verdict.raster_diff,
+        snapshot_diff: verdict.snapshot_diff,
+        duration_s: report::round2(run.duration.as_secs_f64()),
+        exit: run.exit,
+        output: (status == TestStatus::Failed).then(|| excerpt(&run.output)),
+        log: test
+            .command
+            .filter(|_| ran)
+            .map(|command| relative(command.log)),
+        images_dir: (!images.is_empty()).then(|| relative(test.images_dir)),
+        images,
+    }
+}
+
+/// The end of a long output, cut at a line start.
+fn excerpt(output: &str) -> String {
+    let output = output.trim();
+    if output.len() <= OUTPUT_EXCERPT_CHARS {
+        return output.to_owned();
+    }
+    let mut start = output.len() - OUTPUT_EXCERPT_CHARS;
+    while !output.is_char_boundary(start) {
+        start += 1;
+    }
+    let start = output[start..]
+        .find('\n')
+        .map_or(start, |nl| start + nl + 1);
+    format!("[... {} bytes cut ...]\n{}", start, &output[start..])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn excerpt_keeps_the_end_from_a_line_start() {
+        let long = format!("{}\nlast line", "x".repeat(OUTPUT_EXCERPT_CHARS));
+        let cut = excerpt(&long);
+        assert!(cut.starts_with("[... "), "{cut}");
+        assert!(cut.ends_with("\nlast line"), "{cut}");
+        assert_eq!(excerpt(" short \n"), "short");
+    }
+}
