@@ -156,6 +156,9 @@ fn test_env(root: &Path, topic: &Topic, images_dir: &Path) -> Vec<(OsString, OsS
         ("PROPTEST_DISABLE_FAILURE_PERSISTENCE".into(), "1".into()),
         // A GPU test without an adapter fails instead of skipping.
         (crate::setup::GPU_REQUIRED_VAR.into(), "1".into()),
+        // No "XDG_RUNTIME_DIR is invalid" from Mesa's device-select layer
+        // in every log (as `.cargo/config.toml` sets it for `cargo test`).
+        ("NODEVICE_SELECT".into(), "1".into()),
         // What `cargo test` sets for a test process.
         ("CARGO_MANIFEST_DIR".into(), topic.dir.clone().into()),
         ("CARGO_PKG_NAME".into(), topic.package.clone().into()),
