@@ -58,15 +58,21 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
             not_compiling.push(topic.to_owned());
         }
     }
-    eprintln!(
-        "building the viewer (with its window the first time takes minutes: egui and wgpu) …"
-    );
+    // `cargo xtask view --screenshot F -- --mesh m.ply` and `cargo xtask
+    // view -- --screenshot F --mesh m.ply` mean the same: the separator
+    // is cargo's habit, not an option of the viewer's.
+    let args: Vec<&String> = args.iter().filter(|a| *a != "--").collect();
     // A picture without a window needs no egui: a quick build.
-    if !args
+    let window = !args
         .iter()
-        .any(|a| a == "--screenshot" || a.starts_with("--screenshot="))
-    {
+        .any(|a| *a == "--screenshot" || a.starts_with("--screenshot="));
+    if window {
         features.push("window");
+        eprintln!(
+            "building the viewer with its window (the first time takes minutes: egui and wgpu) …"
+        );
+    } else {
+        eprintln!("building the viewer without its window (for the screenshot) …");
     }
     let mut build = staged.cargo();
     build.args(["build", "--package", VIEWER, "--no-default-features"]);
