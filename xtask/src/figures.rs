@@ -29,14 +29,38 @@ const PIPELINE: &str = "pipeline";
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Manifest {
+    seed: Vec<Seed>,
     figure: Vec<Figure>,
+}
+
+/// A document the course follows, as the index cites it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Seed {
+    /// Its number, as figures name it.
+    id: String,
+    /// Author, title, kind, institution, year.
+    citation: String,
+    /// Where it can be read, if it is public.
+    #[serde(default)]
+    link: Option<String>,
+}
+
+impl Seed {
+    /// The citation with its link, for the index.
+    fn cited(&self) -> String {
+        match &self.link {
+            Some(link) => format!("{} ({link})", self.citation),
+            None => self.citation.clone(),
+        }
+    }
 }
 
 /// One figure of a seed, as the course draws it.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Figure {
-    /// The seed document's number (`shared/seeds/NNN_…`).
+    /// The seed document's number (its `[[seed]]` entry cites it).
     seed: String,
     /// The seed's name for the figure (`Abb. 3`, `Slika 2.2`, a section).
     figure: String,
@@ -73,7 +97,7 @@ pub fn run(root: &Path, mine: bool, topics: &[String]) -> Result<()> {
             "this edition has no reference solutions: `cargo xtask figures --mine` draws the figures with your code"
         );
     }
-    let figures = manifest(root)?;
+    let (seeds, figures) = manifest(root)?;
     let selected = crate::topics::select(root, topics)?;
     let figures: Vec<Figure> = figures
         .into_iter()
@@ -113,9 +137,9 @@ pub fn run(root: &Path, mine: bool, topics: &[String]) -> Result<()> {
     } else {
         "the reference solutions"
     };
-    fs::write(out.join("index.md"), markdown(&drawn, source))
+    fs::write(out.join("index.md"), markdown(&drawn, &seeds, source))
         .with_context(|| format!("cannot write {}", out.join("index.md").display()))?;
-    fs::write(out.join("index.html"), html(&drawn, source))
+    fs::write(out.join("index.html"), html(&drawn, &seeds, source))
         .with_context(|| format!("cannot write {}", out.join("index.html").display()))?;
     let missing = drawn.iter().filter(|d| d.file.is_none()).count();
     println!(
@@ -132,9 +156,9 @@ pub fn run(root: &Path, mine: bool, topics: &[String]) -> Result<()> {
     Ok(())
 }
 
-/// The manifest, checked: every figure names a topic of the course, a
-/// `<task>/<test>` or `pipeline`, and a picture.
-fn manifest(root: &Path) -> Result<Vec<Figure>> {
+/// The manifest, checked: every figure names a cited seed, a topic of the
+/// course, a `<task>/<test>` or `pipeline`, and a picture.
+fn manifest(root: &Path) -> Result<(Vec<Seed>, Vec<Figure>)> {
     let path = root.join(MANIFEST);
     let text =
         fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
@@ -148,6 +172,14 @@ fn manifest(root: &Path) -> Result<Vec<Figure>> {
         .filter(|f| topics.iter().any(|t| t.name == f.topic))
         .collect();
     for figure in &mut figures {
+        if !manifest.seed.iter().any(|seed| seed.id == figure.seed) {
+            bail!(
+                "{}: {} of seed {} cites no `[[seed]]` of that id",
+                path.display(),
+                figure.figure,
+                figure.seed
+            );
+        }
         let topic = topics
             .iter()
             .find(|t| t.name == figure.topic)
@@ -166,7 +198,15 @@ fn manifest(root: &Path) -> Result<Vec<Figure>> {
             }
         }
     }
-    Ok(figures)
+    Ok((manifest.seed, figures))
+}
+
+/// The seeds the `drawn` figures come from, cited, in order.
+fn cited<'a>(drawn: &[Drawn], seeds: &'a [Seed]) -> Vec<&'a Seed> {
+    seeds
+        .iter()
+        .filter(|seed| drawn.iter().any(|d| d.figure.seed == seed.id))
+        .collect()
 }
 
 /// Copies `figure`'s picture from the grade in `graded` into `out`, or
@@ -295,11 +335,16 @@ fn command(figure: &Figure) -> String {
     }
 }
 
-fn markdown(drawn: &[Drawn], source: &str) -> String {
+fn markdown(drawn: &[Drawn], seeds: &[Seed], source: &str) -> String {
     let mut text = format!(
         "# The seeds' figures, drawn by {source}\n\n\
-         Made by `cargo xtask figures`; the seeds are in `shared/seeds/` (DESIGN.md maps them).\n\n\
-         | seed | figure | the course's picture | made by | file |\n|---|---|---|---|---|\n"
+         Made by `cargo xtask figures`. The seeds, the documents the course follows:\n\n"
+    );
+    for seed in cited(drawn, seeds) {
+        text.push_str(&format!("- {}: {}\n", seed.id, seed.cited()));
+    }
+    text.push_str(
+        "\n| seed | figure | the course's picture | made by | file |\n|---|---|---|---|---|\n",
     );
     for d in drawn {
         let f = &d.figure;
@@ -323,8 +368,12 @@ fn markdown(drawn: &[Drawn], source: &str) -> String {
     text
 }
 
-fn html(drawn: &[Drawn], source: &str) -> String {
+fn html(drawn: &[Drawn], seeds: &[Seed], source: &str) -> String {
     let escape = grade::export::xml_text;
+    let citations: String = cited(drawn, seeds)
+        .iter()
+        .map(|seed| format!("<li>{}: {}</li>", escape(&seed.id), escape(&seed.cited())))
+        .collect();
     let mut rows = String::new();
     for d in drawn {
         let f = &d.figure;
@@ -360,7 +409,8 @@ fn html(drawn: &[Drawn], source: &str) -> String {
          img{{width:320px;image-rendering:pixelated;background:#000}}.missing{{color:#b00}}\
          </style></head><body>\n<h1>The seeds' figures, drawn by {}</h1>\n\
          <p>Made by <code>cargo xtask figures</code>. Each picture is written by the test named \
-         beside it; click it for full size.</p>\n<table>\n\
+         beside it; click it for full size. The seeds, the documents the course follows:</p>\n\
+         <ul>{citations}</ul>\n<table>\n\
          <tr><th>seed</th><th>figure</th><th>the course's picture</th><th></th></tr>\n{rows}</table>\n\
          </body></html>\n",
         escape(source)
@@ -374,7 +424,14 @@ mod tests {
     #[test]
     fn every_figure_of_the_manifest_names_a_task_of_its_topic_and_a_test_that_draws_it() {
         let root = crate::cargo::project_root();
-        let figures = manifest(&root).unwrap();
+        let (seeds, figures) = manifest(&root).unwrap();
+        for seed in &seeds {
+            assert!(
+                !seed.citation.contains("shared/") && !seed.citation.contains("DESIGN"),
+                "seed {} is cited by a path no edition holds",
+                seed.id
+            );
+        }
         assert!(figures.len() >= 20, "{} figures", figures.len());
         for figure in figures.iter().filter(|f| f.test != PIPELINE) {
             let (task, test) = figure.test.split_once('/').unwrap();

@@ -3,7 +3,7 @@
 //! that holds no task) with the signature of a task's stub. `cargo xtask
 //! test` plants each one into the stub, as a call where the task's crate
 //! can reach it and as a copy of its file where not, and requires the task
-//! to score 0: given code never solves a task (DESIGN.md, property 9).
+//! to score 0: given code never solves a task.
 //!
 //! Two functions have the same signature when their generics, parameter
 //! types, return type and `where` clause agree with paths and spaces
