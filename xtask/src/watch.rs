@@ -79,7 +79,8 @@ fn has_todo(dir: &Path) -> bool {
     };
     entries.flatten().any(|entry| {
         let path = entry.path();
-        if path.is_dir() {
+        // A link is not followed: it could lead back up.
+        if entry.file_type().is_ok_and(|kind| kind.is_dir()) {
             has_todo(&path)
         } else {
             path.extension().is_some_and(|e| e == "rs")
