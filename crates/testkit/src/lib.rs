@@ -6,7 +6,8 @@
 //! - [`assert_raster_snapshot!`]: an `insta` snapshot of a canvas as ASCII
 //!   art, reviewed by tutors with `cargo insta review`;
 //! - [`image`]: compare a canvas with a reference PNG within a tolerance,
-//!   writing `yours.png`, `reference.png` and `difference.png`;
+//!   writing `yours.png`, `reference.png` and `difference.png` before the
+//!   test can fail ([`image::check_image`], its verdict asserted last);
 //! - [`strategies`]: proptest strategies for points, pixels, lines and
 //!   colours, including hostile values (NaN, infinities, 1e30);
 //! - [`pixels`]: collecting what a rasterizer plots, expected pixels as

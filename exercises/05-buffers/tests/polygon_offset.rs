@@ -451,6 +451,16 @@ fn decal_picture(offset: Option<PolygonOffset>) -> (Canvas, Vec<Pixel>) {
 #[testkit::test]
 fn a_coplanar_decal_fights_the_floor_without_an_offset() {
     let (canvas, covered) = decal_picture(None);
+    // The picture first, so that a failing check below still leaves it.
+    let picture = testkit::image::check_image(
+        "zfighting_decal_without_offset",
+        &canvas,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/zfighting_decal_without_offset.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
     let shown = covered
         .iter()
         .filter(|&&p| canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)))
@@ -461,15 +471,7 @@ fn a_coplanar_decal_fights_the_floor_without_an_offset() {
          (z-fighting); it shows at {shown} of {}",
         covered.len()
     );
-    testkit::image::assert_image_matches(
-        "zfighting_decal_without_offset",
-        &canvas,
-        concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/tests/images/zfighting_decal_without_offset.png"
-        ),
-        testkit::image::Tolerance::EXACT,
-    );
+    picture.assert_matches();
 }
 
 /// A negative offset brings the decal in front at every pixel; a positive
@@ -477,13 +479,8 @@ fn a_coplanar_decal_fights_the_floor_without_an_offset() {
 #[testkit::test]
 fn a_negative_offset_brings_the_whole_decal_in_front() {
     let (canvas, covered) = decal_picture(Some(PULL));
-    for &p in &covered {
-        assert!(
-            canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)),
-            "{p}: the decal pulled forward by factor −1, units −1 must show"
-        );
-    }
-    testkit::image::assert_image_matches(
+    // The picture first, so that a failing check below still leaves it.
+    let picture = testkit::image::check_image(
         "zfighting_decal_with_offset",
         &canvas,
         concat!(
@@ -492,6 +489,12 @@ fn a_negative_offset_brings_the_whole_decal_in_front() {
         ),
         testkit::image::Tolerance::EXACT,
     );
+    for &p in &covered {
+        assert!(
+            canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)),
+            "{p}: the decal pulled forward by factor −1, units −1 must show"
+        );
+    }
     let (pushed, covered) = decal_picture(Some(PolygonOffset::SLIDES));
     for &p in &covered {
         assert_eq!(
@@ -500,4 +503,5 @@ fn a_negative_offset_brings_the_whole_decal_in_front() {
             "{p}: the decal pushed back by the slides' offset must hide behind the floor"
         );
     }
+    picture.assert_matches();
 }

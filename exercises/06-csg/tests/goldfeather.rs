@@ -193,19 +193,14 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     let camera = example_camera();
     let model = dnf_model(&scene);
     let (frame, tests) = rendered(&model, camera);
-    assert_eq!(
-        tests, 20,
-        "one product of five literals: 5 · 4 parity tests"
-    );
     let truth = truth(&scene, camera);
-    assert_frames_equal(&frame, &truth, "the example");
-    let picture = csg::shade::side_by_side(&[
-        csg::shade::shade(&frame, scene.primitives()),
-        csg::shade::shade(&truth, scene.primitives()),
-    ]);
-    testkit::image::assert_image_matches(
+    // The picture first, so that a failing check below still leaves it.
+    let picture = testkit::image::check_image(
         "goldfeather_example",
-        &picture,
+        &csg::shade::side_by_side(&[
+            csg::shade::shade(&frame, scene.primitives()),
+            csg::shade::shade(&truth, scene.primitives()),
+        ]),
         concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/tests/images/goldfeather_example.png"
@@ -215,6 +210,12 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
             mismatched_fraction: 0.002,
         },
     );
+    assert_eq!(
+        tests, 20,
+        "one product of five literals: 5 · 4 parity tests"
+    );
+    assert_frames_equal(&frame, &truth, "the example");
+    picture.assert_matches();
 }
 
 /// The seed's Abbildung 9: what each literal's pass contributes. The
@@ -230,27 +231,13 @@ fn each_literal_merges_its_visible_fragments_into_the_frame() {
     let mut frame = Framebuffer::recording_merges(camera);
     render(&model, &mut frame);
     let merges = frame.merges();
-    assert_eq!(
-        merges.len(),
-        product.literals.len(),
-        "one second buffer per literal, merged with Framebuffer::merge_less after its \
-         parity tests (seed §4.4: \"copy remaining pixels using z-less to original frame \
-         buffer\")"
-    );
-    let mut panels = Vec::new();
-    for (a, (merge, literal)) in merges.iter().zip(&product.literals).enumerate() {
-        let (_, visible) = common::pass_fragments(&model, product, camera, |_| Some(a));
-        assert_frames_equal(
-            merge,
-            &visible,
-            &format!(
-                "the pass of literal {a} ({literal:?}): its entry face where it lies inside every \
-                 other literal"
-            ),
-        );
-        panels.push(csg::shade::shade(merge, scene.primitives()));
-    }
-    testkit::image::assert_image_matches(
+    // The picture of every pass first, so that a failing check below still
+    // leaves it.
+    let panels: Vec<_> = merges
+        .iter()
+        .map(|merge| csg::shade::shade(merge, scene.primitives()))
+        .collect();
+    let picture = testkit::image::check_image(
         "goldfeather_fragments",
         &csg::shade::side_by_side(&panels),
         concat!(
@@ -262,6 +249,25 @@ fn each_literal_merges_its_visible_fragments_into_the_frame() {
             mismatched_fraction: 0.002,
         },
     );
+    assert_eq!(
+        merges.len(),
+        product.literals.len(),
+        "one second buffer per literal, merged with Framebuffer::merge_less after its \
+         parity tests (seed §4.4: \"copy remaining pixels using z-less to original frame \
+         buffer\")"
+    );
+    for (a, (merge, literal)) in merges.iter().zip(&product.literals).enumerate() {
+        let (_, visible) = common::pass_fragments(&model, product, camera, |_| Some(a));
+        assert_frames_equal(
+            merge,
+            &visible,
+            &format!(
+                "the pass of literal {a} ({literal:?}): its entry face where it lies inside every \
+                 other literal"
+            ),
+        );
+    }
+    picture.assert_matches();
 }
 
 proptest! {

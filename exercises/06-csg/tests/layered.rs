@@ -64,6 +64,23 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
     let product = &model.products()[0];
     let mut buffer = Framebuffer::new(camera);
     let k = depth_complexity(&model, product, &mut buffer);
+    // The seed's Abbildung 10 ("Tiefenkomplexität"): each pixel's count as
+    // a grey level, 0 black and k white; first, so that a failing check
+    // below still leaves it.
+    let mut counts = canvas::Canvas::new(camera.width(), camera.height());
+    for p in camera.pixels() {
+        let count = f32::from(buffer.stencil(p).unwrap_or(0));
+        counts.set(p, canvas::Rgba::grey(count / f32::from(k.max(1))));
+    }
+    let picture = testkit::image::check_image(
+        "layered_depth_complexity",
+        &counts,
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/layered_depth_complexity.png"
+        ),
+        testkit::image::Tolerance::EXACT,
+    );
     assert_eq!(k, common::depth_complexity(&model, product, &camera));
     for p in camera.pixels() {
         let ray = camera.ray(p);
@@ -75,22 +92,7 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
         assert_eq!(buffer.stencil(p), Some(count as u8), "{p:?}");
         assert_eq!(buffer.surface(p), None, "colour writes are off");
     }
-    // The seed's Abbildung 10 ("Tiefenkomplexität"): each pixel's count as
-    // a grey level, 0 black and k white.
-    let mut picture = canvas::Canvas::new(camera.width(), camera.height());
-    for p in camera.pixels() {
-        let count = f32::from(buffer.stencil(p).unwrap_or(0));
-        picture.set(p, canvas::Rgba::grey(count / f32::from(k.max(1))));
-    }
-    testkit::image::assert_image_matches(
-        "layered_depth_complexity",
-        &picture,
-        concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/tests/images/layered_depth_complexity.png"
-        ),
-        testkit::image::Tolerance::EXACT,
-    );
+    picture.assert_matches();
 }
 
 #[testkit::test]
@@ -178,22 +180,14 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
     let model = dnf_model(&scene);
     let mut frame = Framebuffer::new(camera);
     let stats = render(&model, &mut frame);
-    let k = u64::from(common::depth_complexity(
-        &model,
-        &model.products()[0],
-        &camera,
-    ));
-    assert_eq!(stats.layers, k);
-    assert_eq!(stats.parity_tests, 5 * k);
     let truth = truth(&scene, camera);
-    assert_frames_equal(&frame, &truth, "the example");
-    let picture = csg::shade::side_by_side(&[
-        csg::shade::shade(&frame, scene.primitives()),
-        csg::shade::shade(&truth, scene.primitives()),
-    ]);
-    testkit::image::assert_image_matches(
+    // The picture first, so that a failing check below still leaves it.
+    let picture = testkit::image::check_image(
         "layered_example",
-        &picture,
+        &csg::shade::side_by_side(&[
+            csg::shade::shade(&frame, scene.primitives()),
+            csg::shade::shade(&truth, scene.primitives()),
+        ]),
         concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/tests/images/layered_example.png"
@@ -203,6 +197,15 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
             mismatched_fraction: 0.002,
         },
     );
+    let k = u64::from(common::depth_complexity(
+        &model,
+        &model.products()[0],
+        &camera,
+    ));
+    assert_eq!(stats.layers, k);
+    assert_eq!(stats.parity_tests, 5 * k);
+    assert_frames_equal(&frame, &truth, "the example");
+    picture.assert_matches();
 }
 
 /// The seed's Abbildungen 12 and 13: the layers extracted from the
@@ -219,38 +222,24 @@ fn each_layer_merges_its_visible_fragments_into_the_frame() {
     let mut frame = Framebuffer::recording_merges(camera);
     render(&model, &mut frame);
     let merges = frame.merges();
-    assert_eq!(
-        merges.len(),
-        k,
-        "one second buffer per layer (k = {k}), merged with Framebuffer::merge_less after its \
-         parity tests"
-    );
     let shade = |f: &Framebuffer| csg::shade::shade(f, scene.primitives());
-    let (mut layers, mut fragments) = (Vec::new(), Vec::new());
+    // Every layer by its definition and every merge of yours, pictured
+    // first, so that a failing check below still leaves the picture.
+    let (mut layers, mut fragments, mut visible) = (Vec::new(), Vec::new(), Vec::new());
     for (n, merge) in merges.iter().enumerate() {
-        let (layer, visible) = common::pass_fragments(&model, product, camera, |ray| {
+        let (layer, inside) = common::pass_fragments(&model, product, camera, |ray| {
             common::nth_literal_crossed(&model, product, ray, n)
         });
-        assert_frames_equal(
-            merge,
-            &visible,
-            &format!(
-                "layer {}: at each pixel the entry face drawn there as number {}, where it lies \
-                 inside every other literal",
-                n + 1,
-                n + 1
-            ),
-        );
         layers.push(shade(&layer));
         fragments.push(shade(merge));
+        visible.push(inside);
     }
-    let picture = common::rows(&[
-        csg::shade::side_by_side(&layers),
-        csg::shade::side_by_side(&fragments),
-    ]);
-    testkit::image::assert_image_matches(
+    let picture = testkit::image::check_image(
         "layered_layers",
-        &picture,
+        &common::rows(&[
+            csg::shade::side_by_side(&layers),
+            csg::shade::side_by_side(&fragments),
+        ]),
         concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/tests/images/layered_layers.png"
@@ -260,6 +249,25 @@ fn each_layer_merges_its_visible_fragments_into_the_frame() {
             mismatched_fraction: 0.002,
         },
     );
+    assert_eq!(
+        merges.len(),
+        k,
+        "one second buffer per layer (k = {k}), merged with Framebuffer::merge_less after its \
+         parity tests"
+    );
+    for (n, (merge, visible)) in merges.iter().zip(&visible).enumerate() {
+        assert_frames_equal(
+            merge,
+            visible,
+            &format!(
+                "layer {}: at each pixel the entry face drawn there as number {}, where it lies \
+                 inside every other literal",
+                n + 1,
+                n + 1
+            ),
+        );
+    }
+    picture.assert_matches();
 }
 
 #[testkit::test]

@@ -424,8 +424,8 @@ fn a_nurbs_torus_is_shaded_like_the_exact_torus() {
             cpu.set(p, colour);
         }
     }
-    common::assert_matches_cpu("render_nurbs_torus", &yours, &cpu, SHADING);
-
+    // The figure is written before the verdict, so that a wrong shading
+    // still shows beside its wireframe.
     let wireframe = draw(&wire_vertices, &wire_triangles, Some(&edges));
     let mut figure = Canvas::new(2 * TORUS_SIZE + 4, TORUS_SIZE);
     for (p, c) in yours.enumerate() {
@@ -441,4 +441,5 @@ fn a_nurbs_torus_is_shaded_like_the_exact_torus() {
                 .join("yours.png"),
         )
         .unwrap();
+    common::assert_matches_cpu("render_nurbs_torus", &yours, &cpu, SHADING);
 }

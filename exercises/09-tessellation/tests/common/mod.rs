@@ -161,10 +161,23 @@ pub fn max_deviation(mesh: &Mesh, surface: impl Fn(DVec2) -> DVec3) -> f64 {
 }
 
 /// Renders a mesh and compares it with `tests/images/<name>.png`.
+#[track_caller]
 pub fn assert_picture(name: &str, mesh: &Mesh, view: View, style: Style) {
+    check_picture(name, mesh, view, style).assert_matches();
+}
+
+/// Renders a mesh, writes its pictures and compares it with
+/// `tests/images/<name>.png`; the verdict waits for `assert_matches`, so
+/// that a test with several pictures writes them all before one fails.
+pub fn check_picture(
+    name: &str,
+    mesh: &Mesh,
+    view: View,
+    style: Style,
+) -> testkit::image::ImageCheck {
     let canvas = render(mesh, view, style, PICTURE_SIDE, PICTURE_SIDE);
     let reference = format!("{}/tests/images/{name}.png", env!("CARGO_MANIFEST_DIR"));
-    testkit::image::assert_image_matches(name, &canvas, reference, PICTURE_TOLERANCE);
+    testkit::image::check_image(name, &canvas, reference, PICTURE_TOLERANCE)
 }
 
 /// Side of the test pictures in pixels.
