@@ -21,6 +21,7 @@ mod test;
 mod topics;
 mod view;
 mod watch;
+mod wine;
 
 use std::path::PathBuf;
 use std::process::ExitCode;

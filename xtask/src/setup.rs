@@ -351,3 +351,26 @@ fn succeeds(command: &mut Command) -> bool {
         .status()
         .is_ok_and(|status| status.success())
 }
+
+/// Makes sure the standard library for `target` is installed, adding it
+/// with `rustup target add` when it is missing.
+pub fn rustup_target(target: &str) -> anyhow::Result<()> {
+    use anyhow::{Context, ensure};
+    let installed = Command::new("rustup")
+        .args(["target", "list", "--installed"])
+        .output()
+        .context("cannot run `rustup target list` (is rustup installed?)")?;
+    if String::from_utf8_lossy(&installed.stdout)
+        .lines()
+        .any(|line| line.trim() == target)
+    {
+        return Ok(());
+    }
+    println!("==> installing the Rust standard library for {target}: rustup target add {target}");
+    let status = Command::new("rustup")
+        .args(["target", "add", target])
+        .status()
+        .context("cannot run `rustup target add`")?;
+    ensure!(status.success(), "`rustup target add {target}` failed");
+    Ok(())
+}

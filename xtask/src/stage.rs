@@ -465,15 +465,17 @@ fn lock_stage(home: &Path) -> Result<File> {
 fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File) -> Result<Stage> {
     let stage_root = home.join("stage");
     claim(&stage_root)?;
-    // A lock file staged anew is trimmed to the stage's packages by cargo
-    // (no student file takes part in resolving them), so that the build,
-    // which cannot write the stage, finds it current. Sync keeps the one
-    // cargo wrote for a course that has none.
-    let planned_lock = files.iter().find(|(to, _)| to == Path::new(LOCK_FILE));
-    let relock = match planned_lock {
-        Some((_, source)) => fs::read(stage_root.join(LOCK_FILE)).ok() != Some(source.read()?),
-        None => false,
-    };
+    // When a manifest or the lock file changes, cargo trims the lock to
+    // the stage's packages here (no student file takes part in resolving
+    // them), so that the build, which cannot write the stage, finds it
+    // current. Sync keeps the one cargo wrote for a course that has none.
+    let mut relock = false;
+    for (to, source) in files {
+        let name = to.file_name().and_then(|n| n.to_str());
+        if matches!(name, Some("Cargo.toml" | LOCK_FILE)) {
+            relock |= fs::read(stage_root.join(to)).ok() != Some(source.read()?);
+        }
+    }
     sync(files, &stage_root)?;
     // A course without a lock file gets one here, where cargo may write.
     let relock = relock || !stage_root.join(LOCK_FILE).exists();
@@ -695,7 +697,9 @@ mod tests {
             .iter()
             .map(|(to, from)| {
                 let text = String::from_utf8(from.read().unwrap()).unwrap();
-                (to.display().to_string(), text)
+                // `/` between the parts on every system (Windows shows `\`).
+                let parts: Vec<_> = to.iter().map(|p| p.to_string_lossy()).collect();
+                (parts.join("/"), text)
             })
             .collect();
         assert_eq!(

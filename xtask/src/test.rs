@@ -1,5 +1,5 @@
 //! `cargo xtask test`: the project's own test command, proving what the
-//! course promises (DESIGN.md, property 2):
+//! course promises:
 //!
 //! 1. the student stubs are exactly what `reference/` generates;
 //! 2. every workspace test passes against the reference solutions;
@@ -15,14 +15,20 @@
 //!    copied algorithm in place of the one a task teaches) loses its
 //!    points;
 //! 9. no given function with a task's signature scores in that task's
-//!    place (DESIGN.md, property 9);
+//!    place;
 //! 10. the student edition that `cargo xtask release` writes builds on its
 //!     own: `cargo test` there fails only at `todo!()`, `cargo clippy
-//!     --all-targets` is clean, `cargo xtask grade` works.
+//!     --all-targets` is clean, `cargo xtask grade` works;
+//! 11. the Windows build of the grader's unit tests and of topic 01's tests
+//!     passes under Wine (see `wine`);
+//! 12. the workspace (the benchmarks aside) is clippy-clean for macOS and
+//!     Windows as well (`aarch64-apple-darwin`, `x86_64-pc-windows-gnu`),
+//!     which no machine of the project runs.
 //!
 //! Steps 2 to 10 build in the stage (see `stage`), one build cache for the
 //! reference, the stubs, the planted editions and the student edition:
 //! switching between them rebuilds only the crates whose files differ.
+//! Step 12 checks the stage for other systems in a build folder of its own.
 //!
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
@@ -100,6 +106,14 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
         (
             "the student edition builds, fails only at todo!(), grades, and its Classroom workflow lints",
             Box::new(|| student_edition(root)),
+        ),
+        (
+            "the Windows build of the grader's tests and of topic 01's runs under Wine",
+            Box::new(|| crate::wine::tests_under_wine(root)),
+        ),
+        (
+            "the workspace is clippy-clean for macOS and Windows",
+            Box::new(|| clippy_for_other_systems(root)),
         ),
     ];
     if let Some(unknown) = only.iter().find(|&&n| n == 0 || n > steps.len()) {
@@ -996,6 +1010,12 @@ fn student_edition(root: &Path) -> Result<String> {
         !release_dir.join("reference").exists() && !release_dir.join("xtask/bench").exists(),
         "the edition holds reference/ or the benchmarks"
     );
+    // Its text files stay LF in a Windows checkout too.
+    ensure!(
+        fs::read(release_dir.join(".gitattributes")).ok()
+            == fs::read(root.join(".gitattributes")).ok(),
+        "the edition does not hold the course's .gitattributes"
+    );
     // Built in the stage, where the stubs were just graded: only what the
     // edition changes is rebuilt.
     let staged = stage::stage_in(&home, &release_dir, Overlay::Own, None)?;
@@ -1220,6 +1240,76 @@ fn classroom_workflow(home: &Path, edition: &Path, results: &Path) -> Result<Str
     Ok(format!(
         "the Classroom workflow reports {tasks} tasks, {} of them written by the grade, {linted}",
         written.len()
+    ))
+}
+
+/// The systems students use besides Linux, with the target cargo checks
+/// for each: no machine of the project runs them.
+const OTHER_SYSTEMS: [(&str, &str); 2] = [
+    ("macOS", "aarch64-apple-darwin"),
+    ("Windows", "x86_64-pc-windows-gnu"),
+];
+
+/// `cargo clippy` over the workspace (the solutions staged, all targets)
+/// for macOS and Windows: the code behind `cfg(windows)` and `cfg(unix)`,
+/// wgpu's Metal and DX12 backends, eframe's and notify's platform code. A
+/// check links nothing, so no cross linker is needed; a target that is
+/// missing is installed with rustup. The benchmarks are left out: criterion
+/// compiles C (`alloca`) for the target, which needs a cross compiler, and
+/// students never build them. Built in a folder of its own, so that the
+/// host's build cache stays as it is.
+fn clippy_for_other_systems(root: &Path) -> Result<String> {
+    let mut list = std::process::Command::new("rustup");
+    list.args(["target", "list", "--installed"]);
+    // The toolchain that runs this (rustup's proxy names it), not the default.
+    let toolchain = std::env::var("RUSTUP_TOOLCHAIN").ok();
+    if let Some(toolchain) = &toolchain {
+        list.args(["--toolchain", toolchain]);
+    }
+    let output = list
+        .output()
+        .context("cannot run `rustup`: the targets of macOS and Windows come from rustup")?;
+    ensure!(
+        output.status.success(),
+        "`{}` failed: {}",
+        cargo::display(&list),
+        String::from_utf8_lossy(&output.stderr).trim()
+    );
+    let installed = String::from_utf8_lossy(&output.stdout).into_owned();
+    for (_, target) in OTHER_SYSTEMS {
+        if !installed.lines().any(|line| line.trim() == target) {
+            let mut add = std::process::Command::new("rustup");
+            add.args(["target", "add", target]);
+            if let Some(toolchain) = &toolchain {
+                add.args(["--toolchain", toolchain]);
+            }
+            cargo::run_visibly(&mut add)?;
+        }
+    }
+    let target_dir = stage::home(root).join("other-systems");
+    let staged = stage::stage(root, Overlay::Reference, Some(&target_dir))?;
+    for (_, target) in OTHER_SYSTEMS {
+        cargo::run_visibly(staged.cargo().args([
+            "clippy",
+            "--workspace",
+            "--all-targets",
+            "--all-features",
+            "--exclude",
+            BENCH_PACKAGE,
+            "--target",
+            target,
+            "--",
+            "-D",
+            "warnings",
+        ]))?;
+    }
+    let systems: Vec<String> = OTHER_SYSTEMS
+        .iter()
+        .map(|(system, target)| format!("{system} ({target})"))
+        .collect();
+    Ok(format!(
+        "no warnings in the solutions or the tooling for {}",
+        systems.join(" and ")
     ))
 }
 
