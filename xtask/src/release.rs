@@ -34,8 +34,11 @@ use crate::topics::{self, Topic};
 
 /// Paths (relative to the course root) that only the course's authors
 /// need: never released.
-const COURSE_ONLY: [&str; 5] = [
+const COURSE_ONLY: [&str; 6] = [
     ".ci",
+    // The course's own workflows (the hosted macOS and Windows runs); an
+    // edition gets its Classroom workflow from `--classroom`.
+    ".github",
     "BENCHMARKS.md",
     "xtask/bench",
     "xtask/tests",

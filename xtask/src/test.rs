@@ -115,6 +115,10 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
             "the workspace is clippy-clean for macOS and Windows",
             Box::new(|| clippy_for_other_systems(root)),
         ),
+        (
+            "the course's workflow for the hosted macOS and Windows runners lints",
+            Box::new(|| platforms_workflow(root)),
+        ),
     ];
     if let Some(unknown) = only.iter().find(|&&n| n == 0 || n > steps.len()) {
         bail!(
@@ -1185,6 +1189,34 @@ fn report_in_chromium(root: &Path, out: &Path, report: &Report) -> Result<String
         "report.html in Chromium: a summary of {} topics, {boxes} comparisons shown magnified (screenshot {})",
         report.topics.len(),
         screenshot.display()
+    ))
+}
+
+/// The course's workflow that grades the solutions and draws the viewer's
+/// picture on GitHub's hosted macOS and Windows runners (course only).
+const PLATFORMS_WORKFLOW: &str = ".github/workflows/platforms.yml";
+
+/// Checks [`PLATFORMS_WORKFLOW`] with actionlint, and that it runs on both
+/// systems the project has no machine of.
+fn platforms_workflow(root: &Path) -> Result<String> {
+    let file = root.join(PLATFORMS_WORKFLOW);
+    let text = fs::read_to_string(&file)
+        .with_context(|| format!("the course has no {PLATFORMS_WORKFLOW}"))?;
+    for runner in ["macos-latest", "windows-latest"] {
+        ensure!(
+            text.contains(runner),
+            "{PLATFORMS_WORKFLOW} does not run on {runner}"
+        );
+    }
+    let findings = setup::actionlint(&stage::home(root).join("tools"), &file)
+        .context("cannot lint the hosted-runner workflow")?;
+    ensure!(
+        findings.is_empty(),
+        "actionlint finds fault with {PLATFORMS_WORKFLOW}:\n{}",
+        findings.join("\n")
+    );
+    Ok(format!(
+        "{PLATFORMS_WORKFLOW}: macOS and Windows, actionlint finds nothing"
     ))
 }
 
