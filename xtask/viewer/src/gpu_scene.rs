@@ -9,7 +9,8 @@
 //!       your trimming.wgsl, your wireframe_edges──▶ picture
 //! ```
 //!
-//! Where there is no GPU, wgpu runs on lavapipe (Mesa's software Vulkan).
+//! Where there is no GPU, wgpu runs on a software adapter: lavapipe (Mesa's
+//! software Vulkan) on Linux, WARP (software DX12) on Windows.
 //! A piece not written yet is named; the shading and the trimming have
 //! given stand-ins (flat colour, nothing trimmed), the other stages do not:
 //! without them nothing is drawn.

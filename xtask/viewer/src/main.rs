@@ -103,7 +103,8 @@ struct Args {
     #[arg(long, conflicts_with = "gpu")]
     tessellation: bool,
     /// Open the window on the GPU scene (patches tessellated and drawn on
-    /// the GPU by your topic 10 passes; lavapipe where there is no GPU).
+    /// the GPU by your topic 10 passes; a software adapter where there is no
+    /// GPU: lavapipe on Linux, WARP on Windows).
     #[arg(long)]
     gpu: bool,
     /// The surface scene's first trim.
