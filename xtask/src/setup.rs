@@ -352,14 +352,28 @@ fn succeeds(command: &mut Command) -> bool {
         .is_ok_and(|status| status.success())
 }
 
-/// Makes sure the standard library for `target` is installed, adding it
-/// with `rustup target add` when it is missing.
+/// Makes sure the standard library for `target` is installed for the
+/// toolchain that runs this (rustup's proxy names it; not the default),
+/// adding it with `rustup target add` when it is missing.
 pub fn rustup_target(target: &str) -> anyhow::Result<()> {
     use anyhow::{Context, ensure};
-    let installed = Command::new("rustup")
-        .args(["target", "list", "--installed"])
+    let toolchain = std::env::var("RUSTUP_TOOLCHAIN").ok();
+    let rustup = |args: &[&str]| {
+        let mut command = Command::new("rustup");
+        command.args(args);
+        if let Some(toolchain) = &toolchain {
+            command.args(["--toolchain", toolchain]);
+        }
+        command
+    };
+    let installed = rustup(&["target", "list", "--installed"])
         .output()
-        .context("cannot run `rustup target list` (is rustup installed?)")?;
+        .context("cannot run `rustup`: the targets of other systems come from rustup")?;
+    ensure!(
+        installed.status.success(),
+        "`rustup target list` failed: {}",
+        String::from_utf8_lossy(&installed.stderr).trim()
+    );
     if String::from_utf8_lossy(&installed.stdout)
         .lines()
         .any(|line| line.trim() == target)
@@ -367,8 +381,7 @@ pub fn rustup_target(target: &str) -> anyhow::Result<()> {
         return Ok(());
     }
     println!("==> installing the Rust standard library for {target}: rustup target add {target}");
-    let status = Command::new("rustup")
-        .args(["target", "add", target])
+    let status = rustup(&["target", "add", target])
         .status()
         .context("cannot run `rustup target add`")?;
     ensure!(status.success(), "`rustup target add {target}` failed");

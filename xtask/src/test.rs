@@ -1288,38 +1288,15 @@ const OTHER_SYSTEMS: [(&str, &str); 2] = [
 /// check links nothing, so no cross linker is needed; a target that is
 /// missing is installed with rustup. The benchmarks are left out: criterion
 /// compiles C (`alloca`) for the target, which needs a cross compiler, and
-/// students never build them. Built in a folder of its own, so that the
-/// host's build cache stays as it is.
+/// students never build them. The other targets' artifacts lie in their
+/// own folders of the stage's cache.
 fn clippy_for_other_systems(root: &Path) -> Result<String> {
-    let mut list = std::process::Command::new("rustup");
-    list.args(["target", "list", "--installed"]);
-    // The toolchain that runs this (rustup's proxy names it), not the default.
-    let toolchain = std::env::var("RUSTUP_TOOLCHAIN").ok();
-    if let Some(toolchain) = &toolchain {
-        list.args(["--toolchain", toolchain]);
-    }
-    let output = list
-        .output()
-        .context("cannot run `rustup`: the targets of macOS and Windows come from rustup")?;
-    ensure!(
-        output.status.success(),
-        "`{}` failed: {}",
-        cargo::display(&list),
-        String::from_utf8_lossy(&output.stderr).trim()
-    );
-    let installed = String::from_utf8_lossy(&output.stdout).into_owned();
     for (_, target) in OTHER_SYSTEMS {
-        if !installed.lines().any(|line| line.trim() == target) {
-            let mut add = std::process::Command::new("rustup");
-            add.args(["target", "add", target]);
-            if let Some(toolchain) = &toolchain {
-                add.args(["--toolchain", toolchain]);
-            }
-            cargo::run_visibly(&mut add)?;
-        }
+        setup::rustup_target(target)?;
     }
-    let target_dir = stage::home(root).join("other-systems");
-    let staged = stage::stage(root, Overlay::Reference, Some(&target_dir))?;
+    // In the stage's own cache: the host's build scripts and procedural
+    // macros, built by the steps before, serve the other targets too.
+    let staged = stage::stage(root, Overlay::Reference, None)?;
     for (_, target) in OTHER_SYSTEMS {
         cargo::run_visibly(staged.cargo().args([
             "clippy",

@@ -51,7 +51,9 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
         PACKAGES.join(" ")
     );
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    let target_dir = stage::home(root).join("windows");
+    // The stage's own cache: its host artifacts serve, the Windows ones lie
+    // in a folder of their own.
+    let target_dir = staged.target_dir.clone();
     let mut executables = Vec::new();
     for (package, kind) in PACKAGES_TESTED {
         let mut build = staged.cargo();
