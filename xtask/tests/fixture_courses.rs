@@ -17,7 +17,9 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
 
-use common::{copy_dir, fixture, grade, read_json, reason, stdout, task, topic, xtask};
+use common::{
+    copy_dir, fixture, grade, grade_submission, read_json, reason, stdout, task, topic, xtask,
+};
 use serde_json::Value;
 
 /// The hostile fixture's per-test time limit (its task sheet says so).
@@ -475,20 +477,29 @@ fn marker_errors_are_reported_with_file_and_line() {
 #[test]
 fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
     let root = fixture("tiny", "test");
-    let output = xtask(&root, &["test"]);
+    // The steps every course has; those after them are about the course's
+    // own tooling on other systems (the Windows build of `xtask`, the
+    // hosted-runner workflow), which the fixture has none of.
+    let course_steps: Vec<String> = (1..=10).map(|n| n.to_string()).collect();
+    let mut test_args = vec!["test"];
+    for step in &course_steps {
+        test_args.extend(["--step", step.as_str()]);
+    }
+    let output = xtask(&root, &test_args);
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     for heading in [
-        "==> [1/10]",
-        "==> [2/10]",
-        "==> [3/10] reference solutions are clippy-clean",
-        "==> [4/10]",
-        "==> [5/10]",
-        "==> [6/10] the stubs are clippy-clean",
-        "==> [7/10] a do-nothing edition scores 0 on every task",
-        "==> [8/10] planted shortcuts lose their points",
-        "==> [9/10] given code stands in for no task",
-        "==> [10/10] the student edition",
+        "==> [1/",
+        "==> [2/",
+        "] reference solutions are clippy-clean",
+        "==> [4/",
+        "==> [5/",
+        "] the stubs are clippy-clean",
+        "] a do-nothing edition scores 0 on every task",
+        "] planted shortcuts lose their points",
+        "] given code stands in for no task",
+        "==> [10/",
+        "] the student edition",
         "==> summary",
         "all 10 steps passed",
     ] {
@@ -514,7 +525,7 @@ fn test_command_passes_on_a_correct_course_and_fails_when_a_stub_scores() {
         text.replace("todo!(\"negate: return minus x\")", "-x"),
     )
     .unwrap();
-    let output = xtask(&root, &["test"]);
+    let output = xtask(&root, &test_args);
     let text = stdout(&output);
     assert!(!output.status.success(), "{text}");
     assert!(
@@ -642,18 +653,7 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     )
     .unwrap();
     let out = official.join("target/class");
-    let output = xtask(
-        &official,
-        &[
-            "grade",
-            "--submission",
-            class.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--jobs",
-            "2",
-        ],
-    );
+    let output = grade_submission(&official, &class, &out, &["--jobs", "2"]);
     assert!(output.status.success(), "{output:?}");
     assert!(stdout(&output).contains("flagged (grading files changed): anna"));
 
@@ -870,15 +870,11 @@ fn the_classroom_workflow_reports_each_task_with_its_partial_score() {
     fs::write(tiny.join("tests/negate.rs"), "#[test]\nfn negates() {}\n").unwrap();
     // The workflow's grading step (here with this xtask), then its task
     // steps as written, each appending to the step's output file.
-    let graded = xtask(
+    let graded = grade_submission(
         &job.join("course"),
-        &[
-            "grade",
-            "--submission",
-            job.join("submission").to_str().unwrap(),
-            "--out",
-            job.join("grade").to_str().unwrap(),
-        ],
+        &job.join("submission"),
+        &job.join("grade"),
+        &[],
     );
     assert!(graded.status.success());
     let mut results = Vec::new();
@@ -1139,18 +1135,7 @@ fn a_generated_class_is_graded_two_at_a_time_as_each_member_earns() {
         "{output:?}"
     );
     let out = official.join("target/generated-class");
-    let output = xtask(
-        &official,
-        &[
-            "grade",
-            "--submission",
-            class.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--jobs",
-            "2",
-        ],
-    );
+    let output = grade_submission(&official, &class, &out, &["--jobs", "2"]);
     assert!(output.status.success(), "{output:?}");
     // The tiny course's one task file holds both tasks and it has no
     // planted mistakes: the faulty member hands in that file unsolved, the
@@ -1231,16 +1216,7 @@ fn a_crlf_checkout_grades_like_an_lf_one() {
     }
     assert!(converted >= 6, "only {converted} files converted");
     let out = official.join("target/crlf-class");
-    let output = xtask(
-        &official,
-        &[
-            "grade",
-            "--submission",
-            class.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ],
-    );
+    let output = grade_submission(&official, &class, &out, &[]);
     assert!(output.status.success(), "{output:?}");
     assert_eq!(
         fs::read_to_string(out.join("gradebook.csv")).unwrap(),

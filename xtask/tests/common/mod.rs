@@ -77,6 +77,20 @@ pub fn xtask(root: &Path, args: &[&str]) -> Output {
     output
 }
 
+/// Grades `submission` (a checkout, or a folder of them) against the
+/// course at `official` into `out`, with `extra` options.
+pub fn grade_submission(official: &Path, submission: &Path, out: &Path, extra: &[&str]) -> Output {
+    let mut args = vec![
+        "grade",
+        "--submission",
+        submission.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    xtask(official, &args)
+}
+
 pub fn stdout(output: &Output) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
 }
