@@ -28,7 +28,7 @@
 //! Steps 2 to 10 build in the stage (see `stage`), one build cache for the
 //! reference, the stubs, the planted editions and the student edition:
 //! switching between them rebuilds only the crates whose files differ.
-//! Step 12 checks the stage for other systems in a build folder of its own.
+//! Step 12 checks the stage for the other systems in the same build cache.
 //!
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
