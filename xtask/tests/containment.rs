@@ -86,6 +86,20 @@ mod linux {
     print(read, trace)
     "#;
 
+    /// `text` without the indentation its lines share (the script sits in
+    /// an indented module, and Python reads indentation).
+    fn dedent(text: &str) -> String {
+        let indent = text
+            .lines()
+            .filter(|l| !l.trim().is_empty())
+            .map(|l| l.len() - l.trim_start().len())
+            .min()
+            .unwrap_or(0);
+        text.lines()
+            .map(|l| l.get(indent..).unwrap_or("").to_owned() + "\n")
+            .collect()
+    }
+
     /// The members of the class: the name, and `ops.rs`, or what to do to
     /// the checkout.
     fn write_class(official: &Path, class: &Path) {
@@ -173,7 +187,7 @@ mod linux {
              let errnos = String::from_utf8_lossy(&out.stdout).trim().to_owned();\n\
              assert!(errnos != \"1 1\", \"denied: {{errnos}}\");\n\
              assert!(!errnos.is_empty(), \"python3 failed: {{}}\", String::from_utf8_lossy(&out.stderr));",
-            script = READS_PARENT
+            script = dedent(READS_PARENT)
         );
         member(
             official,
