@@ -61,6 +61,9 @@ use crate::grade::report::Exit;
 
 /// How often a running job is checked on.
 const POLL_INTERVAL: Duration = Duration::from_millis(10);
+/// The signal that ends a process writing a file past `ulimit -f`
+/// (Linux's and macOS's number).
+const SIGXFSZ: i32 = 25;
 /// How often the bytes in a job's writable folders are counted.
 const WRITTEN_INTERVAL: Duration = Duration::from_millis(250);
 /// Shells and bwrap report death by signal `n` as exit code `128 + n`.
@@ -502,6 +505,11 @@ impl Jail {
             // bwrap reports a process killed by signal n as exit code 128 + n.
             exit.code = None;
             exit.signal = Some(code - SIGNAL_EXIT_BASE);
+        }
+        // A file past the size limit (`ulimit -f`) ends its writer with
+        // SIGXFSZ before the count of the written bytes sees it.
+        if exit.signal == Some(SIGXFSZ) && job.limits.written_mib > 0 {
+            exit.written_limit = Some(job.limits.written_mib);
         }
         Ok(Ended { exit, duration })
     }

@@ -77,6 +77,37 @@ impl Exit {
             || self.memory_limit.is_some()
             || self.written_limit.is_some()
     }
+
+    /// Why a limit of the grader's stopped it (or did not run it), in
+    /// words; `None` when none did. `time_limit_s`: the time limit it ran
+    /// under.
+    #[must_use]
+    pub fn stop_reason(&self, time_limit_s: f64) -> Option<String> {
+        Some(if self.not_run {
+            format!(
+                "not run: an earlier test of this task timed out after {} s",
+                seconds(time_limit_s)
+            )
+        } else if self.timed_out {
+            format!(
+                "timed out after {} s (infinite loop?)",
+                seconds(time_limit_s)
+            )
+        } else if let Some(limit) = self.output_limit {
+            format!(
+                "printed more than {} MiB of output (endless printing?)",
+                limit >> 20
+            )
+        } else if let Some(limit) = self.written_limit {
+            format!("wrote more than {limit} MiB of files (or too many files), and was stopped")
+        } else if let Some(limit) = self.memory_limit {
+            format!(
+                "out of memory: its processes together used more than {limit} MiB, and the system stopped them"
+            )
+        } else {
+            return None;
+        })
+    }
 }
 
 /// The verdict on one test run.
@@ -216,27 +247,8 @@ pub fn judge(output: &str, exit: &Exit, token: &str, time_limit_s: f64) -> Verdi
             verdict.snapshot_diff = snapshot.diff;
         }
     }
-    let reason = if exit.not_run {
-        format!(
-            "not run: an earlier test of this task timed out after {} s",
-            seconds(time_limit_s)
-        )
-    } else if exit.timed_out {
-        format!(
-            "timed out after {} s (infinite loop?)",
-            seconds(time_limit_s)
-        )
-    } else if let Some(limit) = exit.output_limit {
-        format!(
-            "printed more than {} MiB of output (endless printing?)",
-            limit >> 20
-        )
-    } else if let Some(limit) = exit.written_limit {
-        format!("wrote more than {limit} MiB of files (or too many files), and was stopped")
-    } else if let Some(limit) = exit.memory_limit {
-        format!(
-            "out of memory: its processes together used more than {limit} MiB, and the system stopped them"
-        )
+    let reason = if let Some(reason) = exit.stop_reason(time_limit_s) {
+        reason
     } else if output.contains("has overflowed its stack") {
         "stack overflow".to_owned()
     } else if output.contains("memory allocation of") {

@@ -245,9 +245,10 @@ fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
 }
 
 /// Runs the viewer for one picture as a job of the runner, within the
-/// time limit.
+/// time limit. The viewer writes into a scratch folder of its own (emptied
+/// after it), never into the report: the picture is copied out as a plain
+/// file of bounded size.
 fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePicture {
-    let picture = dir.join(scene.file);
     let mut result = PipelinePicture {
         what: scene.what.to_owned(),
         yours: None,
@@ -256,11 +257,13 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         error: None,
     };
     let logs = plan.out.join("scratch").join("pipeline");
+    let scratch = logs.join(scene.file).with_extension("tmp");
+    let _ = fs::remove_dir_all(&scratch);
     let stdout = logs.join(scene.file).with_extension("out");
     let stderr = logs.join(scene.file).with_extension("err");
     let mut args: Vec<OsString> = scene.args.iter().map(OsString::from).collect();
     args.extend(["--size", SIZE, "--time-limit", "25", "--screenshot"].map(OsString::from));
-    args.push(picture.clone().into());
+    args.push(scratch.join(scene.file).into());
     let job = Job {
         purpose: Purpose::Run,
         program: binary.to_path_buf(),
@@ -268,10 +271,7 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         cwd: plan.root.to_path_buf(),
         course: plan.root.to_path_buf(),
         read_only: vec![binary.to_path_buf()],
-        writable: vec![
-            logs.join(scene.file).with_extension("tmp"),
-            dir.to_path_buf(),
-        ],
+        writable: vec![scratch.clone()],
         emptied: Vec::new(),
         env: Vec::new(),
         gpu: false,
@@ -279,7 +279,10 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         stdout: stdout.clone(),
         stderr: Some(stderr.clone()),
     };
-    let ended = match Jail::get().run(&job) {
+    let ended = Jail::get().run(&job);
+    let picture = crate::stage::read_plain(&scratch, Path::new(scene.file));
+    let _ = fs::remove_dir_all(&scratch);
+    let ended = match ended {
         Ok(ended) => ended,
         Err(error) => {
             result.error = Some(format!("{error:#}"));
@@ -301,20 +304,28 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         .filter(|line| is_stage_line(line))
         .map(str::to_owned)
         .collect();
-    if ended.success() && picture.is_file() {
+    let copied = match picture {
+        Some(bytes) if ended.success() => fs::write(dir.join(scene.file), bytes).is_ok(),
+        _ => false,
+    };
+    if copied {
         result.yours = Some(Path::new("pipeline").join(scene.file));
     } else {
         let stderr = tail(&stderr);
         result.error = Some(
-            stderr
-                .lines()
-                .find(|l| l.starts_with("Error") || l.starts_with("error"))
-                .map(str::to_owned)
+            ended
+                .exit
+                .stop_reason(TIME_LIMIT.as_secs_f64())
                 .or_else(|| {
-                    ended
-                        .exit
-                        .stopped()
-                        .then(|| format!("stopped: {:?}", ended.exit))
+                    stderr
+                        .lines()
+                        .find(|l| l.starts_with("Error") || l.starts_with("error"))
+                        .map(str::to_owned)
+                })
+                .or_else(|| {
+                    stderr
+                        .contains("memory allocation of")
+                        .then(|| "out of memory (an allocation failed)".to_owned())
                 })
                 .unwrap_or_else(|| "the viewer drew no picture".to_owned()),
         );
