@@ -8,7 +8,7 @@
 //! | kind | what it holds | what grading it must say |
 //! |---|---|---|
 //! | `correct` | every solution | full points |
-//! | `faulty` | every solution, one with a planted mistake (`xtask/tests/shortcuts.toml`) | that task loses points |
+//! | `faulty` | every solution, one with a planted mistake (`xtask/tests/shortcuts/`) | that task loses points |
 //! | `partial` | the solutions of every other topic, the stubs elsewhere | those topics' points |
 //! | `tampered` | the stubs, and a test rewritten to pass | flagged, graded on the official test |
 //! | `broken` | every solution, one with a syntax error | that topic does not compile |

@@ -11,7 +11,7 @@
 //! 6. the stubs are clippy-clean;
 //! 7. a do-nothing edition (each `todo!()` replaced by the cheapest body
 //!    that compiles) scores 0 on every task;
-//! 8. each planted shortcut (`xtask/tests/shortcuts.toml`: a simpler or
+//! 8. each planted shortcut (`xtask/tests/shortcuts/`: a simpler or
 //!    copied algorithm in place of the one a task teaches) loses its
 //!    points;
 //! 9. no given function with a task's signature scores in that task's
@@ -45,9 +45,10 @@ use crate::grade::{self, GradeOptions, Report, TaskStatus, TestStatus};
 use crate::stage::{self, DoNothingKeep, Overlay};
 use crate::{classroom, release, setup, stubs, topics};
 
-/// The shortcuts planted into the solutions, each of which must lose its
-/// points (see [`shortcuts_lose_their_points`]).
-const SHORTCUTS: &str = "xtask/tests/shortcuts.toml";
+/// The shortcuts planted into the solutions, one file a topic
+/// (`NN-topic.toml`), each of which must lose its points (see
+/// [`shortcuts_lose_their_points`]).
+const SHORTCUTS: &str = "xtask/tests/shortcuts";
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 const BENCH_PACKAGE: &str = "course-bench";
@@ -576,21 +577,34 @@ impl Shortcut {
     }
 }
 
-/// The shortcuts of [`SHORTCUTS`] (none where the course has no such file).
+/// The shortcuts of [`SHORTCUTS`], file by file in the order of their
+/// names (none where the course has no such folder).
 pub(crate) fn shortcuts(root: &Path) -> Result<Vec<Shortcut>> {
-    let path = root.join(SHORTCUTS);
-    let Ok(text) = fs::read_to_string(&path) else {
+    let dir = root.join(SHORTCUTS);
+    let Ok(entries) = fs::read_dir(&dir) else {
         return Ok(Vec::new());
     };
-    let shortcuts: Shortcuts =
-        toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
-    Ok(shortcuts.shortcut)
+    let mut files: Vec<PathBuf> = entries
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    let mut all = Vec::new();
+    for path in files {
+        let text =
+            fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+        let shortcuts: Shortcuts =
+            toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+        all.extend(shortcuts.shortcut);
+    }
+    Ok(all)
 }
 
 /// Each shortcut of [`SHORTCUTS`] planted into its topic's solutions loses
 /// what it must: all points of its task, or the tests named.
 fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
-    if !root.join(SHORTCUTS).is_file() {
+    if !root.join(SHORTCUTS).is_dir() {
         return Ok(format!(
             "no shortcuts to plant ({SHORTCUTS} does not exist)"
         ));
@@ -1389,6 +1403,30 @@ pub fn b<T>() -> u32 {
                 .is_err()
         );
         assert!(shortcut(Some("c"), Some("0"), &[]).plant(source).is_err());
+    }
+
+    #[test]
+    fn the_courses_shortcuts_are_read_and_each_file_holds_its_topics() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let shortcuts = shortcuts(&root).unwrap();
+        assert!(shortcuts.len() >= 29, "{} shortcuts", shortcuts.len());
+        for entry in fs::read_dir(root.join(SHORTCUTS)).unwrap().flatten() {
+            let path = entry.path();
+            let Some(topic) = path
+                .file_stem()
+                .filter(|_| path.extension().is_some_and(|e| e == "toml"))
+            else {
+                continue;
+            };
+            let text = fs::read_to_string(&path).unwrap();
+            let file: Shortcuts = toml::from_str(&text).unwrap();
+            assert!(!file.shortcut.is_empty(), "{}", path.display());
+            assert!(
+                file.shortcut.iter().all(|s| *s.topic == *topic),
+                "{} holds another topic's shortcut",
+                path.display()
+            );
+        }
     }
 
     #[test]
