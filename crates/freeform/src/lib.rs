@@ -8,6 +8,9 @@
 //! - [`RationalPatch`]: a Bézier patch with weights, the piece a NURBS
 //!   surface splits into, with [`RationalPatch::torus`] as 16 of them
 //!   (topic 09 tessellates rational patches too).
+//! - [`NurbsSurfaceData`]: NURBS surfaces as data (a torus, and a vase
+//!   whose interior knots are single), where the chain of topics 08 → 09
+//!   → 10 starts: topic 08 splits them into [`RationalPatch`]es.
 //! - [`BezierTriangle`]: the cubic Bézier triangle's ten control points,
 //!   named by their exponents and stored in one order (topic 09's PN
 //!   triangles, topic 10's GPU buffer).
@@ -21,12 +24,14 @@
 #![warn(missing_docs)]
 
 pub mod domain;
+pub mod nurbs;
 pub mod patch;
 pub mod rational;
 pub mod stitch;
 pub mod triangle;
 
 pub use domain::{QuadDomain, TriangleDomain, embed};
+pub use nurbs::NurbsSurfaceData;
 pub use patch::{BezierPatch, PatchError};
 pub use rational::RationalPatch;
 pub use stitch::stitch;

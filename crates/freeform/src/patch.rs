@@ -65,6 +65,18 @@ pub enum PatchError {
         /// Its index in the row-by-row order.
         index: usize,
     },
+    /// Degree elevation asked to lower a degree.
+    #[error("a patch of degree {degree_u} × {degree_v} cannot be elevated to {to_u} × {to_v}")]
+    Lower {
+        /// Degree in u.
+        degree_u: usize,
+        /// Degree in v.
+        degree_v: usize,
+        /// The degree asked for in u.
+        to_u: usize,
+        /// The degree asked for in v.
+        to_v: usize,
+    },
 }
 
 /// A tensor-product Bézier patch: degree `p × q` and its control points,

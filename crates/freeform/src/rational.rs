@@ -132,13 +132,49 @@ impl RationalPatch {
     /// # Errors
     /// [`PatchError::DegreeTooHigh`] above [`crate::patch::MAX_DEGREE`].
     pub fn elevated(&self) -> Result<Self, PatchError> {
+        self.raised(true, true)
+    }
+
+    /// The same surface with its degrees raised to `p × q` (each at least
+    /// the patch's own), one step at a time as [`Self::elevated`] does:
+    /// a patch of a NURBS surface of degree 2 × 3 becomes the bicubic
+    /// patch a GPU buffer of 16 points holds.
+    ///
+    /// # Errors
+    /// [`PatchError::DegreeTooHigh`] above [`crate::patch::MAX_DEGREE`],
+    /// [`PatchError::Lower`] below the patch's own degree.
+    pub fn elevated_to(&self, p: usize, q: usize) -> Result<Self, PatchError> {
+        let mut patch = self.clone();
+        loop {
+            let (pu, qv) = (patch.points.degree_u(), patch.points.degree_v());
+            if pu > p || qv > q {
+                return Err(PatchError::Lower {
+                    degree_u: pu,
+                    degree_v: qv,
+                    to_u: p,
+                    to_v: q,
+                });
+            }
+            if (pu, qv) == (p, q) {
+                return Ok(patch);
+            }
+            patch = patch.raised(pu < p, qv < q)?;
+        }
+    }
+
+    /// The degree along `u` raised by one if `in_u`, along `v` if `in_v`.
+    fn raised(&self, in_u: bool, in_v: bool) -> Result<Self, PatchError> {
         let (p, q) = (self.points.degree_u(), self.points.degree_v());
         let h = |i: usize, j: usize| {
             let w = self.weight(i, j);
             (w * self.points.control_point(i, j), w)
         };
-        // Raise one index of degree n: the point at i of the raised curve.
-        let raise = |n: usize, i: usize, at: &dyn Fn(usize) -> (DVec3, f64)| {
+        // Raise one index of degree n: the point at i of the raised curve
+        // (or the point itself, when that direction keeps its degree).
+        let raise = |raised: bool, n: usize, i: usize, at: &dyn Fn(usize) -> (DVec3, f64)| {
+            if !raised {
+                return at(i);
+            }
             let a = i as f64 / (n + 1) as f64;
             let (lo, hi) = (
                 if i > 0 { at(i - 1) } else { (DVec3::ZERO, 0.0) },
@@ -146,16 +182,14 @@ impl RationalPatch {
             );
             (a * lo.0 + (1.0 - a) * hi.0, a * lo.1 + (1.0 - a) * hi.1)
         };
-        let both = |i: usize, j: usize| raise(p, i, &|k| raise(q, j, &|l| h(k, l)));
-        let homogeneous: Vec<(DVec3, f64)> = (0..=p + 1)
-            .flat_map(|i| (0..=q + 1).map(move |j| (i, j)))
+        let (p2, q2) = (p + usize::from(in_u), q + usize::from(in_v));
+        let both = |i: usize, j: usize| raise(in_u, p, i, &|k| raise(in_v, q, j, &|l| h(k, l)));
+        let homogeneous: Vec<(DVec3, f64)> = (0..=p2)
+            .flat_map(|i| (0..=q2).map(move |j| (i, j)))
             .map(|(i, j)| both(i, j))
             .collect();
-        let points = BezierPatch::try_new(
-            p + 1,
-            q + 1,
-            homogeneous.iter().map(|&(a, w)| a / w).collect(),
-        )?;
+        let points =
+            BezierPatch::try_new(p2, q2, homogeneous.iter().map(|&(a, w)| a / w).collect())?;
         Self::try_new(points, homogeneous.iter().map(|&(_, w)| w).collect())
     }
 
@@ -296,6 +330,35 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_patch_elevated_in_one_direction_is_the_same_surface() {
+        // A 2 × 3 patch with uneven weights, raised to 3 × 3 and to 4 × 5.
+        let points = BezierPatch::from_fn(2, 3, |i, j| {
+            DVec3::new(i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64 * 0.3)
+        })
+        .unwrap();
+        let weights = (0..12).map(|k| 0.5 + f64::from(k % 4) * 0.4).collect();
+        let patch = RationalPatch::try_new(points, weights).unwrap();
+        for (p, q) in [(3, 3), (4, 5), (2, 3)] {
+            let raised = patch.elevated_to(p, q).unwrap();
+            assert_eq!(
+                (raised.points().degree_u(), raised.points().degree_v()),
+                (p, q)
+            );
+            for k in 0..=6 {
+                for l in 0..=6 {
+                    let (u, v) = (f64::from(k) / 6.0, f64::from(l) / 6.0);
+                    let (a, b) = (evaluate(&patch, u, v), evaluate(&raised, u, v));
+                    assert!(
+                        a.distance(b) < 1e-12,
+                        "{p} × {q} at ({u}, {v}): {a} against {b}"
+                    );
+                }
+            }
+        }
+        assert!(patch.elevated_to(1, 3).is_err(), "lowering is no elevation");
     }
 
     #[test]

@@ -160,9 +160,53 @@ pub fn nurbs_curve(knots: &[f64], p: usize, points: &[glam::DVec4], u: f64) -> g
     sum.truncate() / sum.w
 }
 
+/// A NURBS surface given as data (one of the course's
+/// [`freeform::NurbsSurfaceData`]) by its definition (seed 001, (1.15)):
+/// `S(u, v) = Σᵢ Σⱼ N_{i,p}(u) N_{j,q}(v) Pᵢⱼʷ` over the whole net,
+/// projected.
+///
+/// # Panics
+/// If the data's knots do not fit its net.
+#[must_use]
+pub fn nurbs_surface(data: &freeform::NurbsSurfaceData, u: f64, v: f64) -> glam::DVec3 {
+    let (p, q) = (data.degree_u, data.degree_v);
+    let end_u = data.knots_u[data.knots_u.len() - 1 - p];
+    let end_v = data.knots_v[data.knots_v.len() - 1 - q];
+    let mut sum = glam::DVec4::ZERO;
+    for i in 0..data.rows {
+        let nu = bspline_basis(&data.knots_u, end_u, i, p, u);
+        for j in 0..data.columns {
+            let k = i * data.columns + j;
+            let w = data.weights[k];
+            let n = nu * bspline_basis(&data.knots_v, end_v, j, q, v);
+            sum += (data.points[k] * w).extend(w) * n;
+        }
+    }
+    sum.truncate() / sum.w
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_nurbs_torus_lies_on_the_torus_and_the_vase_turns_its_profile() {
+        let (major, minor) = (2.0, 0.5);
+        let torus = freeform::NurbsSurfaceData::torus(major, minor);
+        let vase = freeform::NurbsSurfaceData::vase();
+        for k in 0..=12 {
+            for l in 0..=12 {
+                let (u, v) = (f64::from(k) / 12.0, f64::from(l) / 12.0);
+                let p = nurbs_surface(&torus, u, v);
+                let off = ((p.x.hypot(p.y) - major).hypot(p.z) - minor).abs();
+                assert!(off < 1e-12, "S({u}, {v}) = {p} is {off} off the torus");
+                // The vase at u and at u = 0 (on the x axis): the same
+                // profile point, turned about z.
+                let (p, q) = (nurbs_surface(&vase, u, v), nurbs_surface(&vase, 0.0, v));
+                assert!((p.x.hypot(p.y) - q.x).abs() < 1e-12 && (p.z - q.z).abs() < 1e-12);
+            }
+        }
+    }
 
     #[test]
     fn binomials_are_pascals_triangle() {

@@ -307,6 +307,28 @@ impl NurbsSurface {
     pub fn domain_v(&self) -> Domain {
         self.knots_v.domain()
     }
+
+    /// The surface `data` describes (one of the course's NURBS surfaces,
+    /// [`freeform::NurbsSurfaceData`]: the torus, or the vase whose
+    /// interior knots are single), checked as [`Self::try_new`] checks.
+    pub fn from_data(data: &freeform::NurbsSurfaceData) -> Result<Self, NurbsError> {
+        let knots_u = KnotVector::try_new(data.degree_u, data.knots_u.clone())?;
+        let knots_v = KnotVector::try_new(data.degree_v, data.knots_v.clone())?;
+        if data.weights.len() != data.points.len() {
+            return Err(NurbsError::WrongCount {
+                expected: data.points.len(),
+                got: data.weights.len(),
+            });
+        }
+        let points = data
+            .points
+            .iter()
+            .zip(&data.weights)
+            .map(|(&p, &w)| homogeneous(p, w))
+            .collect();
+        let net = ControlNet::try_new(data.rows, data.columns, points)?;
+        Self::try_new(knots_u, knots_v, net)
+    }
 }
 
 /// A rational Bézier patch of degree `(rows − 1, columns − 1)`, evaluated on
@@ -320,4 +342,23 @@ pub struct BezierPatch {
     pub domain_u: Domain,
     /// The piece of the surface's `v` domain the patch covers.
     pub domain_v: Domain,
+}
+
+impl BezierPatch {
+    /// The same patch as the course library's [`freeform::RationalPatch`]
+    /// (its points `Pʷ.xyz / w` and weights `w`), which topic 09
+    /// tessellates and topic 10 draws on the GPU: where the chain NURBS →
+    /// Bézier patches → triangles goes on.
+    ///
+    /// # Errors
+    /// A degree above [`freeform::patch::MAX_DEGREE`].
+    pub fn to_rational(&self) -> Result<freeform::RationalPatch, freeform::PatchError> {
+        let (rows, columns) = (self.net.rows(), self.net.columns());
+        let points = freeform::BezierPatch::try_new(
+            rows - 1,
+            columns - 1,
+            self.net.points().iter().map(|&p| project(p)).collect(),
+        )?;
+        freeform::RationalPatch::try_new(points, self.net.points().iter().map(|p| p.w).collect())
+    }
 }

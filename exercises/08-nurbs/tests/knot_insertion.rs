@@ -102,6 +102,47 @@ fn torus_decomposes_into_sixteen_biquadratic_patches() {
 }
 
 #[testkit::test]
+fn the_vase_with_single_interior_knots_decomposes_into_twelve_patches() {
+    // The vase (the course's surface of revolution) has the profile's
+    // knots ⅓ and ⅔ once each, below its degree q = 3: each is inserted
+    // twice before the net is cut into 4 × 3 blocks of 3 × 4 points.
+    let vase = NurbsSurface::from_data(&freeform::NurbsSurfaceData::vase()).unwrap();
+    let patches = vase.decompose().unwrap();
+    assert_eq!(
+        patches.len(),
+        12,
+        "4 quarters round the axis × 3 spans of the profile"
+    );
+    for (k, patch) in patches.iter().enumerate() {
+        assert_eq!(
+            (patch.net.rows(), patch.net.columns()),
+            (3, 4),
+            "patch {k}: degree 2 × 3"
+        );
+        let (a, b) = (k / 3, k % 3);
+        assert_eq!(
+            (patch.domain_u.start, patch.domain_v.start),
+            (a as f64 / 4.0, b as f64 / 3.0),
+            "patch {k}: row-major by u span, then v span"
+        );
+        for s in [0.0, 0.25, 0.6, 1.0] {
+            for t in [0.0, 0.4, 0.75, 1.0] {
+                let (u, v) = (patch.domain_u.lerp(s), patch.domain_v.lerp(t));
+                assert_close(
+                    surface_point(&vase, u, v),
+                    bezier_patch_point(&patch.net, s, t),
+                    TOLERANCE,
+                    &format!("patch {k} at ({s}, {t}), S({u}, {v})"),
+                );
+            }
+        }
+        // The given hand-over to topics 09 and 10 keeps points and weights.
+        let rational = patch.to_rational().unwrap();
+        assert_eq!(rational.weight(1, 2), patch.net.get(1, 2).w);
+    }
+}
+
+#[testkit::test]
 fn invalid_insertions_are_errors() {
     let circle = circle();
     // ¼ already has multiplicity 2 = p.

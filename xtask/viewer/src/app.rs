@@ -1325,8 +1325,17 @@ impl ViewerApp {
             ui.label("drawing …");
             return;
         };
-        let name = Stages::default().tessellate.name;
-        stage_label(ui, name, drawing.setup.method.source(), &drawing.status);
+        let named = Stages::default();
+        if drawing.decomposition != Status::Unused {
+            let stage = &named.decompose;
+            stage_label(ui, stage.name, stage.source, &drawing.decomposition);
+        }
+        stage_label(
+            ui,
+            named.tessellate.name,
+            drawing.setup.method.source(),
+            &drawing.status,
+        );
         if let Some(result) = &drawing.result {
             ui.label(format!(
                 "{} vertices, {} triangles",

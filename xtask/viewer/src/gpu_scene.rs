@@ -30,11 +30,21 @@ pub enum GpuSurface {
     SeedSurface,
     /// The NURBS torus: 16 rational patches, raised to bicubic.
     Torus,
+    /// The torus from its NURBS data, split by your topic 08.
+    NurbsTorus,
+    /// The vase (single interior knots), split by your topic 08.
+    Vase,
 }
 
 impl GpuSurface {
     /// Every surface, in the order of the controls.
-    pub const ALL: [Self; 3] = [Self::Hill, Self::SeedSurface, Self::Torus];
+    pub const ALL: [Self; 5] = [
+        Self::Hill,
+        Self::SeedSurface,
+        Self::Torus,
+        Self::NurbsTorus,
+        Self::Vase,
+    ];
 
     /// Its name on screen.
     #[must_use]
@@ -42,7 +52,20 @@ impl GpuSurface {
         match self {
             Self::Hill => "The hill",
             Self::SeedSurface => "The seed's patch",
-            Self::Torus => "NURBS torus (16 rational patches)",
+            Self::Torus => "NURBS torus (16 rational patches, given)",
+            Self::NurbsTorus => "NURBS torus, split by your topic 08",
+            Self::Vase => "NURBS vase, split by your topic 08",
+        }
+    }
+
+    /// The NURBS surface your topic 08 splits first, for those that are
+    /// one (the chain NURBS → Bézier patches → the GPU's triangles).
+    #[must_use]
+    pub fn nurbs(self) -> Option<freeform::NurbsSurfaceData> {
+        match self {
+            Self::NurbsTorus => Some(freeform::NurbsSurfaceData::torus(0.7, 0.25)),
+            Self::Vase => Some(freeform::NurbsSurfaceData::vase()),
+            Self::Hill | Self::SeedSurface | Self::Torus => None,
         }
     }
 }
@@ -205,21 +228,43 @@ pub fn worker(stages: Stages) -> GpuWorker {
 pub fn draw(setup: &GpuSetup, stages: &Stages) -> GpuDrawing {
     let mut setup = *setup;
     setup.tidy();
-    match &stages.gpu.run {
-        Some(run) => run(&setup),
-        None => GpuDrawing {
-            setup,
-            canvas: None,
-            stages: STAGES
-                .iter()
-                .map(|&(name, source)| GpuStageReport {
-                    name,
-                    source,
-                    status: Status::Missing,
-                })
-                .collect(),
-            triangles: 0,
-            device: "topic 10 is not in this build".to_owned(),
+    let stopped = |status: Status, device: &str| GpuDrawing {
+        setup,
+        canvas: None,
+        stages: STAGES
+            .iter()
+            .map(|&(name, source)| GpuStageReport {
+                name,
+                source,
+                status: status.clone(),
+            })
+            .collect(),
+        triangles: 0,
+        device: device.to_owned(),
+    };
+    let Some(run) = &stages.gpu.run else {
+        return stopped(Status::Missing, "topic 10 is not in this build");
+    };
+    // A NURBS surface is split into patches by your topic 08 first; that
+    // stage is listed before the GPU's.
+    let Some(data) = setup.surface.nurbs() else {
+        return run(&setup, None);
+    };
+    let (decomposed, status) = crate::stages::decompose(stages, &data);
+    let mut drawing = match &decomposed {
+        Some(patches) => run(&setup, Some(patches)),
+        None => stopped(
+            Status::NotReached,
+            "nothing to draw: the surface was not split into patches",
+        ),
+    };
+    drawing.stages.insert(
+        0,
+        GpuStageReport {
+            name: stages.decompose.name,
+            source: stages.decompose.source,
+            status,
         },
-    }
+    );
+    drawing
 }

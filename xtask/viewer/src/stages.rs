@@ -16,7 +16,11 @@
 //! `07-bezier`'s `surface::partial_derivatives` and `surface::normal` (the
 //! seed's hill, its control points raised and lowered), its trims (`simple_trim`, `newton_trim`) and
 //! `render::render_surface`; for the tessellation scene, `09-tessellation`'s
-//! `uniform`, `per_patch`, `fully_adaptive` and `edge_tests`.
+//! `uniform`, `per_patch`, `fully_adaptive` and `edge_tests`. The NURBS
+//! surfaces of the tessellation and GPU scenes (the course's vase and
+//! torus, [`freeform::NurbsSurfaceData`]) are split into rational Bézier
+//! patches by `08-nurbs`' `NurbsSurface::decompose` first: the chain
+//! NURBS → your decomposition → your tessellation (CPU or GPU).
 //!
 //! A topic that does not compile is left out of the build (`cargo xtask
 //! view` checks each one first) and its stage is shown as missing.
@@ -69,14 +73,84 @@ pub type SurfaceRenderStage = dyn Fn(
     + Send
     + Sync;
 
-/// Tessellates a surface and draws the triangles (the tessellation scene).
-pub type TessellateStage = dyn Fn(&crate::tessellation::TessSetup) -> Result<crate::tessellation::Tessellated, String>
+/// Splits a NURBS surface into rational Bézier patches (topic 08).
+pub type DecomposeStage =
+    dyn Fn(&freeform::NurbsSurfaceData) -> Result<Decomposed, String> + Send + Sync;
+
+/// Tessellates a surface and draws the triangles (the tessellation scene):
+/// the set-up, and the patches of its NURBS surface when it is one.
+pub type TessellateStage = dyn Fn(
+        &crate::tessellation::TessSetup,
+        Option<&Decomposed>,
+    ) -> Result<crate::tessellation::Tessellated, String>
     + Send
     + Sync;
 
-/// Draws the GPU scene with topic 10's passes.
-pub type GpuStage =
-    dyn Fn(&crate::gpu_scene::GpuSetup) -> crate::gpu_scene::GpuDrawing + Send + Sync;
+/// Draws the GPU scene with topic 10's passes: the set-up, and the
+/// patches of its NURBS surface when it is one.
+pub type GpuStage = dyn Fn(&crate::gpu_scene::GpuSetup, Option<&Decomposed>) -> crate::gpu_scene::GpuDrawing
+    + Send
+    + Sync;
+
+/// A NURBS surface split into rational Bézier patches, laid out as topic
+/// 09's `PatchGrid` lays them: patch `(row, col)` at `row · cols + col`,
+/// `col` the span along `u` and `row` the span along `v`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decomposed {
+    /// Spans along `v`.
+    pub rows: usize,
+    /// Spans along `u`.
+    pub cols: usize,
+    /// The patches.
+    pub patches: Vec<freeform::RationalPatch>,
+}
+
+impl Decomposed {
+    /// The grid of `patches` in topic 08's order (by `u` span, then `v`
+    /// span: patch `(a, b)` at `a · spans_v + b`) for a surface of
+    /// `spans_u × spans_v` spans.
+    ///
+    /// # Errors
+    /// Not `spans_u · spans_v` patches.
+    pub fn from_u_major(
+        (spans_u, spans_v): (usize, usize),
+        patches: Vec<freeform::RationalPatch>,
+    ) -> Result<Self, String> {
+        if patches.len() != spans_u * spans_v {
+            return Err(format!(
+                "{} patches for {spans_u} × {spans_v} spans",
+                patches.len()
+            ));
+        }
+        let patches = (0..spans_v)
+            .flat_map(|b| (0..spans_u).map(move |a| a * spans_v + b))
+            .map(|k| patches[k].clone())
+            .collect();
+        Ok(Self {
+            rows: spans_v,
+            cols: spans_u,
+            patches,
+        })
+    }
+}
+
+/// The patches of `data` split by `stages`' decomposition, and how that
+/// fared: the first link of the chain.
+#[must_use]
+pub fn decompose(
+    stages: &Stages,
+    data: &freeform::NurbsSurfaceData,
+) -> (Option<Decomposed>, Status) {
+    let Some(run) = &stages.decompose.run else {
+        return (None, Status::Missing);
+    };
+    let mut status = Status::Unused;
+    match guarded(&mut status, || run(data)) {
+        Some(Ok(patches)) => (Some(patches), status),
+        Some(Err(error)) => (None, Status::Failed(error)),
+        None => (None, status),
+    }
+}
 
 /// How the surface scene renders: what topic 07's `RenderSettings` holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -135,6 +209,9 @@ pub struct Stages {
     pub curve: Stage<CurveStage>,
     /// A NURBS curve's point (the curve scene).
     pub nurbs: Stage<NurbsStage>,
+    /// A NURBS surface split into Bézier patches (the tessellation and
+    /// GPU scenes' NURBS surfaces).
+    pub decompose: Stage<DecomposeStage>,
     /// The patch's point and normal (the surface scene).
     pub surface: Stage<SurfaceStage>,
     /// The trims (the surface scene).
@@ -194,6 +271,11 @@ impl Default for Stages {
             nurbs: Stage {
                 name: "NURBS curve",
                 source: "08-nurbs · NurbsCurve::point (find_span, basis_funs)",
+                run: None,
+            },
+            decompose: Stage {
+                name: "decomposition",
+                source: "08-nurbs · NurbsSurface::decompose (insert_knot_u, insert_knot_v)",
                 run: None,
             },
             surface: Stage {
@@ -307,6 +389,17 @@ impl Stages {
                     curve.point(u).map(glam::DVec3::truncate).map_err(error)
                 },
             ));
+            stages.decompose.run = Some(Arc::new(|data: &freeform::NurbsSurfaceData| {
+                let error = |e: nurbs::NurbsError| e.to_string();
+                let surface = nurbs::NurbsSurface::from_data(data).map_err(error)?;
+                let patches = surface
+                    .decompose()
+                    .map_err(error)?
+                    .iter()
+                    .map(|patch| patch.to_rational().map_err(|e| e.to_string()))
+                    .collect::<Result<Vec<_>, _>>()?;
+                Decomposed::from_u_major(data.pieces(), patches)
+            }));
         }
         #[cfg(feature = "tessellation")]
         {
@@ -314,9 +407,11 @@ impl Stages {
         }
         #[cfg(feature = "gpu-tessellation")]
         {
-            stages.gpu.run = Some(Arc::new(|setup: &crate::gpu_scene::GpuSetup| {
-                gpu_frame(setup, GpuPieces::YOURS)
-            }));
+            stages.gpu.run = Some(Arc::new(
+                |setup: &crate::gpu_scene::GpuSetup, decomposed: Option<&Decomposed>| {
+                    gpu_frame(setup, GpuPieces::YOURS, decomposed)
+                },
+            ));
         }
         stages
     }
@@ -416,6 +511,7 @@ fn render_surface(
 #[cfg(feature = "tessellation")]
 fn tessellate(
     setup: &crate::tessellation::TessSetup,
+    decomposed: Option<&Decomposed>,
 ) -> Result<crate::tessellation::Tessellated, String> {
     use crate::tessellation::{Look, Method, Surface, Tessellated, Test};
     use tessellation::bezier::BezierPatch;
@@ -449,7 +545,10 @@ fn tessellate(
                 let offset = u32::try_from(mesh.positions.len()).map_err(|e| e.to_string())?;
                 mesh.positions.extend(&part.positions);
                 mesh.normals.extend(&part.normals);
-                mesh.uvs.extend(&part.uvs);
+                // Global parameters: patch (row, col) covers
+                // [col, col + 1] × [row, row + 1], as topic 09's grid has it.
+                let corner = glam::DVec2::new(col as f64, row as f64);
+                mesh.uvs.extend(part.uvs.iter().map(|&uv| uv + corner));
                 mesh.triangles
                     .extend(part.triangles.iter().map(|t| t.map(|k| k + offset)));
             }
@@ -473,6 +572,13 @@ fn tessellate(
         Surface::Hill => patches(&single(BezierPatch::seed_hill())?, setup, test)?,
         Surface::Patches => patches(&PatchGrid::example(), setup, test)?,
         Surface::Torus => patches(&PatchGrid::torus(0.7, 0.25), setup, test)?,
+        Surface::NurbsTorus | Surface::Vase => {
+            let decomposed = decomposed.ok_or("the surface was not split into patches")?;
+            let grid =
+                PatchGrid::try_new(decomposed.rows, decomposed.cols, decomposed.patches.clone())
+                    .map_err(|e| format!("your decomposition's patches: {e}"))?;
+            patches(&grid, setup, test)?
+        }
     };
     let style = match setup.look {
         Look::Shaded => Style::Shaded,
@@ -487,6 +593,8 @@ fn tessellate(
         canvas: tessellation::render::render(&mesh, view, style, setup.size, setup.size),
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
+        positions: mesh.positions.clone(),
+        uvs: mesh.uvs.clone(),
     })
 }
 
@@ -605,6 +713,7 @@ impl GpuPieces {
 pub fn gpu_frame(
     setup: &crate::gpu_scene::GpuSetup,
     pieces: GpuPieces,
+    decomposed: Option<&Decomposed>,
 ) -> crate::gpu_scene::GpuDrawing {
     use crate::gpu_scene::{GpuDrawing, GpuStageReport, GpuSurface, Levels, STAGES, Spacing};
     use gpu_tessellation::passes::{self, ControlSettings, Domain, LevelMode, Patches};
@@ -681,6 +790,28 @@ pub fn gpu_frame(
                 torus.iter().map(|p| p.points().clone()).collect(),
                 Some(torus),
             )
+        }
+        GpuSurface::NurbsTorus | GpuSurface::Vase => {
+            // Your decomposition's patches, raised to the bicubic patches
+            // the GPU buffer holds (given: `RationalPatch::elevated_to`).
+            let raised = decomposed
+                .ok_or_else(|| "the surface was not split into patches".to_owned())
+                .and_then(|d| {
+                    d.patches
+                        .iter()
+                        .map(|p| p.elevated_to(3, 3).map_err(|e| e.to_string()))
+                        .collect::<Result<Vec<RationalPatch>, String>>()
+                });
+            match raised {
+                Ok(raised) => (
+                    raised.iter().map(|p| p.points().clone()).collect(),
+                    Some(raised),
+                ),
+                Err(e) => {
+                    let stopped = Status::Failed(e);
+                    return report(std::array::from_fn(|_| stopped.clone()), None, 0, device);
+                }
+            }
         }
     };
     // The camera looks at the middle of the control points, from a

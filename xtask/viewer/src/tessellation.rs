@@ -21,11 +21,33 @@ pub enum Surface {
     Patches,
     /// The NURBS torus: 16 rational biquadratic patches.
     Torus,
+    /// The torus from its NURBS data, split by your topic 08.
+    NurbsTorus,
+    /// The vase (single interior knots), split by your topic 08.
+    Vase,
 }
 
 impl Surface {
     /// Every surface, in the order of the controls.
-    pub const ALL: [Self; 4] = [Self::SeedSurface, Self::Hill, Self::Patches, Self::Torus];
+    pub const ALL: [Self; 6] = [
+        Self::SeedSurface,
+        Self::Hill,
+        Self::Patches,
+        Self::Torus,
+        Self::NurbsTorus,
+        Self::Vase,
+    ];
+
+    /// The NURBS surface your topic 08 splits first, for those that are
+    /// one (the chain NURBS → Bézier patches → triangles).
+    #[must_use]
+    pub fn nurbs(self) -> Option<freeform::NurbsSurfaceData> {
+        match self {
+            Self::NurbsTorus => Some(freeform::NurbsSurfaceData::torus(0.7, 0.25)),
+            Self::Vase => Some(freeform::NurbsSurfaceData::vase()),
+            Self::SeedSurface | Self::Hill | Self::Patches | Self::Torus => None,
+        }
+    }
 
     /// Its name on screen.
     #[must_use]
@@ -34,7 +56,9 @@ impl Surface {
             Self::SeedSurface => "The seed's patch",
             Self::Hill => "The hill",
             Self::Patches => "Several patches",
-            Self::Torus => "NURBS torus (16 rational patches)",
+            Self::Torus => "NURBS torus (16 rational patches, given)",
+            Self::NurbsTorus => "NURBS torus, split by your topic 08",
+            Self::Vase => "NURBS vase (single knots), split by your topic 08",
         }
     }
 }
@@ -234,6 +258,11 @@ pub struct Tessellated {
     pub vertices: usize,
     /// Its triangles.
     pub triangles: usize,
+    /// Its vertices' positions.
+    pub positions: Vec<glam::DVec3>,
+    /// Their parameters on the patch grid: patch `(row, col)` covers
+    /// `[col, col + 1] × [row, row + 1]`.
+    pub uvs: Vec<glam::DVec2>,
 }
 
 /// What the scene shows.
@@ -245,6 +274,9 @@ pub struct TessDrawing {
     pub result: Option<Tessellated>,
     /// How your tessellation fared.
     pub status: Status,
+    /// How your topic 08 split the surface into patches, for a NURBS
+    /// surface ([`Status::Unused`] for the others).
+    pub decomposition: Status,
 }
 
 /// The worker that tessellates.
@@ -261,15 +293,28 @@ pub fn worker(stages: Stages) -> TessWorker {
 pub fn draw(setup: &TessSetup, stages: &Stages) -> TessDrawing {
     let mut setup = *setup;
     setup.tidy();
+    let (decomposed, decomposition) = match setup.surface.nurbs() {
+        Some(data) => crate::stages::decompose(stages, &data),
+        None => (None, Status::Unused),
+    };
     let Some(run) = &stages.tessellate.run else {
         return TessDrawing {
             setup,
             result: None,
             status: Status::Missing,
+            decomposition,
         };
     };
     let mut status = Status::Unused;
-    let result = match guarded(&mut status, || run(&setup)) {
+    if setup.surface.nurbs().is_some() && decomposed.is_none() {
+        return TessDrawing {
+            setup,
+            result: None,
+            status: Status::NotReached,
+            decomposition,
+        };
+    }
+    let result = match guarded(&mut status, || run(&setup, decomposed.as_ref())) {
         Some(Ok(result)) => Some(result),
         Some(Err(error)) => {
             status = Status::Failed(error);
@@ -281,5 +326,6 @@ pub fn draw(setup: &TessSetup, stages: &Stages) -> TessDrawing {
         setup,
         result,
         status,
+        decomposition,
     }
 }

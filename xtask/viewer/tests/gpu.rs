@@ -3,7 +3,7 @@
 //! and with WGSL that does not compile.
 
 use course_viewer::gpu_scene::{GpuDrawing, GpuSetup, GpuSurface, Levels, Spacing, draw};
-use course_viewer::stages::{GpuPieces, gpu_frame};
+use course_viewer::stages::{GpuPieces, decompose, gpu_frame};
 use course_viewer::surfaces::TrimShape;
 use course_viewer::{Stages, Status};
 use gpu_tessellation::wgsl;
@@ -19,7 +19,12 @@ fn small() -> GpuSetup {
 /// The drawing, or `None` after a skip line where there is no adapter
 /// (a failure where `GPU_REQUIRED=1`, as under CI).
 fn drawn(setup: &GpuSetup, pieces: GpuPieces) -> Option<GpuDrawing> {
-    let drawing = gpu_frame(setup, pieces);
+    // A NURBS surface: split by the solutions' topic 08 first.
+    let decomposed = setup.surface.nurbs().map(|data| {
+        let (patches, status) = decompose(&Stages::yours(), &data);
+        patches.unwrap_or_else(|| panic!("{status:?}"))
+    });
+    let drawing = gpu_frame(setup, pieces, decomposed.as_ref());
     if drawing.device.contains("adapter") && drawing.canvas.is_none() {
         assert!(
             std::env::var("GPU_REQUIRED").as_deref() != Ok("1"),
@@ -78,6 +83,80 @@ fn the_solutions_draw_every_surface_on_the_gpu() {
     )
     .unwrap();
     assert_eq!(torus.triangles, 16 * hill.triangles);
+    // The chain: the NURBS surfaces split by topic 08, then drawn as
+    // above, with the decomposition listed first.
+    for (surface, patches) in [(GpuSurface::NurbsTorus, 16), (GpuSurface::Vase, 12)] {
+        let drawing = draw(&GpuSetup { surface, ..small() }, &Stages::yours());
+        let names: Vec<_> = statuses(&drawing);
+        assert_eq!(names[0], ("decomposition", Status::Ok), "{surface:?}");
+        assert!(
+            names[1..].iter().all(|(_, s)| s.usable()),
+            "{surface:?}: {names:?}"
+        );
+        assert!(drawing.canvas.is_some(), "{surface:?}");
+        assert_eq!(drawing.triangles, patches * hill.triangles, "{surface:?}");
+    }
+}
+
+/// The chain to the GPU: the vase (single interior knots) and the torus
+/// from their NURBS data, split by topic 08's decomposition, raised to
+/// bicubic and evaluated by topic 10's evaluation pass. Every vertex lies
+/// where the NURBS surface's own definition puts it
+/// (`testkit::oracles::nurbs_surface`), at the parameters of its patch.
+#[test]
+fn the_nurbs_chain_reaches_the_gpu_on_the_surface() {
+    use gpu_tessellation::passes::{Domain, Patches, run_evaluation};
+    let gpu = match gpu::Gpu::new() {
+        Ok(gpu) => gpu,
+        Err(e) => {
+            assert!(
+                std::env::var("GPU_REQUIRED").as_deref() != Ok("1"),
+                "GPU_REQUIRED=1 but {e}"
+            );
+            eprintln!("SKIPPED (no GPU): {e}");
+            return;
+        }
+    };
+    // A 7 × 7 grid of domain points on each patch.
+    let grid = Domain {
+        points: (0..=6)
+            .flat_map(|j| {
+                (0..=6).map(move |i| glam::Vec3::new(i as f32 / 6.0, j as f32 / 6.0, 0.0))
+            })
+            .collect(),
+        triangles: Vec::new(),
+    };
+    for data in [
+        freeform::NurbsSurfaceData::vase(),
+        freeform::NurbsSurfaceData::torus(0.7, 0.25),
+    ] {
+        let (decomposed, status) = decompose(&Stages::yours(), &data);
+        let decomposed = decomposed.unwrap_or_else(|| panic!("{status:?}"));
+        let raised: Vec<_> = decomposed
+            .patches
+            .iter()
+            .map(|p| p.elevated_to(3, 3).unwrap())
+            .collect();
+        let domains = vec![&grid; raised.len()];
+        let vertices = run_evaluation(&gpu, wgsl::EVALUATION, Patches::Rational(&raised), &domains)
+            .unwrap()
+            .read(&gpu)
+            .unwrap();
+        assert_eq!(vertices.len(), raised.len() * 49);
+        for (k, vertex) in vertices.iter().enumerate() {
+            let patch = k / 49;
+            let (row, col) = (patch / decomposed.cols, patch % decomposed.cols);
+            let (s, t) = (f64::from(vertex.param.x), f64::from(vertex.param.y));
+            let u = (col as f64 + s) / decomposed.cols as f64;
+            let v = (row as f64 + t) / decomposed.rows as f64;
+            let expected = testkit::oracles::nurbs_surface(&data, u, v);
+            let got = vertex.position.truncate().as_dvec3();
+            assert!(
+                got.distance(expected) < 2e-5,
+                "patch {patch} at ({s}, {t}): {got}, S({u}, {v}) = {expected}"
+            );
+        }
+    }
 }
 
 #[test]

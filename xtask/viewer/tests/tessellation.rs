@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use course_viewer::stages::Decomposed;
 use course_viewer::tessellation::{Look, Method, Surface, TessSetup, Tessellated, Test, draw};
 use course_viewer::{Stages, Status};
 
@@ -28,6 +29,8 @@ fn uniform_counts_follow_the_level_and_the_patches() {
         (Surface::Hill, 1),
         (Surface::Patches, course_viewer_patches()),
         (Surface::Torus, 16),
+        (Surface::NurbsTorus, 16),
+        (Surface::Vase, 12),
     ] {
         for level in [1, 5] {
             let result = tessellated(&TessSetup {
@@ -137,9 +140,11 @@ fn the_look_changes_the_picture() {
 fn an_unwritten_or_failing_tessellation_is_named() {
     course_viewer::stages::quiet_panics();
     let mut stages = Stages::yours();
-    stages.tessellate.run = Some(Arc::new(|_: &TessSetup| -> Result<Tessellated, String> {
-        todo!("uniform: sample the (n_u+1)×(n_v+1) grid, then two triangles per cell")
-    }));
+    stages.tessellate.run = Some(Arc::new(
+        |_: &TessSetup, _: Option<&Decomposed>| -> Result<Tessellated, String> {
+            todo!("uniform: sample the (n_u+1)×(n_v+1) grid, then two triangles per cell")
+        },
+    ));
     let drawing = draw(&TessSetup::default(), &stages);
     assert_eq!(
         drawing.status,
@@ -149,9 +154,11 @@ fn an_unwritten_or_failing_tessellation_is_named() {
     );
     assert!(drawing.result.is_none());
 
-    stages.tessellate.run = Some(Arc::new(|_: &TessSetup| -> Result<Tessellated, String> {
-        Err("the refinement would exceed 4194304 triangles".to_owned())
-    }));
+    stages.tessellate.run = Some(Arc::new(
+        |_: &TessSetup, _: Option<&Decomposed>| -> Result<Tessellated, String> {
+            Err("the refinement would exceed 4194304 triangles".to_owned())
+        },
+    ));
     let drawing = draw(&TessSetup::default(), &stages);
     assert_eq!(
         drawing.status,
@@ -185,4 +192,60 @@ fn a_set_up_is_kept_drawable() {
     assert!(setup.yaw.is_finite());
     assert_eq!(setup.size, 16);
     assert_eq!(draw(&setup, &Stages::yours()).status, Status::Ok);
+}
+
+/// The chain the NURBS surfaces take: the data, split into rational
+/// Bézier patches by topic 08's decomposition, tessellated by topic 09.
+/// Every vertex lies where the NURBS surface's own definition puts it
+/// (`testkit::oracles::nurbs_surface`, the double sum over the whole
+/// net), at the parameters the patch grid gives it: both surfaces' spans
+/// are equal, so the grid's `(u, v)` is the surface's times the spans.
+#[test]
+fn the_nurbs_chain_lands_every_vertex_on_the_surface() {
+    for surface in [Surface::Vase, Surface::NurbsTorus] {
+        let data = surface.nurbs().expect("a NURBS surface");
+        let (spans_u, spans_v) = data.pieces();
+        for method in [Method::Uniform, Method::PerPatch, Method::FullyAdaptive] {
+            let drawing = draw(&setup(surface, method), &Stages::yours());
+            assert_eq!(drawing.decomposition, Status::Ok, "{surface:?}");
+            assert_eq!(drawing.status, Status::Ok, "{surface:?} {method:?}");
+            let mesh = drawing.result.expect("a mesh");
+            assert!(mesh.positions.len() > 12 * 4, "{surface:?} {method:?}");
+            for (p, uv) in mesh.positions.iter().zip(&mesh.uvs) {
+                let (u, v) = (uv.x / spans_u as f64, uv.y / spans_v as f64);
+                let expected = testkit::oracles::nurbs_surface(&data, u, v);
+                assert!(
+                    p.distance(expected) < 1e-9,
+                    "{surface:?} {method:?}: the vertex at {uv} is {p}, S({u}, {v}) = {expected}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn an_unwritten_decomposition_is_named_and_stops_the_chain() {
+    course_viewer::stages::quiet_panics();
+    let mut stages = Stages::yours();
+    stages.decompose.run = Some(Arc::new(
+        |_: &freeform::NurbsSurfaceData| -> Result<Decomposed, String> {
+            todo!("decompose: raise every interior knot to multiplicity p")
+        },
+    ));
+    let drawing = draw(&setup(Surface::Vase, Method::Uniform), &stages);
+    assert_eq!(
+        drawing.decomposition,
+        Status::NotYet("decompose: raise every interior knot to multiplicity p".to_owned())
+    );
+    assert_eq!(drawing.status, Status::NotReached);
+    assert!(drawing.result.is_none());
+    // The given surfaces do not need it.
+    let torus = draw(&setup(Surface::Torus, Method::Uniform), &stages);
+    assert_eq!(
+        (torus.decomposition, torus.status),
+        (Status::Unused, Status::Ok)
+    );
+    stages.decompose.run = None;
+    let drawing = draw(&setup(Surface::NurbsTorus, Method::Uniform), &stages);
+    assert_eq!(drawing.decomposition, Status::Missing, "without topic 08");
 }

@@ -123,20 +123,10 @@ pub const TORUS_TUBE: f64 = 0.75;
 /// A torus around the z axis as a biquadratic NURBS surface: `u` runs
 /// round the z axis, `v` round the tube; the net is the circle's net
 /// (rows) times the tube circle's net (columns), weights multiplied
-/// (a surface of revolution, The NURBS Book §8.5).
+/// (a surface of revolution, The NURBS Book §8.5): the course's
+/// [`freeform::NurbsSurfaceData::torus`].
 pub fn torus() -> NurbsSurface {
-    let circle = circle_points();
-    let mut points = Vec::new();
-    for &(cx, cy, wu) in &circle {
-        for &(tx, tz, wv) in &circle {
-            // The tube circle's point (R + r·tx, r·tz) swept round z.
-            let radius = TORUS_R + TORUS_TUBE * tx;
-            let p = DVec3::new(radius * cx, radius * cy, TORUS_TUBE * tz);
-            points.push(homogeneous(p, wu * wv));
-        }
-    }
-    let net = ControlNet::try_new(9, 9, points).expect("valid");
-    NurbsSurface::try_new(circle_knots(), circle_knots(), net).expect("valid")
+    NurbsSurface::from_data(&freeform::NurbsSurfaceData::torus(TORUS_R, TORUS_TUBE)).expect("valid")
 }
 
 /// How far `p` is from the torus surface (0 on it).
