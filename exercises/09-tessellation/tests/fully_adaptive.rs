@@ -480,13 +480,16 @@ fn bad_input_is_an_error() {
     );
 }
 
+/// Seed 001's Slika 2.9: the seed's surface refined by the one-edge
+/// complementary test (2.3), which splits where the one-edge test does
+/// and also where the end normals differ by more than `t2`.
 #[testkit::test]
 fn adaptive_seed_surface_matches_the_reference_image() {
     let patch = BezierPatch::seed_surface();
     let mesh = refine(
         &patch,
         &sample_grid(&patch, 9),
-        EdgeTest::OneEdgeNormal { t1: 0.15 },
+        EdgeTest::OneEdgeComplementary { t1: 0.15, t2: 0.12 },
         4,
     )
     .unwrap();
