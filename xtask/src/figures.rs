@@ -213,15 +213,10 @@ fn cited<'a>(drawn: &[Drawn], seeds: &'a [Seed]) -> Vec<&'a Seed> {
 /// says why there is none.
 fn collect(report: &Report, graded: &Path, out: &Path, figure: Figure) -> Result<Drawn> {
     let (source, missing) = if figure.test == PIPELINE {
-        let picture = report.pipeline.iter().find(|p| {
-            p.yours
-                .as_ref()
-                .is_some_and(|y| y.ends_with(format!("{}.png", figure.image)))
-        });
-        let error = report
-            .pipeline
-            .iter()
-            .find_map(|p| p.error.clone())
+        let file = format!("{}.png", figure.image);
+        let picture = report.pipeline.iter().find(|p| p.file == file);
+        let error = picture
+            .and_then(|p| p.error.clone())
             .unwrap_or_else(|| "the pipeline did not draw it".to_owned());
         match picture.and_then(|p| p.yours.as_ref()) {
             Some(yours) => (Some(graded.join(yours)), None),

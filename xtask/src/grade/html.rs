@@ -196,20 +196,22 @@ fn summary(html: &mut String, report: &Report) {
         report::points(report.max_score)
     );
     if !report.pipeline.is_empty() {
-        html.push_str("<p><a href=\"#pipeline\">Your pipeline</a>: the shipped meshes drawn by your stages.</p>\n");
+        html.push_str("<p><a href=\"#pipeline\">Your pipeline</a>: the shipped meshes and the NURBS chain drawn by your stages.</p>\n");
     }
 }
 
-/// "Your pipeline": the shipped meshes drawn by the graded stages, beside
-/// what the solutions draw, with how each stage fared.
+/// "Your pipeline": the shipped meshes and the NURBS chain drawn by the
+/// graded stages, beside what the solutions draw, with how each stage
+/// fared.
 fn pipeline_section(html: &mut String, pictures: &[super::pipeline::PipelinePicture]) {
     if pictures.is_empty() {
         return;
     }
     html.push_str(
         "<h2 id=\"pipeline\">Your pipeline</h2>\n<p>The shipped meshes transformed by the course, then clipped, \
-         drawn and depth-tested by your stages (no points; <code>cargo xtask view</code> shows \
-         them in a window).</p>\n",
+         drawn and depth-tested by your stages; the NURBS chain split and tessellated by your \
+         stages (no points; <code>cargo xtask view</code> shows them in a window). A picture is \
+         drawn when the assignment holds its topics.</p>\n",
     );
     for picture in pictures {
         let _ = writeln!(html, "<div><p>{}</p>", escape(&picture.what));

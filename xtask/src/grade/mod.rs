@@ -398,7 +398,15 @@ impl Prepared {
             "drawing the pipeline with your stages".to_owned(),
             options.progress,
         );
-        let pipeline = pipeline::draw_all(&pipeline::Plan { root: &root, out }, &viewer);
+        let graded: Vec<&str> = topics.iter().map(|t| t.name.as_str()).collect();
+        let pipeline = pipeline::draw_all(
+            &pipeline::Plan {
+                root: &root,
+                out,
+                graded: &graded,
+            },
+            &viewer,
+        );
         spinner.finish_and_clear();
         let report = Report {
             schema: report::SCHEMA,

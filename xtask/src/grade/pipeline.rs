@@ -21,13 +21,21 @@ use crate::sandbox::{Jail, Job, Limits, Purpose};
 /// The viewer's package.
 pub const VIEWER: &str = "course-viewer";
 
-/// The viewer's features and the topics whose stages they build in.
-pub const STAGES: [(&str, &str); 4] = [
+/// The viewer's features and the topics whose stages they build in: the
+/// mesh pipeline's four, and the NURBS chain's two.
+pub const STAGES: [(&str, &str); 6] = [
     ("lines", "01-lines"),
     ("fill", "03-fill"),
     ("clipping", "04-clipping"),
     ("buffers", "05-buffers"),
+    ("nurbs", "08-nurbs"),
+    ("tessellation", "09-tessellation"),
 ];
+
+/// The topics of the mesh pipeline's pictures.
+const MESH_TOPICS: [&str; 4] = ["01-lines", "03-fill", "04-clipping", "05-buffers"];
+/// The topics of the NURBS chain's picture.
+const CHAIN_TOPICS: [&str; 2] = ["08-nurbs", "09-tessellation"];
 
 /// The viewer's features and topics in `cargo xtask view`: the pipeline's,
 /// the pixel playground's circle and the curve scene's de Casteljau.
@@ -38,39 +46,65 @@ pub const VIEWER_TOPICS: [(&str, &str); 9] = [
     STAGES[2],
     STAGES[3],
     ("bezier", "07-bezier"),
-    ("nurbs", "08-nurbs"),
-    ("tessellation", "09-tessellation"),
+    STAGES[4],
+    STAGES[5],
     ("gpu-tessellation", "10-gpu-tessellation"),
 ];
 
 /// How long one picture may take.
 const TIME_LIMIT: Duration = Duration::from_secs(30);
 
-/// One picture: its file name, what it shows and the viewer's arguments.
+/// One picture: its file name, what it shows, the viewer's arguments and
+/// the topics it draws with.
 struct Scene {
     file: &'static str,
     what: &'static str,
     args: &'static [&'static str],
+    needs: Needs,
 }
 
-/// The pictures, in the report's order (as `course_viewer::render::REPORT_SCENES`,
-/// whose test pins `xtask/viewer/expected/` to them): seed 004's figures of the star and
-/// the torus, and the clipped torus with and without clipping.
-const SCENES: [Scene; 4] = [
+/// Which graded topics a picture is drawn for.
+#[derive(Clone, Copy)]
+enum Needs {
+    /// Any of these: a mesh picture names the stages that are missing.
+    Any(&'static [&'static str]),
+    /// All of these: the chain has nothing to show without either.
+    All(&'static [&'static str]),
+}
+
+impl Needs {
+    /// Whether an assignment of the `graded` topics holds the stages.
+    fn met(self, graded: &[&str]) -> bool {
+        match self {
+            Self::Any(topics) => topics.iter().any(|t| graded.contains(t)),
+            Self::All(topics) => topics.iter().all(|t| graded.contains(t)),
+        }
+    }
+}
+
+/// The pictures, in the report's order (as `course_viewer::render::REPORT_SCENES`
+/// and `course_viewer::tessellation::REPORT_CHAIN`, whose tests pin
+/// `xtask/viewer/expected/` to them): seed 004's figures of the star and
+/// the torus, the clipped torus with and without clipping, and the NURBS
+/// chain of seed 001 (NURBS → Bézier patches → triangles).
+const SCENES: [Scene; 5] = [
     Scene {
         file: "star-wireframe.png",
         what: "star.ply, wireframe: clipping, lines, depth test",
         args: &["--mesh", "star.ply", "--mode", "wireframe"],
+        needs: Needs::Any(&MESH_TOPICS),
     },
     Scene {
         file: "torus-filled.png",
         what: "torus.ply, filled: clipping, fill, depth test",
         args: &["--mesh", "torus.ply", "--mode", "filled"],
+        needs: Needs::Any(&MESH_TOPICS),
     },
     Scene {
         file: "clipped-torus.png",
         what: "clipped_torus.ply, filled and clipped",
         args: &["--mesh", "clipped_torus.ply", "--mode", "filled"],
+        needs: Needs::Any(&MESH_TOPICS),
     },
     Scene {
         file: "clipped-torus-unclipped.png",
@@ -82,6 +116,14 @@ const SCENES: [Scene; 4] = [
             "filled",
             "--no-clip",
         ],
+        needs: Needs::Any(&MESH_TOPICS),
+    },
+    Scene {
+        file: "nurbs-chain-vase.png",
+        what: "the NURBS vase (single interior knots) split into 12 Bézier patches by your topic 08, \
+               tessellated by your topic 09 (uniform, 4 × 4 cells a patch)",
+        args: &["--chain", "vase"],
+        needs: Needs::All(&CHAIN_TOPICS),
     },
 ];
 
@@ -94,6 +136,8 @@ pub const EXPECTED_DIR: &str = "xtask/viewer/expected";
 /// One picture of the section.
 #[derive(Debug, Clone, Serialize)]
 pub struct PipelinePicture {
+    /// Its file name (`star-wireframe.png`).
+    pub file: String,
     /// What it shows.
     pub what: String,
     /// The picture the student's stages drew, if they drew one (relative
@@ -113,6 +157,8 @@ pub struct Plan<'a> {
     pub root: &'a Path,
     /// The report folder.
     pub out: &'a Path,
+    /// The graded topics: a picture is drawn when they hold its stages.
+    pub graded: &'a [&'a str],
 }
 
 /// The viewer of a grade, built before the tests run.
@@ -136,7 +182,7 @@ pub fn build_viewer(builder: &Builder, graded: &[&str], compiled: &[&str]) -> Vi
         .join("viewer")
         .join("Cargo.toml")
         .is_file();
-    if !has_viewer || !STAGES.iter().any(|(_, topic)| graded.contains(topic)) {
+    if !has_viewer || !SCENES.iter().any(|scene| scene.needs.met(graded)) {
         return Viewer::None;
     }
     let features: Vec<&str> = STAGES
@@ -154,10 +200,15 @@ pub fn build_viewer(builder: &Builder, graded: &[&str], compiled: &[&str]) -> Vi
 pub fn draw_all(plan: &Plan<'_>, viewer: &Viewer) -> Vec<PipelinePicture> {
     let dir = plan.out.join("pipeline");
     let _ = fs::remove_dir_all(&dir);
+    let scenes: Vec<&Scene> = SCENES
+        .iter()
+        .filter(|scene| scene.needs.met(plan.graded))
+        .collect();
     let failed = |error: String| {
-        SCENES
+        scenes
             .iter()
             .map(|scene| PipelinePicture {
+                file: scene.file.to_owned(),
                 what: scene.what.to_owned(),
                 yours: None,
                 expected: expected(plan.root, plan.out, scene),
@@ -176,10 +227,11 @@ pub fn draw_all(plan: &Plan<'_>, viewer: &Viewer) -> Vec<PipelinePicture> {
     }
     // A stage that loops costs one time limit, not one per picture.
     let mut stuck: Option<String> = None;
-    SCENES
+    scenes
         .iter()
         .map(|scene| match &stuck {
             Some(error) => PipelinePicture {
+                file: scene.file.to_owned(),
                 what: scene.what.to_owned(),
                 yours: None,
                 expected: expected(plan.root, plan.out, scene),
@@ -250,6 +302,7 @@ fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
 /// file of bounded size.
 fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePicture {
     let mut result = PipelinePicture {
+        file: scene.file.to_owned(),
         what: scene.what.to_owned(),
         yours: None,
         expected: expected(plan.root, plan.out, scene),

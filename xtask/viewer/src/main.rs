@@ -39,6 +39,15 @@ enum Trim {
     Nested,
 }
 
+/// The NURBS surfaces of the chain picture.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Chain {
+    /// The vase (single interior knots).
+    Vase,
+    /// The torus from its NURBS data.
+    Torus,
+}
+
 impl Trim {
     fn shape(self) -> TrimShape {
         match self {
@@ -116,6 +125,11 @@ struct Args {
     /// Start the surface scene with the wireframe on.
     #[arg(long, requires = "surfaces")]
     wireframe: bool,
+    /// With `--screenshot`: draw the NURBS chain instead of a mesh — the
+    /// surface split into Bézier patches by your topic 08, tessellated by
+    /// your topic 09 (uniform, four cells a side per patch).
+    #[arg(long, value_enum, requires = "screenshot")]
+    chain: Option<Chain>,
     /// Topics left out of this build because they do not compile (set by
     /// `cargo xtask view`).
     #[arg(long = "not-compiling", value_name = "TOPIC")]
@@ -154,6 +168,13 @@ fn main() -> Result<()> {
         ..Settings::default()
     };
     let limit = Duration::from_secs_f64(args.time_limit.max(0.1));
+    if let (Some(chain), Some(path)) = (args.chain, &args.screenshot) {
+        let surface = match chain {
+            Chain::Vase => course_viewer::tessellation::Surface::Vase,
+            Chain::Torus => course_viewer::tessellation::Surface::NurbsTorus,
+        };
+        return chain_screenshot(surface, args.size, limit, path);
+    }
     match args.screenshot {
         Some(path) => screenshot(&meshes[index], settings, limit, &path),
         None => window(
@@ -207,6 +228,50 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
     frame
+        .canvas
+        .save_png(path)
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// Draws the NURBS chain of `surface` with your stages and writes it to
+/// `path`: one line a stage, as [`screenshot`] prints them.
+fn chain_screenshot(
+    surface: course_viewer::tessellation::Surface,
+    size: u32,
+    limit: Duration,
+    path: &Path,
+) -> Result<()> {
+    use course_viewer::tessellation::{self as tess, chain_setup};
+    let mut worker = tess::worker(Stages::yours());
+    worker.request(chain_setup(surface, size));
+    let Some(drawing) = worker.wait(limit) else {
+        bail!(
+            "your stages did not finish the picture within {:.0} s (an endless loop?)",
+            limit.as_secs_f64()
+        );
+    };
+    let named = Stages::default();
+    println!(
+        "{:<10} {}  ({})",
+        named.decompose.name,
+        drawing.decomposition.describe(),
+        named.decompose.source
+    );
+    println!(
+        "{:<10} {}  ({})",
+        named.tessellate.name,
+        drawing.status.describe(),
+        drawing.setup.method.source()
+    );
+    let Some(result) = drawing.result else {
+        bail!("your stages drew no picture: the chain stopped at a stage above");
+    };
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    result
         .canvas
         .save_png(path)
         .with_context(|| format!("cannot write {}", path.display()))?;

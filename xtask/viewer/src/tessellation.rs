@@ -279,6 +279,25 @@ pub struct TessDrawing {
     pub decomposition: Status,
 }
 
+/// The chain picture of the grade report's "Your pipeline" section (`cargo
+/// xtask grade` draws it with your stages, beside `xtask/viewer/expected/`):
+/// the vase split by your topic 08 and tessellated by your topic 09.
+pub const REPORT_CHAIN: (&str, Surface) = ("nurbs-chain-vase.png", Surface::Vase);
+
+/// The set-up of a chain picture: `surface` uniform at four cells a
+/// side per patch, shaded with its edges, `size` pixels square.
+#[must_use]
+pub fn chain_setup(surface: Surface, size: u32) -> TessSetup {
+    TessSetup {
+        surface,
+        method: Method::Uniform,
+        level: 4,
+        look: Look::Both,
+        size,
+        ..TessSetup::default()
+    }
+}
+
 /// The worker that tessellates.
 pub type TessWorker = Worker<TessSetup, TessDrawing>;
 

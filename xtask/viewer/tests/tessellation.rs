@@ -249,3 +249,26 @@ fn an_unwritten_decomposition_is_named_and_stops_the_chain() {
     let drawing = draw(&setup(Surface::NurbsTorus, Method::Uniform), &stages);
     assert_eq!(drawing.decomposition, Status::Missing, "without topic 08");
 }
+
+/// The report's chain picture is what the solutions draw (this suite runs
+/// with them staged): regenerate it with `cargo xtask view --reference --
+/// --chain vase --screenshot xtask/viewer/expected/nurbs-chain-vase.png
+/// --size 200` when the chain changes, and look at it.
+#[test]
+fn the_reports_chain_picture_is_what_the_solutions_draw() {
+    use course_viewer::render::REPORT_SIZE;
+    use course_viewer::tessellation::{REPORT_CHAIN, chain_setup};
+    let (file, surface) = REPORT_CHAIN;
+    let drawing = draw(&chain_setup(surface, REPORT_SIZE), &Stages::yours());
+    let picture = drawing.result.expect("the solutions draw the chain").canvas;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("expected")
+        .join(file);
+    let expected =
+        canvas::Canvas::load_png(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(
+        picture.to_image(),
+        expected.to_image(),
+        "{file} is not what the solutions draw"
+    );
+}
