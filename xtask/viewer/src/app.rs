@@ -175,6 +175,8 @@ pub struct ViewerApp {
     /// machine: how long a frame took, the GPU's name (off in snapshot
     /// tests).
     show_timing: bool,
+    /// The pipeline scene outlines your clipped polygons over the picture.
+    outline_clipped: bool,
 }
 
 impl ViewerApp {
@@ -239,6 +241,7 @@ impl ViewerApp {
             screenshot_asked: false,
             screenshot: Arc::default(),
             show_timing: true,
+            outline_clipped: false,
         }
     }
 
@@ -646,6 +649,15 @@ impl ViewerApp {
             ui.radio_value(&mut self.settings.mode, Mode::Fill, "Filled");
         });
         ui.checkbox(&mut self.settings.clip, "Clipping");
+        ui.checkbox(
+            &mut self.outline_clipped,
+            "Outline your clipped polygons (drawn by the window, not by your lines)",
+        )
+        .on_hover_text(
+            "Topic 04 on its own: the polygons your Sutherland–Hodgman returns, \
+             outlined in yellow with the window's vector shapes. Shown by itself \
+             when your lines or fill draw nothing yet.",
+        );
         ui.checkbox(&mut self.settings.depth_test, "Depth test");
         ui.separator();
         ui.label("Camera (or drag the picture; scroll to zoom)");
@@ -729,12 +741,48 @@ impl ViewerApp {
             .get_or_insert_with(|| texture(ui, "picture", &frame.canvas))
             .clone();
         let response = magnified(ui, &texture, 0.0);
+        // Topic 04 without topics 01 and 03: your clipped polygons as
+        // outlines, when asked for or when nothing else draws them.
+        let drew = frame.stages[1..=2].iter().any(|s| s.status == Status::Ok);
+        if !frame.clipped.is_empty() && (self.outline_clipped || !drew) {
+            outline_polygons(ui, response.rect, &frame.canvas, &frame.clipped);
+            ui.label(
+                RichText::new(
+                    "Yellow: your clipped polygons, outlined by the window (not by your lines)",
+                )
+                .color(OUTLINE),
+            );
+        }
         let (around, above, zoom) = orbit(ui, &response);
         let settings = &mut self.settings;
         settings.yaw = (settings.yaw + around).clamp(-180.0, 180.0);
         settings.pitch = (settings.pitch + above).clamp(-89.0, 89.0);
         settings.distance = (settings.distance * zoom).clamp(1.0, 12.0);
         slow_notice(ui, "Your stages have been drawing this frame", slow);
+    }
+}
+
+/// The colour of the clipped polygons' outlines.
+const OUTLINE: Color32 = Color32::from_rgb(255, 215, 0);
+
+/// Draws `polygons` (pixel coordinates of `canvas`, `y` up) as closed
+/// outlines over the picture shown in `rect`, with egui's vector shapes.
+fn outline_polygons(ui: &egui::Ui, rect: egui::Rect, canvas: &Canvas, polygons: &[Vec<[f32; 2]>]) {
+    let (w, h) = (canvas.width() as f32, canvas.height() as f32);
+    let scale = egui::vec2(rect.width() / w, rect.height() / h);
+    let to_screen = |[x, y]: [f32; 2]| {
+        egui::pos2(
+            rect.left() + (x + 0.5) * scale.x,
+            rect.top() + (h - y - 0.5) * scale.y,
+        )
+    };
+    let painter = ui.painter_at(rect);
+    for polygon in polygons {
+        let points: Vec<egui::Pos2> = polygon.iter().map(|&p| to_screen(p)).collect();
+        painter.add(egui::Shape::closed_line(
+            points,
+            egui::Stroke::new(1.0, OUTLINE),
+        ));
     }
 }
 

@@ -142,6 +142,11 @@ pub struct Frame {
     pub stages: Vec<StageReport>,
     /// Polygons of the mesh, and how many reached the rasterizer.
     pub polygons: (usize, usize),
+    /// The polygons your clipping returned, in pixel coordinates of the
+    /// picture (`y` up, pixel centres at integers), for an outline drawn
+    /// by the window itself (not by any rasterizer of the course); empty
+    /// unless your clipping ran.
+    pub clipped: Vec<Vec<[f32; 2]>>,
 }
 
 impl Frame {
@@ -212,6 +217,19 @@ pub fn render(mesh: &Mesh, settings: &Settings, stages: &Stages) -> Frame {
         polygons
     };
     let drawn = polygons.len();
+    let clipped = if settings.clip && clip.status == Status::Ok {
+        polygons
+            .iter()
+            .filter_map(|polygon| {
+                polygon
+                    .iter()
+                    .map(|&v| pipeline.screen(v).map(|s| s.position.to_array()))
+                    .collect()
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
 
     // Every fragment goes through the depth test, or overwrites.
     let mut write = |canvas: &mut Canvas, fragment: Fragment| {
@@ -262,5 +280,6 @@ pub fn render(mesh: &Mesh, settings: &Settings, stages: &Stages) -> Frame {
         canvas,
         stages: vec![clip.report(), line.report(), fill.report(), depth.report()],
         polygons: (total, drawn),
+        clipped,
     }
 }

@@ -83,6 +83,44 @@ fn a_stage_at_todo_is_named_on_screen() {
     harness.snapshot("viewer_todo_stage");
 }
 
+/// Topic 04 without topic 01: your clipping's polygons are outlined by
+/// the window itself, labelled as such, where your lines draw nothing;
+/// with your lines they are outlined only when asked for.
+#[test]
+fn clipped_polygons_are_outlined_by_the_window_without_your_lines() {
+    const LABEL: &str = "Yellow: your clipped polygons, outlined by the window (not by your lines)";
+    let mut stages = Stages::yours();
+    stages.line.run = None;
+    let mut harness = harness(stages);
+    settle(&mut harness);
+    harness.get_by_label("clipping: ok");
+    harness.get_by_label(
+        "lines: left out: its topic is not in this build (it does not compile, or was not graded with it)",
+    );
+    let frame = harness.state().frame().unwrap();
+    assert!(!frame.clipped.is_empty());
+    assert_eq!(
+        frame.clipped.len(),
+        frame.polygons.1,
+        "every polygon clipping kept"
+    );
+    assert!(frame.canvas.pixels_not(canvas::Rgba::BLACK).is_empty());
+    harness.get_by_label(LABEL);
+    harness.snapshot("viewer_clipped_outlines");
+
+    let mut harness = self::harness(Stages::yours());
+    settle(&mut harness);
+    assert!(
+        harness.query_by_label(LABEL).is_none(),
+        "your lines draw them"
+    );
+    harness
+        .get_by_label("Outline your clipped polygons (drawn by the window, not by your lines)")
+        .click();
+    harness.run_steps(2);
+    harness.get_by_label(LABEL);
+}
+
 #[test]
 fn a_looping_stage_leaves_the_window_usable() {
     let release = Arc::new(AtomicBool::new(false));
