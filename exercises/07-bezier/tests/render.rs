@@ -1,6 +1,6 @@
 //! Task 6: the CPU render of a trimmed Bézier surface — tessellation,
 //! z-buffer, discard, Phong with the seed's two lights, wireframe
-//! (seed 000, §4.1–4.2.3, Listing 13, Figs. 15, 21, 26).
+//! (seed 000, §4.1–4.2.3, Listing 13, Figs. 15, 19, 21, 25–27).
 
 mod common;
 
@@ -157,4 +157,165 @@ fn figure_lit_hill_seen_from_below() {
             mismatched_fraction: 0.001,
         },
     );
+}
+
+/// Compares a figure with its reference image.
+fn check_figure(name: &str, canvas: &Canvas) {
+    testkit::image::assert_image_matches(
+        name,
+        canvas,
+        common::image_path(name),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.001,
+        },
+    );
+}
+
+/// Seed Abb. 19's trim: two ellipses cut out, by their closed forms (this
+/// task's pictures do not rest on the trim tasks).
+struct TwoEllipses([(DVec2, DVec2); 2]);
+
+impl bezier::Trim for TwoEllipses {
+    fn trims(&self, uv: DVec2) -> bool {
+        self.0
+            .iter()
+            .any(|&(centre, radii)| ((uv - centre) / radii).length_squared() < 1.0)
+    }
+}
+
+/// The region between an upper and a lower cubic Bézier curve whose
+/// control points are evenly spaced in `u` from `u0` to `u1` (so that `u`
+/// is linear in the curve parameter and `v` a cubic in it: seed 000's
+/// eq. (2) in closed form), sharing their ends.
+#[derive(Clone, Copy)]
+struct CubicRegion {
+    u0: f64,
+    u1: f64,
+    upper: [f64; 4],
+    lower: [f64; 4],
+}
+
+impl CubicRegion {
+    fn contains(&self, uv: DVec2) -> bool {
+        let t = (uv.x - self.u0) / (self.u1 - self.u0);
+        if !(0.0..=1.0).contains(&t) {
+            return false;
+        }
+        let s = 1.0 - t;
+        let v = |c: [f64; 4]| {
+            c[0] * s * s * s + 3.0 * c[1] * t * s * s + 3.0 * c[2] * t * t * s + c[3] * t * t * t
+        };
+        uv.y < v(self.upper) && uv.y > v(self.lower)
+    }
+}
+
+/// Seed Abb. 25 and 26: a cubic region cut out, with a smaller cubic
+/// region inside it kept.
+struct NestedCubics {
+    outer: CubicRegion,
+    inner: CubicRegion,
+}
+
+impl bezier::Trim for NestedCubics {
+    fn trims(&self, uv: DVec2) -> bool {
+        self.outer.contains(uv) && !self.inner.contains(uv)
+    }
+}
+
+/// The seed's cubic region (trim.rs's `CUBIC`) and a smaller one inside.
+const NESTED_CUBICS: NestedCubics = NestedCubics {
+    outer: CubicRegion {
+        u0: 0.1,
+        u1: 0.9,
+        upper: [0.5, 0.95, 0.75, 0.5],
+        lower: [0.5, 0.2, 0.05, 0.5],
+    },
+    inner: CubicRegion {
+        u0: 0.3,
+        u1: 0.7,
+        upper: [0.5, 0.7, 0.62, 0.5],
+        lower: [0.5, 0.36, 0.3, 0.5],
+    },
+};
+
+#[testkit::test]
+fn figure_hill_textured_with_two_ellipses_cut_out() {
+    // Seed Abb. 19: the hill, lit and textured (the checker stands in for
+    // the seed's bricks), two ellipses trimmed.
+    let [w, h] = common::FIGURE_SIZE;
+    let mut canvas = Canvas::new(w, h);
+    let ellipses = TwoEllipses([
+        (DVec2::new(0.3, 0.35), DVec2::new(0.18, 0.1)),
+        (DVec2::new(0.65, 0.65), DVec2::new(0.12, 0.22)),
+    ]);
+    render_surface(&mut canvas, hill, &ellipses, &settings(false)).unwrap();
+    check_figure("render_two_ellipses", &canvas);
+}
+
+#[testkit::test]
+fn figure_nested_cubic_regions_solid_and_wireframe() {
+    // Seed Abb. 25 and 26: a cubic region cut out with a cubic region kept
+    // inside it, shaded (left) and in wireframe mode (right).
+    let [w, h] = common::FIGURE_SIZE;
+    let mut strip = Canvas::new(2 * w, h);
+    for (k, wireframe) in [false, true].into_iter().enumerate() {
+        let mut panel = Canvas::new(w, h);
+        render_surface(&mut panel, hill, &NESTED_CUBICS, &settings(wireframe)).unwrap();
+        for (p, colour) in panel.enumerate() {
+            strip.set(canvas::Pixel::new(p.x + (k as u32 * w) as i32, p.y), colour);
+        }
+    }
+    check_figure("render_nested_cubics", &strip);
+}
+
+#[testkit::test]
+fn figure_several_trimmed_surfaces() {
+    // Seed Abb. 27: several trimmed Bézier surfaces rendered: the hill
+    // with a disc, a saddle with two ellipses, a wave with the nested cubic
+    // regions.
+    // Bicubic patches laid out as the hill is (u along +x, v along −z, the
+    // heights in y), with other heights.
+    let lifted = |heights: [[f64; 4]; 4]| {
+        BezierPatch::from_fn(3, 3, |i, j| {
+            DVec3::new(-0.5 + i as f64 / 3.0, heights[j][i], 0.5 - j as f64 / 3.0)
+        })
+        .unwrap()
+    };
+    let saddle = lifted([
+        [0.35, 0.15, 0.05, 0.0],
+        [0.15, 0.1, 0.1, 0.05],
+        [0.05, 0.1, 0.1, 0.15],
+        [0.0, 0.05, 0.15, 0.35],
+    ]);
+    let wave = lifted([
+        [0.0, 0.25, 0.0, 0.1],
+        [0.1, 0.0, 0.3, 0.0],
+        [0.0, 0.35, 0.0, 0.2],
+        [0.15, 0.0, 0.2, 0.0],
+    ]);
+    let disc = common::Disc {
+        centre: DVec2::new(0.5, 0.45),
+        radius: 0.2,
+    };
+    let ellipses = TwoEllipses([
+        (DVec2::new(0.3, 0.3), DVec2::new(0.15, 0.1)),
+        (DVec2::new(0.7, 0.7), DVec2::new(0.1, 0.18)),
+    ]);
+    let surfaces: [(BezierPatch, &dyn bezier::Trim); 3] = [
+        (BezierPatch::seed_hill(), &disc),
+        (saddle, &ellipses),
+        (wave, &NESTED_CUBICS),
+    ];
+    let [w, h] = common::FIGURE_SIZE;
+    let mut strip = Canvas::new(3 * w, h);
+    for (k, (patch, trim)) in surfaces.iter().enumerate() {
+        let mut panel = Canvas::new(w, h);
+        let surface = |uv: DVec2| Ok(common::sample_def(patch, uv));
+        render_surface(&mut panel, surface, *trim, &settings(false)).unwrap();
+        for (p, colour) in panel.enumerate() {
+            strip.set(canvas::Pixel::new(p.x + (k as u32 * w) as i32, p.y), colour);
+        }
+    }
+    check_figure("render_several_surfaces", &strip);
 }
