@@ -1,0 +1,115 @@
+//! The GPU scene's panel and picture.
+
+use eframe::egui;
+use egui::RichText;
+
+use crate::gpu_scene::{self, GpuSetup};
+
+use super::ViewerApp;
+use super::widgets::{magnified, orbit, slow_notice, stage_label, texture, trim_controls};
+
+impl ViewerApp {
+    /// The GPU scene: its controls on the right, the picture on the left.
+    pub(super) fn show_gpu(&mut self, ui: &mut egui::Ui) {
+        self.gpu.ask();
+        self.gpu.poll(ui);
+        self.two_panels(ui, Self::gpu_controls, Self::gpu_picture);
+    }
+
+    pub(super) fn gpu_controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Your GPU passes");
+        ui.label(
+            "Patches tessellated and drawn on the GPU by your topic 10 code: control pass, primitive generator, evaluation pass, shading, trimming and wireframe.",
+        );
+        ui.separator();
+        let setup = &mut self.gpu.setup;
+        egui::ComboBox::from_label("Surface")
+            .selected_text(setup.surface.label())
+            .show_ui(ui, |ui| {
+                for surface in gpu_scene::GpuSurface::ALL {
+                    ui.selectable_value(&mut setup.surface, surface, surface.label());
+                }
+            });
+        ui.horizontal(|ui| {
+            ui.radio_value(
+                &mut setup.levels,
+                gpu_scene::Levels::Uniform,
+                "Uniform levels",
+            );
+            ui.radio_value(&mut setup.levels, gpu_scene::Levels::Adaptive, "Adaptive");
+        });
+        match setup.levels {
+            gpu_scene::Levels::Uniform => {
+                ui.add(egui::Slider::new(&mut setup.level, 1.0..=64.0).text("level"));
+            }
+            gpu_scene::Levels::Adaptive => {
+                ui.add(
+                    egui::Slider::new(&mut setup.pixels_per_segment, 2.0..=100.0)
+                        .text("pixels per segment"),
+                );
+            }
+        }
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut setup.spacing, gpu_scene::Spacing::Equal, "equal");
+            ui.radio_value(
+                &mut setup.spacing,
+                gpu_scene::Spacing::FractionalEven,
+                "fractional even",
+            );
+            ui.radio_value(
+                &mut setup.spacing,
+                gpu_scene::Spacing::FractionalOdd,
+                "fractional odd",
+            );
+        });
+        ui.separator();
+        trim_controls(ui, &mut setup.trim);
+        ui.separator();
+        ui.checkbox(&mut setup.wireframe, "Wireframe");
+        ui.label("Camera (or drag the picture; scroll to zoom)");
+        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("around"));
+        ui.add(egui::Slider::new(&mut setup.pitch, -89.0..=89.0).text("above"));
+        ui.add(egui::Slider::new(&mut setup.distance, 0.8..=10.0).text("distance"));
+        if ui.button("Reset").clicked() {
+            *setup = GpuSetup::default();
+        }
+        ui.separator();
+        ui.heading("Your stages");
+        let Some(drawing) = &self.gpu.drawing else {
+            ui.label("drawing on the GPU …");
+            return;
+        };
+        for stage in &drawing.stages {
+            stage_label(ui, stage.name, stage.source, &stage.status);
+        }
+        if drawing.canvas.is_some() {
+            ui.label(format!("{} triangles", drawing.triangles));
+        }
+        if self.show_timing {
+            ui.label(RichText::new(format!("device: {}", drawing.device)).small());
+        }
+    }
+
+    pub(super) fn gpu_picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.gpu.worker.slow_for();
+        let scene = &mut self.gpu;
+        let Some(canvas) = scene.drawing.as_ref().and_then(|d| d.canvas.as_ref()) else {
+            ui.label(match &scene.drawing {
+                None => "drawing on the GPU …",
+                Some(_) => "nothing drawn: a stage it needs did not run (see the panel)",
+            });
+            slow_notice(ui, "Your GPU passes have been running", slow);
+            return;
+        };
+        if scene.textures.is_empty() {
+            scene.textures = vec![texture(ui, "gpu", canvas)];
+        }
+        let response = magnified(ui, &scene.textures[0], 0.0);
+        let (around, above, zoom) = orbit(ui, &response);
+        let setup = &mut scene.setup;
+        setup.yaw = (setup.yaw + around).clamp(-180.0, 180.0);
+        setup.pitch = (setup.pitch + above).clamp(-89.0, 89.0);
+        setup.distance = (setup.distance * zoom).clamp(0.8, 10.0);
+        slow_notice(ui, "Your GPU passes have been running", slow);
+    }
+}
