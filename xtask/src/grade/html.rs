@@ -8,7 +8,9 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::report::{self, Edition, Report, TaskReport, TaskStatus, TestReport, TestStatus};
+use super::report::{
+    self, Edition, Report, TaskReport, TaskStatus, TestReport, TestStatus, TopicReport,
+};
 
 /// Styles for the page: readable in light and dark mode, monospace diffs.
 const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:96em}\
@@ -80,15 +82,12 @@ pub fn page(report: &Report) -> String {
         Edition::Reference => "reference solutions",
     };
     let name = escape(&report.name());
+    let points = points_line(report);
     let _ = writeln!(
         html,
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
-         <title>{name}: {} of {} points</title><style>{STYLE}</style></head><body>\n\
-         <h1>{name}: {} of {} points</h1>\n<p>{edition} in <code>{}</code>, graded in {:.0} s{}{}</p>",
-        report::points(report.score),
-        report::points(report.max_score),
-        report::points(report.score),
-        report::points(report.max_score),
+         <title>{name}: {points}</title><style>{STYLE}</style></head><body>\n\
+         <h1>{name}: {points}</h1>\n<p>{edition} in <code>{}</code>, graded in {:.0} s{}{}</p>",
         escape(&report.root.display().to_string()),
         report.duration_s,
         if report.complete {
@@ -160,27 +159,61 @@ pub fn page(report: &Report) -> String {
     html
 }
 
-/// The summary across topics, first: points, a bar, and how many tasks
-/// are done, each topic linked to its section.
+/// "19 of 22 points + 3 bonus": the points of the tasks that are not
+/// bonuses against their maximum, and the bonus apart.
+fn points_line(report: &Report) -> String {
+    let base: f64 = report.topics.iter().map(TopicReport::base_score).sum();
+    let bonus: f64 = report.topics.iter().map(|t| t.bonus().0).sum();
+    let mut line = format!(
+        "{} of {} points",
+        report::points(report::round2(base)),
+        report::points(report.max_score)
+    );
+    if bonus > 0.0 {
+        let _ = write!(line, " + {} bonus", report::points(report::round2(bonus)));
+    }
+    line
+}
+
+/// The summary across topics, first: points (bonus points apart, so that
+/// a bonus never hides a lost point), a bar, and how many tasks are done,
+/// each topic linked to its section.
 fn summary(html: &mut String, report: &Report) {
     html.push_str(
-        "<table id=\"summary\"><tr><th>topic</th><th>points</th><th></th><th>tasks done</th></tr>\n",
+        "<table id=\"summary\"><tr><th>topic</th><th>points</th><th></th><th>bonus</th><th>tasks done</th></tr>\n",
     );
+    let bonus_cell = |(earned, possible): (f64, f64)| {
+        if possible > 0.0 {
+            format!(
+                "+{} of {}",
+                report::points(earned),
+                report::points(possible)
+            )
+        } else {
+            String::new()
+        }
+    };
+    let (mut base, mut bonus) = (0.0, (0.0, 0.0));
     for topic in &report.topics {
         let done = topic
             .tasks
             .iter()
             .filter(|t| t.status == TaskStatus::Ok)
             .count();
+        let score = topic.base_score();
+        let topic_bonus = topic.bonus();
+        base += score;
+        bonus = (bonus.0 + topic_bonus.0, bonus.1 + topic_bonus.1);
         let _ = writeln!(
             html,
             "<tr><td><a href=\"#{anchor}\">{name}</a></td><td>{score} / {max}</td>\
-             <td><progress value=\"{score}\" max=\"{max}\"></progress></td>\
+             <td><progress value=\"{score}\" max=\"{max}\"></progress></td><td>{bonus}</td>\
              <td class=\"{class}\">{done} of {tasks}</td></tr>",
             anchor = topic_anchor(&topic.name),
             name = escape(&topic.name),
-            score = report::points(topic.score),
-            max = report::points(topic.max_score.max(topic.score)),
+            score = report::points(score),
+            max = report::points(topic.max_score),
+            bonus = bonus_cell(topic_bonus),
             class = if done == topic.tasks.len() {
                 "ok"
             } else {
@@ -191,9 +224,10 @@ fn summary(html: &mut String, report: &Report) {
     }
     let _ = writeln!(
         html,
-        "<tr><th>total</th><th>{} / {}</th><th></th><th></th></tr></table>",
-        report::points(report.score),
-        report::points(report.max_score)
+        "<tr><th>total</th><th>{} / {}</th><th></th><th>{}</th><th></th></tr></table>",
+        report::points(report::round2(base)),
+        report::points(report.max_score),
+        bonus_cell(bonus)
     );
     if !report.pipeline.is_empty() {
         html.push_str("<p><a href=\"#pipeline\">Your pipeline</a>: the shipped meshes and the NURBS chain drawn by your stages.</p>\n");

@@ -109,6 +109,31 @@ pub struct TopicReport {
     pub tasks: Vec<TaskReport>,
 }
 
+impl TopicReport {
+    /// Points earned in the tasks that are not bonuses (at most
+    /// [`Self::max_score`]).
+    #[must_use]
+    pub fn base_score(&self) -> f64 {
+        round2(
+            self.tasks
+                .iter()
+                .filter(|t| !t.bonus)
+                .map(|t| t.score)
+                .sum(),
+        )
+    }
+
+    /// Bonus points earned, and possible.
+    #[must_use]
+    pub fn bonus(&self) -> (f64, f64) {
+        let bonus = || self.tasks.iter().filter(|t| t.bonus);
+        (
+            round2(bonus().map(|t| t.score).sum()),
+            round2(bonus().map(|t| t.points).sum()),
+        )
+    }
+}
+
 /// How a task did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -250,6 +275,51 @@ mod tests {
             images_dir: None,
             images: Vec::new(),
         }
+    }
+
+    fn task(id: &str, points: f64, bonus: bool, score: f64) -> TaskReport {
+        TaskReport {
+            id: id.to_owned(),
+            title: id.to_owned(),
+            points,
+            bonus,
+            score,
+            status: if score == points {
+                TaskStatus::Ok
+            } else {
+                TaskStatus::Fail
+            },
+            error: None,
+            hints: Vec::new(),
+            passed: 0,
+            failed: 0,
+            ignored: 0,
+            tests: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_topics_bonus_is_counted_apart_from_its_points() {
+        // 3 of 4 points lost, a 3-point bonus earned: the score (7 of 7
+        // in total) must not read as full points.
+        let topic = TopicReport {
+            name: "01-x".to_owned(),
+            package: "x".to_owned(),
+            dir: PathBuf::from("exercises/01-x"),
+            time_limit_s: 10.0,
+            memory_limit_mib: 4096,
+            compile_error: None,
+            errors: Vec::new(),
+            score: 7.0,
+            max_score: 7.0,
+            tasks: vec![
+                task("a", 3.0, false, 3.0),
+                task("b", 4.0, false, 1.0),
+                task("bonus", 3.0, true, 3.0),
+            ],
+        };
+        assert_eq!(topic.base_score(), 4.0);
+        assert_eq!(topic.bonus(), (3.0, 3.0));
     }
 
     #[test]

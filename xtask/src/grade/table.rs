@@ -163,16 +163,21 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
             statuses.push(Some(task.status));
         }
     }
-    rows.push(
-        [
-            "total",
-            "",
-            "",
-            &points_text(report.score, report.max_score),
-            "",
-        ]
-        .map(str::to_owned),
-    );
+    // The points of the tasks that are not bonuses against their maximum,
+    // the bonus apart: a bonus never hides a lost point.
+    let base: f64 = report.topics.iter().map(|t| t.base_score()).sum();
+    let (bonus, possible) = report.topics.iter().fold((0.0, 0.0), |(e, p), t| {
+        let (earned, of) = t.bonus();
+        (e + earned, p + of)
+    });
+    let mut total = points_text(report::round2(base), report.max_score);
+    if possible > 0.0 {
+        total = format!(
+            "{total} + {} bonus",
+            points_text(report::round2(bonus), possible)
+        );
+    }
+    rows.push(["total", "", "", &total, ""].map(str::to_owned));
     statuses.push(None);
     let mut widths = [0; 5];
     for row in &rows {
