@@ -721,22 +721,20 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     assert_eq!(ben_report["integrity"]["added"], serde_json::json!([]));
 
     let csv = fs::read_to_string(out.join("gradebook.csv")).unwrap();
-    let eve_row = if eve["sandboxed"] == true {
-        "eve,2,3,true,false,2"
-    } else {
-        "eve,0,3,false,true,0"
-    };
+    let (members, eve_row) = csv.split_at(csv.find("\neve,").expect("eve's row") + 1);
     assert_eq!(
-        csv,
-        format!(
-            "submission,score,max_score,complete,flagged,01-tiny\n\
-             anna,2,3,true,true,2\n\
-             ben,0,3,true,false,0\n\
-             cy,0,3,false,false,0\n\
-             dee,0,3,false,false,0\n\
-             {eve_row}\n"
-        )
+        members,
+        "submission,score,max_score,bonus,complete,flagged,01-tiny,01-tiny/double,01-tiny/negate,not_graded\n\
+         anna,2,3,0,true,true,2,2,0,\n\
+         ben,0,3,0,true,false,0,0,0,\n\
+         cy,0,3,0,false,false,0,0,0,01-tiny: does not compile\n\
+         dee,0,3,0,false,false,0,0,0,01-tiny: does not compile\n"
     );
+    if eve["sandboxed"] == true {
+        assert_eq!(eve_row, "eve,2,3,0,true,false,2,2,0,\n");
+    } else {
+        assert!(eve_row.starts_with("eve,0,3,0,false,true,0,"), "{eve_row}");
+    }
     let html = fs::read_to_string(out.join("anna/report.html")).unwrap();
     assert!(html.contains("Flagged"), "{html}");
     assert!(html.contains("<h1>anna: 2 of 3 points</h1>"), "{html}");
@@ -1146,12 +1144,12 @@ fn a_generated_class_is_graded_two_at_a_time_as_each_member_earns() {
     // partial one 0).
     assert_eq!(
         fs::read_to_string(out.join("gradebook.csv")).unwrap(),
-        "submission,score,max_score,complete,flagged,01-tiny\n\
-         s01-correct,3,3,true,false,3\n\
-         s02-faulty,0,3,true,false,0\n\
-         s03-partial,3,3,true,false,3\n\
-         s04-tampered,0,3,true,true,0\n\
-         s05-broken,0,3,false,false,0\n"
+        "submission,score,max_score,bonus,complete,flagged,01-tiny,01-tiny/double,01-tiny/negate,not_graded\n\
+         s01-correct,3,3,0,true,false,3,2,1,\n\
+         s02-faulty,0,3,0,true,false,0,0,0,\n\
+         s03-partial,3,3,0,true,false,3,2,1,\n\
+         s04-tampered,0,3,0,true,true,0,0,0,\n\
+         s05-broken,0,3,0,false,false,0,0,0,01-tiny: does not compile\n"
     );
     let tampered = read_json(&out.join("s04-tampered/report.json"));
     assert_eq!(
@@ -1220,8 +1218,8 @@ fn a_crlf_checkout_grades_like_an_lf_one() {
     assert!(output.status.success(), "{output:?}");
     assert_eq!(
         fs::read_to_string(out.join("gradebook.csv")).unwrap(),
-        "submission,score,max_score,complete,flagged,01-tiny\n\
-         crlf,2,3,true,false,2\n\
-         lf,2,3,true,false,2\n"
+        "submission,score,max_score,bonus,complete,flagged,01-tiny,01-tiny/double,01-tiny/negate,not_graded\n\
+         crlf,2,3,0,true,false,2,2,0,\n\
+         lf,2,3,0,true,false,2,2,0,\n"
     );
 }

@@ -242,7 +242,8 @@ impl TaskReport {
 /// Rounds to two decimals, for the files.
 #[must_use]
 pub fn round2(x: f64) -> f64 {
-    (x * 100.0).round() / 100.0
+    // `+ 0.0` turns −0 (the sum of nothing) into 0.
+    (x * 100.0).round() / 100.0 + 0.0
 }
 
 /// `3` for 3.0, `1.5` for 1.5: points as the task sheet writes them.
