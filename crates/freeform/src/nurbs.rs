@@ -29,7 +29,7 @@ const HALF_SQRT_2: f64 = std::f64::consts::FRAC_1_SQRT_2;
 
 /// The unit circle as four rational quadratic arcs: nine points `(x, y)`
 /// with their weights (the last point is the first), and its knots.
-const CIRCLE: [(f64, f64, f64); 9] = [
+pub(crate) const CIRCLE: [(f64, f64, f64); 9] = [
     (1.0, 0.0, 1.0),
     (1.0, 1.0, HALF_SQRT_2),
     (0.0, 1.0, 1.0),

@@ -23,9 +23,6 @@ use glam::DVec3;
 
 use crate::patch::{BezierPatch, PatchError};
 
-/// `√2 / 2`, the weight of a quarter circle's middle control point.
-const HALF_SQRT_2: f64 = std::f64::consts::FRAC_1_SQRT_2;
-
 /// A rational Bézier patch: its control points and a positive weight for
 /// each (module documentation).
 #[derive(Clone, Debug, PartialEq)]
@@ -211,19 +208,9 @@ impl RationalPatch {
             minor > 0.0 && minor < major && major.is_finite(),
             "a torus needs 0 < minor < major"
         );
-        // A unit circle as 4 rational quadratic arcs: 9 points, 9 weights
-        // (the last point is the first), quarter k on points 2k, 2k+1, 2k+2.
-        let circle: [(f64, f64, f64); 9] = [
-            (1.0, 0.0, 1.0),
-            (1.0, 1.0, HALF_SQRT_2),
-            (0.0, 1.0, 1.0),
-            (-1.0, 1.0, HALF_SQRT_2),
-            (-1.0, 0.0, 1.0),
-            (-1.0, -1.0, HALF_SQRT_2),
-            (0.0, -1.0, 1.0),
-            (1.0, -1.0, HALF_SQRT_2),
-            (1.0, 0.0, 1.0),
-        ];
+        // The unit circle's 9 points and weights ([`crate::nurbs::CIRCLE`]):
+        // quarter k on points 2k, 2k+1, 2k+2.
+        let circle = crate::nurbs::CIRCLE;
         let mut patches = Vec::with_capacity(16);
         for row in 0..4 {
             for col in 0..4 {
