@@ -18,8 +18,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 
+use crate::files::files_under;
 use crate::release;
-use crate::stage::{self, files_under};
+use crate::stage;
 use crate::test::Shortcut;
 
 /// What a generated member did.
@@ -99,7 +100,7 @@ fn make(
     let solve = |topic: &str| -> Result<()> {
         let solutions = root.join("reference").join(topic);
         for file in files_under(&solutions)? {
-            stage::write_file(
+            crate::files::write_file(
                 &member.join("exercises").join(topic).join(&file),
                 fs::read(solutions.join(&file))
                     .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?,
@@ -137,7 +138,7 @@ fn make(
                     bail!("the topics {topics:?} have no task files");
                 };
                 let stub = root.join(file);
-                stage::write_file(
+                crate::files::write_file(
                     &member.join(file),
                     fs::read(&stub).with_context(|| format!("cannot read {}", stub.display()))?,
                 )?;
@@ -150,7 +151,7 @@ fn make(
                 .join(&shortcut.file);
             let text = fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
-            stage::write_file(&path, shortcut.plant(&text)?)?;
+            crate::files::write_file(&path, shortcut.plant(&text)?)?;
         }
         Kind::Tampered => {
             let topic = &topics[pick(topics.len())];
@@ -163,7 +164,7 @@ fn make(
             let Some(file) = files.first() else {
                 bail!("{topic} has no test files");
             };
-            stage::write_file(&tests.join(file), "#[test]\nfn passes() {}\n")?;
+            crate::files::write_file(&tests.join(file), "#[test]\nfn passes() {}\n")?;
         }
         Kind::Broken => {
             topics.iter().try_for_each(|t| solve(t))?;
@@ -176,7 +177,7 @@ fn make(
             let path = member.join(file);
             let text = fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
-            stage::write_file(&path, format!("{text}\nfn unfinished( {{\n"))?;
+            crate::files::write_file(&path, format!("{text}\nfn unfinished( {{\n"))?;
         }
     }
     Ok(())

@@ -92,7 +92,7 @@ struct Drawn {
 /// `mine`), copies the figures into `<root>/target/figures/` and writes
 /// the index; `topics` narrows the figures to those topics.
 pub fn run(root: &Path, mine: bool, topics: &[String]) -> Result<()> {
-    if !mine && !root.join(crate::stage::SOLUTIONS).is_dir() {
+    if !mine && !root.join(crate::files::SOLUTIONS).is_dir() {
         bail!(
             "this edition has no reference solutions: `cargo xtask figures --mine` draws the figures with your code"
         );

@@ -8,6 +8,7 @@ mod cargo;
 mod class;
 mod classroom;
 mod figures;
+mod files;
 mod grade;
 mod gradescope;
 mod hint;

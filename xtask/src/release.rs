@@ -309,7 +309,7 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
         }
     };
     let mut files = Files::new();
-    for file in stage::files_under(root)? {
+    for file in crate::files::files_under(root)? {
         if !released(&file) {
             continue;
         }

@@ -33,7 +33,7 @@ const REVIEW_MANIFEST: &str = "# Written by `cargo xtask review`: a copy of the 
 fn pending_under(dir: &Path) -> Result<Vec<PathBuf>> {
     let mut found = Vec::new();
     if dir.is_dir() {
-        for file in crate::sandbox::files_under(dir) {
+        for file in crate::files::listing(dir) {
             if file.to_string_lossy().ends_with(".snap.new") {
                 found.push(file);
             }

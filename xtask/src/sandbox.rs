@@ -57,6 +57,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
 
+use crate::files::{bytes_under, walk};
 use crate::grade::report::Exit;
 
 /// How often a running job is checked on.
@@ -70,9 +71,6 @@ const WRITTEN_INTERVAL: Duration = Duration::from_millis(250);
 const SIGNAL_EXIT_BASE: i32 = 128;
 /// The exit code after an interrupt (128 + SIGINT, as shells report it).
 const INTERRUPTED_EXIT_CODE: i32 = SIGNAL_EXIT_BASE + 2;
-/// The most entries a walk of a writable folder visits: a job that makes
-/// more files than this is stopped as one that writes too much.
-pub const MAX_ENTRIES: usize = 20_000;
 
 /// The process groups of the jobs running now.
 static RUNNING: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
@@ -813,7 +811,7 @@ pub fn course_entries(root: &Path) -> Result<Vec<PathBuf>> {
     for entry in fs::read_dir(root).with_context(|| format!("cannot read {}", root.display()))? {
         let entry = entry.with_context(|| format!("cannot read {}", root.display()))?;
         let name = entry.file_name();
-        if ["target", ".git", crate::stage::SOLUTIONS]
+        if ["target", ".git", crate::files::SOLUTIONS]
             .iter()
             .any(|hidden| name == *hidden)
         {
@@ -840,64 +838,6 @@ fn create_log(path: &Path) -> Result<File> {
 /// `path` quoted for `sh`.
 fn shell_quoted(path: &Path) -> String {
     format!("'{}'", path.to_string_lossy().replace('\'', r"'\''"))
-}
-
-/// The bytes of the files under `dir`, never following a link; `None`
-/// past [`MAX_ENTRIES`] entries (a job making files without end).
-#[must_use]
-pub fn bytes_under(dir: &Path) -> Option<u64> {
-    let mut total = 0;
-    let mut seen = 0;
-    walk(dir, &mut |_, meta| {
-        seen += 1;
-        total += meta.len();
-        seen <= MAX_ENTRIES
-    })
-    .then_some(total)
-}
-
-/// Calls `visit` with every file and folder under `dir` (depth first,
-/// links neither followed nor visited) until it returns `false`; whether
-/// the walk went to its end.
-pub fn walk(dir: &Path, visit: &mut dyn FnMut(&Path, &fs::Metadata) -> bool) -> bool {
-    let Ok(entries) = fs::read_dir(dir) else {
-        return true;
-    };
-    for entry in entries.flatten() {
-        let path = entry.path();
-        let Ok(meta) = fs::symlink_metadata(&path) else {
-            continue;
-        };
-        if meta.file_type().is_symlink() {
-            continue;
-        }
-        if !visit(&path, &meta) {
-            return false;
-        }
-        if meta.is_dir() && !walk(&path, visit) {
-            return false;
-        }
-    }
-    true
-}
-
-/// The files under `dir`, relative to it and sorted: no link followed, at
-/// most [`MAX_ENTRIES`] looked at.
-#[must_use]
-pub fn files_under(dir: &Path) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    let mut seen = 0;
-    walk(dir, &mut |path, meta| {
-        seen += 1;
-        if meta.is_file()
-            && let Ok(relative) = path.strip_prefix(dir)
-        {
-            files.push(relative.to_path_buf());
-        }
-        seen <= MAX_ENTRIES
-    });
-    files.sort();
-    files
 }
 
 /// A memory and a pids cgroup (cgroup v1, which needs root) for one job:
@@ -1149,25 +1089,6 @@ mod tests {
         let _ = fs::remove_dir_all(&dir);
         fs::create_dir_all(&dir).unwrap();
         dir
-    }
-
-    #[test]
-    fn walks_follow_no_link_and_stop_at_their_bound() {
-        let dir = scratch("walk");
-        fs::create_dir_all(dir.join("a/b")).unwrap();
-        fs::write(dir.join("a/b/file"), "1234").unwrap();
-        #[cfg(unix)]
-        {
-            std::os::unix::fs::symlink(".", dir.join("a/loop")).unwrap();
-            std::os::unix::fs::symlink("..", dir.join("a/b/up")).unwrap();
-        }
-        assert_eq!(files_under(&dir), [PathBuf::from("a/b/file")]);
-        assert_eq!(bytes_under(&dir).map(|b| b >= 4), Some(true));
-        for n in 0..=MAX_ENTRIES {
-            File::create(dir.join(format!("f{n}"))).unwrap();
-        }
-        assert_eq!(bytes_under(&dir), None, "a walk past its bound says so");
-        fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

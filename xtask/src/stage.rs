@@ -40,12 +40,7 @@ use std::path::{Component, Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 
-/// Folders never copied, compared or deleted, at any depth: build output
-/// and history.
-pub const SKIPPED_FOLDERS: [&str; 2] = ["target", ".git"];
-/// The solutions: skipped at the top of a course (a fixture course inside
-/// the tooling may have a `reference/` of its own).
-pub const SOLUTIONS: &str = "reference";
+use crate::files::{files_under, plain_file, write_file};
 
 /// Where the stage and its build cache live, under the checkout.
 const STAGE_HOME: [&str; 2] = ["target", "xtask"];
@@ -136,40 +131,6 @@ pub enum Overlay<'a> {
 /// Lines (1-based) of task files whose `todo!()` the do-nothing edition
 /// keeps, by the file's path in the course.
 pub type DoNothingKeep = std::collections::BTreeMap<PathBuf, Vec<usize>>;
-
-/// Every file under `root`, relative to it and sorted, skipping
-/// [`SKIPPED_FOLDERS`] at any depth and [`SOLUTIONS`] at the top. Symbolic links are neither listed nor
-/// followed: one in a submission could point anywhere.
-pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
-    fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
-        let entries =
-            fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
-        for entry in entries {
-            let entry = entry.with_context(|| format!("cannot read {}", dir.display()))?;
-            let path = entry.path();
-            let kind = entry
-                .file_type()
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            if kind.is_dir() {
-                let name = entry.file_name();
-                let solutions = dir == root && name == SOLUTIONS;
-                if !solutions && !SKIPPED_FOLDERS.iter().any(|s| name == *s) {
-                    walk(root, &path, files)?;
-                }
-            } else if kind.is_file() {
-                let relative = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
-                files.push(relative);
-            }
-        }
-        Ok(())
-    }
-    let mut files = Vec::new();
-    if root.is_dir() {
-        walk(root, root, &mut files)?;
-    }
-    files.sort();
-    Ok(files)
-}
 
 /// Whether a path (relative to a course root) is a student's: inside
 /// `exercises/<topic>/src/`.
@@ -274,71 +235,7 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
 /// The lock file of a workspace.
 const LOCK_FILE: &str = "Cargo.lock";
 
-/// The most a file of a submission may hold to be read (a task file, a
-/// grading file compared with the course's).
-pub const MAX_SUBMITTED_FILE: u64 = 4 << 20;
-
-/// Whether `relative` under `root` is a plain file reached through plain
-/// folders: `Err` names the first symbolic link (or other non-file) on
-/// the way, for the report.
-pub fn plain_file(root: &Path, relative: &Path) -> std::result::Result<(), String> {
-    let mut path = root.to_path_buf();
-    let parts: Vec<Component<'_>> = relative.components().collect();
-    for (i, part) in parts.iter().enumerate() {
-        let Component::Normal(name) = part else {
-            return Err(format!("{} is not a plain path", relative.display()));
-        };
-        path.push(name);
-        let shown = || {
-            parts[..=i]
-                .iter()
-                .map(|c| c.as_os_str().to_string_lossy())
-                .collect::<Vec<_>>()
-                .join("/")
-        };
-        let meta =
-            fs::symlink_metadata(&path).map_err(|_| format!("{} does not exist", shown()))?;
-        if meta.file_type().is_symlink() {
-            return Err(format!("{} is a symbolic link", shown()));
-        }
-        let last = i + 1 == parts.len();
-        if last && !meta.is_file() {
-            return Err(format!("{} is not a plain file", shown()));
-        }
-        if !last && !meta.is_dir() {
-            return Err(format!("{} is not a folder", shown()));
-        }
-    }
-    Ok(())
-}
-
-/// The contents of `relative` under `root` if it is a plain file reached
-/// through plain folders ([`plain_file`]) and holds at most
-/// [`MAX_SUBMITTED_FILE`] bytes; `None` otherwise (a link, a device, a
-/// pipe, a flood: nothing the grader reads could block it or follow a
-/// link out of the submission).
-#[must_use]
-pub fn read_plain(root: &Path, relative: &Path) -> Option<Vec<u8>> {
-    use std::io::Read as _;
-    plain_file(root, relative).ok()?;
-    let file = File::open(root.join(relative)).ok()?;
-    let mut bytes = Vec::new();
-    file.take(MAX_SUBMITTED_FILE + 1)
-        .read_to_end(&mut bytes)
-        .ok()?;
-    (bytes.len() as u64 <= MAX_SUBMITTED_FILE).then_some(bytes)
-}
-
-/// Writes `contents` to `path`, creating the folders it lies in.
-pub fn write_file(path: &Path, contents: impl AsRef<[u8]>) -> Result<()> {
-    if let Some(parent) = path.parent() {
-        fs::create_dir_all(parent)
-            .with_context(|| format!("cannot create {}", parent.display()))?;
-    }
-    fs::write(path, contents).with_context(|| format!("cannot write {}", path.display()))
-}
-
-/// Makes `dest` hold exactly `files` (besides [`SKIPPED_FOLDERS`] and the
+/// Makes `dest` hold exactly `files` (besides [`crate::files::SKIPPED_FOLDERS`] and the
 /// [`STAGE_MARKER`]): writes a file only when its contents differ, removes
 /// the others and the folders they leave empty. Returns how many files
 /// were written, and the files removed.

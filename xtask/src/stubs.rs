@@ -283,7 +283,7 @@ pub fn is_wgsl(file: impl AsRef<Path>) -> bool {
 
 /// Lists the `.rs` and `.wgsl` files under `dir`, relative to it, sorted.
 fn source_files(dir: &Path) -> Result<Vec<PathBuf>> {
-    Ok(crate::stage::files_under(dir)?
+    Ok(crate::files::files_under(dir)?
         .into_iter()
         .filter(|file| file.extension().is_some_and(|ext| ext == "rs") || is_wgsl(file))
         .collect())
@@ -443,7 +443,7 @@ fn sync_topic(
             }
             continue;
         }
-        crate::stage::write_file(&target_path, generated)?;
+        crate::files::write_file(&target_path, generated)?;
         outcome.changed.push((target_path, None));
     }
     Ok(())

@@ -333,7 +333,7 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         stderr: Some(stderr.clone()),
     };
     let ended = Jail::get().run(&job);
-    let picture = crate::stage::read_plain(&scratch, Path::new(scene.file));
+    let picture = crate::files::read_plain(&scratch, Path::new(scene.file));
     let _ = fs::remove_dir_all(&scratch);
     let ended = match ended {
         Ok(ended) => ended,

@@ -52,8 +52,9 @@ use serde::Serialize;
 
 use super::report::{self, Edition, Report, TaskStatus};
 use super::{GradeOptions, Permits, table};
+use crate::files::files_under;
 use crate::release;
-use crate::stage::{self, Files, Overlay, Source, files_under, is_student_file};
+use crate::stage::{self, Files, Overlay, Source, is_student_file};
 use crate::topics::{self, Topic};
 
 /// What differs between a submission and the official course, in the
@@ -179,7 +180,7 @@ pub fn check(official: &Path, submission: &Path) -> Result<Integrity> {
     for file in files_under(submission)? {
         if is_student_file(&file) && !tasks.contains(&file) {
             let same = fs::read(official.join(&file)).is_ok_and(|ours| {
-                stage::read_plain(submission, &file).is_some_and(|t| same_text(&t, &ours))
+                crate::files::read_plain(submission, &file).is_some_and(|t| same_text(&t, &ours))
             });
             if !same {
                 integrity.not_graded.push(file);
@@ -209,7 +210,7 @@ fn compare(official: &Path, expected: &Files, submission: &Path) -> Result<Integ
         // file that is a link, a pipe or a flood counts as changed.
         if fs::symlink_metadata(submission.join(file)).is_err() {
             integrity.missing.push(file.clone());
-        } else if !stage::read_plain(submission, file)
+        } else if !crate::files::read_plain(submission, file)
             .is_some_and(|t| same_text(&t, &official_bytes))
         {
             integrity.changed.push(file.clone());
@@ -295,7 +296,7 @@ fn grade_one(
             .unwrap_or_default()
     };
     for task_file in stage::task_files(official)? {
-        match stage::plain_file(submission, &task_file) {
+        match crate::files::plain_file(submission, &task_file) {
             Ok(()) => {}
             Err(why)
                 if fs::symlink_metadata(submission.join(&task_file)).is_err()
@@ -314,7 +315,7 @@ fn grade_one(
                 continue;
             }
         }
-        let Some(text) = stage::read_plain(submission, &task_file)
+        let Some(text) = crate::files::read_plain(submission, &task_file)
             .and_then(|bytes| String::from_utf8(bytes).ok())
         else {
             continue;

@@ -115,7 +115,7 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         TestStatus::Failed
     };
     // Never following a link, never without end: the folder is the test's.
-    let images = crate::sandbox::files_under(&test.images_dir);
+    let images = crate::files::listing(&test.images_dir);
     let ran = !run.exit.not_run;
     let relative = |path: PathBuf| {
         path.strip_prefix(out)

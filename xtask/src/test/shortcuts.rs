@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail, ensure};
 
 use crate::grade::{self, GradeOptions, Report, TestStatus};
-use crate::stage::{self, Overlay};
+use crate::stage::Overlay;
 use crate::stubs;
 
 use super::{SHORTCUTS, empty_folder, one_per_topic};
@@ -156,11 +156,11 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
         let planted = empty_folder(root.join("target").join("xtask").join("shortcuts"))?;
         for shortcut in round {
             let solutions = root.join("reference").join(&shortcut.topic);
-            for file in stage::files_under(&solutions)? {
+            for file in crate::files::files_under(&solutions)? {
                 let to = Path::new("exercises").join(&shortcut.topic).join(&file);
                 let text = fs::read(solutions.join(&file))
                     .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?;
-                stage::write_file(&planted.join(to), text)?;
+                crate::files::write_file(&planted.join(to), text)?;
             }
             let file = Path::new("exercises")
                 .join(&shortcut.topic)
@@ -176,7 +176,7 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
             let text = shortcut
                 .plant(&source)
                 .with_context(|| format!("cannot plant {}", shortcut.what))?;
-            stage::write_file(&planted.join(file), text)?;
+            crate::files::write_file(&planted.join(file), text)?;
         }
         let mut options = GradeOptions::new(root.to_path_buf());
         let folder = match number {

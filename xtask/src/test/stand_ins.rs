@@ -45,7 +45,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     for (number, round) in rounds.iter().enumerate() {
         let planted = empty_folder(root.join("target").join("xtask").join("stand-ins"))?;
         for stand_in in round {
-            stage::write_file(&planted.join(&stand_in.file), &stand_in.planted)?;
+            crate::files::write_file(&planted.join(&stand_in.file), &stand_in.planted)?;
         }
         let mut options = GradeOptions::new(root.to_path_buf());
         options.out = root
@@ -143,7 +143,7 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
         if !src.is_dir() {
             continue;
         }
-        for file in stage::files_under(&src)? {
+        for file in crate::files::files_under(&src)? {
             let course_path = dir.join("src").join(&file);
             let is_rust = file.extension().is_some_and(|e| e == "rs");
             if is_rust && !task_files.contains(&course_path) {
