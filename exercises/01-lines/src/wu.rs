@@ -57,7 +57,7 @@ pub fn wu_line_traced(
 }
 
 /// Draws the antialiased line of [`wu_line_traced`] without its report
-/// (given: the pictures and the viewer use it).
+/// (given: the viewer and the benchmarks use it).
 pub fn wu_line(from: Pixel, to: Pixel, plot: impl FnMut(Pixel, f32)) {
     wu_line_traced(from, to, plot, |_| {});
 }
