@@ -5,7 +5,7 @@ mod common;
 use std::cell::RefCell;
 
 use canvas::{MAX_COORD, Pixel};
-use common::{INK, collect, nearest_pixels, octant_sheet};
+use common::{INK, nearest_pixels, octant_sheet};
 use lines::double_step::{DoubleStep, Pattern, double_step_line};
 use proptest::prelude::*;
 use testkit::{assert_pixels_eq, strategies::pixel_line};
