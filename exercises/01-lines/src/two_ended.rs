@@ -34,12 +34,26 @@ use canvas::{MAX_COORD, Pixel};
 /// - With pixels `p₀ = from, p₁, …, p_n = to` (one per column of the major
 ///   axis, `n = max(|Δx|, |Δy|)`), the order is
 ///   `p₀, p_n, p₁, p_(n−1), p₂, …`: each exactly once.
+/// - **Reporting rule.** Before each step, the walker that takes it
+///   reports its own decision variable `d` to `step`, the value the step
+///   is decided by; then the pixel it steps to is plotted. So the calls
+///   are `plot(p₀)`, `plot(p_n)`, `step(d)`, `plot(p₁)`, `step(d′)`,
+///   `plot(p_(n−1))`, …, alternating between the walkers. Each walker's
+///   `d` is task 2's, in its own first octant (from its own start towards
+///   its own end): it starts at `2·short − long` (`short`, `long`: the
+///   line's `|Δ|` along its minor and major axis) and grows by `2·short`
+///   after a straight step and by `2·(short − long)` after a diagonal one.
 /// - A zero-length line plots one pixel.
 /// - Endpoints beyond ±[`MAX_COORD`] draw nothing.
-pub fn two_ended_midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
+pub fn two_ended_midpoint_line(
+    from: Pixel,
+    to: Pixel,
+    mut plot: impl FnMut(Pixel),
+    mut step: impl FnMut(i64),
+) {
     // Unused until you write the body:
-    let _ = (&from, &to, &mut plot);
+    let _ = (&from, &to, &mut plot, &mut step);
     todo!(
-        "two_ended: one midpoint walker from each end, each with its own tie rule, stepped in turn until they meet"
+        "two_ended: one midpoint walker from each end, each with its own tie rule, stepped in turn until they meet; before each step report the stepping walker's decision variable to `step`"
     )
 }

@@ -13,7 +13,8 @@ use canvas::{MAX_COORD, Pixel};
 /// Draws the antialiased line from `from` to `to` and calls
 /// `plot(pixel, intensity)` for the two pixels of each major-axis column
 /// that straddle the ideal line (one pixel for the first and last
-/// columns, and for axis-parallel and diagonal lines).
+/// columns, and for axis-parallel and diagonal lines), reporting the
+/// error accumulator of each column to `error` before its two pixels.
 ///
 /// ```text
 ///   row j+1  ·  ·  ▒  ▓  the ideal line passes row j + f in each
@@ -22,17 +23,41 @@ use canvas::{MAX_COORD, Pixel};
 /// ```
 ///
 /// The fraction `f` lives in an unsigned error accumulator, a "0.64"
-/// fixed-point number: each column adds `⌈Δminor / Δmajor · 2⁶⁴⌉`, and an
-/// overflow (wrap-around) is the step to the next row. The intensity is
-/// the accumulator's top 8 bits, as in Wu's original. (Wu used 16 bits;
-/// 64 keep the accumulated rounding error below `Δmajor / 2⁶⁴`, so a line
-/// through a pixel centre lands on it exactly.)
+/// fixed-point number (a `u64` counting 2⁻⁶⁴ rows) that starts at 0 in
+/// `from`'s column: each further column adds `⌈Δminor / Δmajor · 2⁶⁴⌉`
+/// (rounded *up*, so that a column where the ideal line passes a pixel
+/// centre wraps exactly there), and an addition that overflows (wraps
+/// around) is the step to the next row `j`. The intensity is the
+/// accumulator's top 8 bits, as in Wu's original: `f = (error >> 56) /
+/// 256`, exactly. (Wu used 16 bits; 64 keep the accumulated rounding
+/// error below `Δmajor / 2⁶⁴`, so a line through a pixel centre lands on
+/// it exactly.)
+///
+/// **Reporting rule.** In order: `plot(from, 1.0)`; then for each column
+/// strictly between the endpoints, `error(e)` with the accumulator `e`
+/// just after that column's (wrapping) addition, then the pixel on row
+/// `j` with `1 − f`, then the pixel on row `j + 1` with `f` (rows in
+/// first-octant terms, counted along the minor axis away from `from`);
+/// finally `plot(to, 1.0)`. Axis-parallel and diagonal lines, which pass
+/// through every pixel centre, plot one pixel per column at `1.0` and
+/// report nothing; a zero-length line plots `from` alone.
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
-pub fn wu_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
+pub fn wu_line_traced(
+    from: Pixel,
+    to: Pixel,
+    mut plot: impl FnMut(Pixel, f32),
+    mut error: impl FnMut(u64),
+) {
     // Unused until you write the body:
-    let _ = (&from, &to, &mut plot);
+    let _ = (&from, &to, &mut plot, &mut error);
     todo!(
-        "wu: accumulate the fractional minor coordinate in an unsigned fixed-point error, stepping a row on wrap-around, and split each column between two pixels"
+        "wu: accumulate the fractional minor coordinate in a u64 0.64 fixed-point error, stepping a row on wrap-around; report each column's error to `error`, then split the column between two pixels by its top 8 bits"
     )
+}
+
+/// Draws the antialiased line of [`wu_line_traced`] without its report
+/// (given: the viewer and the benchmarks use it).
+pub fn wu_line(from: Pixel, to: Pixel, plot: impl FnMut(Pixel, f32)) {
+    wu_line_traced(from, to, plot, |_| {});
 }

@@ -3,7 +3,7 @@
 mod common;
 
 use canvas::{MAX_COORD, Pixel};
-use circles::integer_circle::{Decision, integer_circle};
+use circles::integer_circle::{Walk, integer_circle};
 use common::{
     HAND_CIRCLES, INK, circle_pixels, circle_row, closed_loop, collect, count, first_duplicate,
     grid_pixels, missing_mirror_image, radius_sheet, within_limits,
@@ -12,11 +12,13 @@ use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 use testkit::strategies::{hostile_pixel, pixel};
 
-/// Checks the decisions `integer_circle` reports, as they come, against
-/// their definitions: one at every pixel of the walk from `(0, R)` while
-/// `y > x`, with `h = d − ¼ = (x + 1)² + y² − y − R²`, `ΔE = 2x + 3`,
-/// `ΔSE = 2(x − y) + 5`; none for a circle that draws nothing.
-struct DecisionCheck {
+/// Checks the states of the walk `integer_circle` reports, as they come,
+/// against their definitions: one at every pixel of the walk from
+/// `(0, R)` while `y > x`, with `h = d − ¼ = (x + 1)² + y² − y − R²`,
+/// `ΔE = 2x + 3`, `ΔSE = 2(x − y) + 5`; none for a circle that draws
+/// nothing. At each one it also steps a copy that no circle has (see
+/// [`odd_step`]): the walk must add what it holds.
+struct WalkCheck {
     radius: i64,
     x: i64,
     y: i64,
@@ -25,7 +27,7 @@ struct DecisionCheck {
     error: Option<String>,
 }
 
-impl DecisionCheck {
+impl WalkCheck {
     fn new(centre: Pixel, radius: i32) -> Self {
         let walks = within_limits(centre, radius, radius);
         let r = i64::from(radius);
@@ -39,9 +41,9 @@ impl DecisionCheck {
         }
     }
 
-    fn expected(&self) -> Option<Decision> {
+    fn expected(&self) -> Option<Walk> {
         let (x, y, r) = (self.x, self.y, self.radius);
-        (self.walks && y > x).then(|| Decision {
+        (self.walks && y > x).then(|| Walk {
             x: x as i32,
             y: y as i32,
             h: (x + 1) * (x + 1) + y * y - y - r * r,
@@ -50,24 +52,28 @@ impl DecisionCheck {
         })
     }
 
-    fn see(&mut self, decision: Decision) {
+    fn see(&mut self, walk: Walk) {
         if self.error.is_some() {
             return;
         }
         match self.expected() {
             None => {
                 self.error = Some(format!(
-                    "reported {decision:?} after the walk ended (after {} decisions)",
+                    "reported {walk:?} after the walk ended (after {} states)",
                     self.count
                 ));
             }
-            Some(expected) if expected != decision => {
+            Some(expected) if expected != walk => {
                 self.error = Some(format!(
-                    "decision {} is {decision:?}, by the definitions it is {expected:?}",
+                    "state {} is {walk:?}, by the definitions it is {expected:?}",
                     self.count
                 ));
             }
             Some(expected) => {
+                if let Err(error) = odd_step(expected) {
+                    self.error = Some(format!("at state {}: {error}", self.count));
+                    return;
+                }
                 self.x += 1;
                 if expected.h >= 0 {
                     self.y -= 1;
@@ -84,20 +90,73 @@ impl DecisionCheck {
         }
         if let Some(missing) = self.expected() {
             panic!(
-                "{call}: {} decisions reported, the walk goes on at {missing:?} (report one at every pixel with y > x to `step`)",
+                "{call}: {} states reported, the walk goes on at {missing:?}",
                 self.count
             );
         }
     }
 }
 
-/// Runs `integer_circle`, checking every decision it reports (see
-/// [`DecisionCheck`]): every test grades the integer walk, not only its
+/// What `Walk::step` must make of `walk`: the table's sums, whatever the
+/// numbers are.
+fn by_the_table(walk: Walk) -> Walk {
+    if walk.h < 0 {
+        Walk {
+            x: walk.x + 1,
+            y: walk.y,
+            h: walk.h + walk.delta_e,
+            delta_e: walk.delta_e + 2,
+            delta_se: walk.delta_se + 2,
+        }
+    } else {
+        Walk {
+            x: walk.x + 1,
+            y: walk.y - 1,
+            h: walk.h + walk.delta_se,
+            delta_e: walk.delta_e + 2,
+            delta_se: walk.delta_se + 4,
+        }
+    }
+}
+
+/// Steps a copy of the circle's state `walk` that no circle has: `h`
+/// moved by about 2⁶⁰ away from 0 (so the step goes the same way, and a
+/// float, with 53 bits, cannot hold it), `ΔE` and `ΔSE` moved far from
+/// `2x + 3` and `2(x − y) + 5`. `Walk::step` must give the table's sums
+/// of what it holds: a walk that recomputes its increments from `x` and
+/// `y`, or `h` from the radius, or adds in `f64`, gives other numbers.
+fn odd_step(walk: Walk) -> Result<(), String> {
+    const FAR: i64 = (1 << 60) + 1;
+    let odd = Walk {
+        h: if walk.h < 0 {
+            walk.h - FAR
+        } else {
+            walk.h + FAR
+        },
+        delta_e: walk.delta_e + (3 << 40) + 7,
+        delta_se: walk.delta_se - (5 << 40) - 9,
+        ..walk
+    };
+    let mut yours = odd;
+    yours.step();
+    let expected = by_the_table(odd);
+    if yours == expected {
+        Ok(())
+    } else {
+        Err(format!(
+            "Walk::step of {odd:?} gives {yours:?}, adding what it holds gives {expected:?} \
+             (the step must add the increments it carries, in integers)"
+        ))
+    }
+}
+
+/// Runs `integer_circle`, checking every state it reports (see
+/// [`WalkCheck`]): every test grades the integer walk, not only its
 /// pixels.
 #[track_caller]
 fn draw(centre: Pixel, radius: i32, plot: impl FnMut(Pixel)) {
-    let mut check = DecisionCheck::new(centre, radius);
-    integer_circle(centre, radius, plot, |d| check.see(d));
+    let mut check = WalkCheck::new(centre, radius);
+    integer_circle(centre, radius, plot, |w| check.see(w));
     check.finish(&format!("integer_circle({centre}, {radius})"));
 }
 
@@ -143,9 +202,9 @@ fn radius_8_follows_the_differences_step_by_step() {
         &octant,
         "the second octant of integer_circle((0, 0), 8)",
     );
-    let mut decisions = Vec::new();
-    integer_circle(Pixel::new(0, 0), 8, |_| {}, |d| decisions.push(d));
-    let table: Vec<_> = decisions
+    let mut states = Vec::new();
+    integer_circle(Pixel::new(0, 0), 8, |_| {}, |w| states.push(w));
+    let table: Vec<_> = states
         .iter()
         .map(|d| (d.x, d.y, d.h, d.delta_e, d.delta_se))
         .collect();
@@ -161,6 +220,35 @@ fn radius_8_follows_the_differences_step_by_step() {
         ],
         "(x, y, h, ΔE, ΔSE) at each pixel of the walk"
     );
+}
+
+#[testkit::test]
+fn a_step_adds_what_the_walk_holds() {
+    // The table of `Walk` by hand, on the circle of radius 8 (see the trace
+    // above): at (3, 7), h = −6 < 0 goes E, h + ΔE = −6 + 9 = 3, ΔE 9 → 11,
+    // ΔSE −3 → −1; then h = 3 ≥ 0 goes SE, h + ΔSE = 3 − 1 = 2.
+    let walk = |x, y, h, delta_e, delta_se| Walk {
+        x,
+        y,
+        h,
+        delta_e,
+        delta_se,
+    };
+    assert_eq!(Walk::start(8), walk(0, 8, -7, 3, -11), "Walk::start(8)");
+    assert_eq!(Walk::start(0), walk(0, 0, 1, 3, 5), "Walk::start(0)");
+    let mut at = walk(3, 7, -6, 9, -3);
+    at.step();
+    assert_eq!(at, walk(4, 7, 3, 11, -1), "E from (3, 7)");
+    at.step();
+    assert_eq!(at, walk(5, 6, 2, 13, 3), "SE from (4, 7)");
+    // States no circle has: the step adds what it holds all the same. An
+    // f64 holds 2⁶⁰ + 1 as 2⁶⁰, and 2x + 3 would be 3 here, not 1000.
+    let mut odd = walk(0, 100, (1 << 60) + 1, 1000, -7);
+    odd.step();
+    assert_eq!(odd, walk(1, 99, (1 << 60) - 6, 1002, -3), "SE, h ≥ 0");
+    let mut odd = walk(10, 20, -(1 << 60) - 1, 1000, -7);
+    odd.step();
+    assert_eq!(odd, walk(11, 20, -(1 << 60) + 999, 1002, -5), "E, h < 0");
 }
 
 #[testkit::test]

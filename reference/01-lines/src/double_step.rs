@@ -44,32 +44,62 @@ impl Pattern {
     }
 }
 
+/// One double step as [`double_step_line`] reports it: the decision
+/// variable the pattern was chosen by, and the pattern.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DoubleStep {
+    /// The decision variable *before* this step's update, the value the
+    /// pattern was chosen by: the slides' `d` for slopes `m ≤ ½`, the
+    /// mirrored `e` for `m > ½` (see [`double_step_line`]).
+    pub d: i64,
+    /// The pattern chosen.
+    pub pattern: Pattern,
+}
+
 /// Rasterizes the line from `from` to `to` two pixels per step and calls
 /// `plot` once per pixel, in order from `from` to `to`; the pixels are
-/// exactly those of the midpoint line. Each double step first reports the
-/// pattern it chose to `step` (in first-octant terms: the rows of its two
-/// pixels counted along the minor axis, away from `from`), then plots its
-/// two pixels; the single last pixel of an odd number of steps reports no
-/// pattern.
+/// exactly those of the midpoint line.
 ///
-/// In the first octant (`0 ≤ Δy ≤ Δx`) the decision variable looks at the
-/// midpoints of the two columns ahead. For `m ≤ ½` the slides' variable
-/// `d = 4Δy − Δx` picks pattern 1 when `d ≤ 0`, pattern 2 when
-/// `d ≤ cond = 2Δy`, and pattern 3 otherwise; it grows by `4Δy` after
-/// pattern 1 and by `4Δy − 2Δx` after patterns 2 and 3. For `m > ½` the
-/// mirror image, `e = 4Δy − 3Δx`, picks pattern 4 when `e > 0`, pattern 2
-/// when `e ≤ 2(Δy − Δx)`, and pattern 3 otherwise; it grows by `4Δy − 4Δx`
-/// after pattern 4 and by `4Δy − 2Δx` after patterns 2 and 3. When the
-/// line has an odd number of steps, the last pixel is its endpoint.
+/// **Reporting rule.** Each double step first reports to `step` its
+/// decision variable, as it stands when the pattern is chosen, and the
+/// pattern it chose ([`DoubleStep`]); only then does it plot its two
+/// pixels and add its increment to the decision variable. The pattern is
+/// in first-octant terms: the rows of its two pixels counted along the
+/// minor axis, away from `from`. The first pixel, `from`, is plotted
+/// before any report; the single last pixel of an odd number of steps,
+/// the endpoint, reports nothing.
+///
+/// In the first octant (`0 ≤ Δy ≤ Δx`) the decision variable is twice
+/// `F(x, y) = Δy·x − Δx·y` at a midpoint of the second column ahead. For
+/// `m ≤ ½` it is the slides' `d`, at `(x + 2, y + ½)`: it starts at
+/// `d = 4Δy − Δx` and picks pattern 1 when `d ≤ 0`, pattern 2 when
+/// `d ≤ cond = 2Δy`, and pattern 3 otherwise; it grows by `incr1 = 4Δy`
+/// after pattern 1 and by `incr2 = 4Δy − 2Δx` after patterns 2 and 3. For
+/// `m > ½` it is the mirror image `e`, at `(x + 2, y + 3/2)`: it starts
+/// at `e = 4Δy − 3Δx` and picks pattern 4 when `e > 0`, pattern 2 when
+/// `e ≤ 2(Δy − Δx)`, and pattern 3 otherwise; it grows by `4Δy − 4Δx`
+/// after pattern 4 and by `4Δy − 2Δx` after patterns 2 and 3. (At
+/// `m = ½` both apply and give the same pixels; the slope decides which
+/// variable is reported: `d` when `2Δy ≤ Δx`.) A comparison that comes
+/// out equal (`d = 0`, `d = cond`, `e = 0`, `e = 2(Δy − Δx)`) is a
+/// midpoint exactly on the line, a tie: it goes by the midpoint line's
+/// rule (the smaller minor coordinate), which is not always the way the
+/// slides compare. When the line has an odd number of steps, the last
+/// pixel is its endpoint.
+///
+/// ```text
+///   from ■ ─ step(d₀, p₀) ─ ■ ■ ─ step(d₁, p₁) ─ ■ ■ ─ … ─ (■ to)
+///          report first,    then the two pixels of p₀, and d₁ = d₀ + incr(p₀)
+/// ```
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
 pub fn double_step_line(
     from: Pixel,
     to: Pixel,
     mut plot: impl FnMut(Pixel),
-    mut step: impl FnMut(Pattern),
+    mut step: impl FnMut(DoubleStep),
 ) {
-    // BEGIN SOLUTION double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code), report it to `step`, plot its two pixels; the pixels must equal the midpoint line's
+    // BEGIN SOLUTION double_step: choose one of the four patterns per double step (generalise the slides' m < 1/2 pseudo-code), report it with its decision variable to `step` before plotting its two pixels; the pixels must equal the midpoint line's
     if [from.x, from.y, to.x, to.y]
         .iter()
         .any(|c| c.unsigned_abs() > MAX_COORD as u32)
@@ -110,21 +140,18 @@ pub fn double_step_line(
         let mut d = 4 * short - long;
         while i + 2 <= long {
             let pattern = if !is_up(d) {
-                d += incr1;
                 Pattern::Flat
-            } else {
+            } else if is_up(d - cond) {
                 // The slides test `d < cond`; with `d = cond` the first
                 // midpoint lies on the line, a tie that the direction rule
                 // must decide like the midpoint line does.
-                let first_up = is_up(d - cond);
-                d += incr2;
-                if first_up {
-                    Pattern::StepFirst
-                } else {
-                    Pattern::StepSecond
-                }
+                Pattern::StepFirst
+            } else {
+                Pattern::StepSecond
             };
-            step(pattern);
+            // Reported as decided: before its pixels, before `d` moves on.
+            step(DoubleStep { d, pattern });
+            d += if pattern == Pattern::Flat { incr1 } else { incr2 };
             let [r1, r2] = pattern.rows();
             plot(pixel(i + 1, j + r1));
             plot(pixel(i + 2, j + r2));
@@ -136,18 +163,18 @@ pub fn double_step_line(
         let mut e = 4 * short - 3 * long;
         while i + 2 <= long {
             let pattern = if is_up(e) {
-                e += 4 * short - 4 * long;
                 Pattern::Steep
+            } else if is_up(e - 2 * (short - long)) {
+                Pattern::StepFirst
             } else {
-                let first_up = is_up(e - 2 * (short - long));
-                e += 4 * short - 2 * long;
-                if first_up {
-                    Pattern::StepFirst
-                } else {
-                    Pattern::StepSecond
-                }
+                Pattern::StepSecond
             };
-            step(pattern);
+            step(DoubleStep { d: e, pattern });
+            e += if pattern == Pattern::Steep {
+                4 * short - 4 * long
+            } else {
+                4 * short - 2 * long
+            };
             let [r1, r2] = pattern.rows();
             plot(pixel(i + 1, j + r1));
             plot(pixel(i + 2, j + r2));

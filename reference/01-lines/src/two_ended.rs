@@ -33,10 +33,24 @@ use canvas::{MAX_COORD, Pixel};
 /// - With pixels `p₀ = from, p₁, …, p_n = to` (one per column of the major
 ///   axis, `n = max(|Δx|, |Δy|)`), the order is
 ///   `p₀, p_n, p₁, p_(n−1), p₂, …`: each exactly once.
+/// - **Reporting rule.** Before each step, the walker that takes it
+///   reports its own decision variable `d` to `step`, the value the step
+///   is decided by; then the pixel it steps to is plotted. So the calls
+///   are `plot(p₀)`, `plot(p_n)`, `step(d)`, `plot(p₁)`, `step(d′)`,
+///   `plot(p_(n−1))`, …, alternating between the walkers. Each walker's
+///   `d` is task 2's, in its own first octant (from its own start towards
+///   its own end): it starts at `2·short − long` (`short`, `long`: the
+///   line's `|Δ|` along its minor and major axis) and grows by `2·short`
+///   after a straight step and by `2·(short − long)` after a diagonal one.
 /// - A zero-length line plots one pixel.
 /// - Endpoints beyond ±[`MAX_COORD`] draw nothing.
-pub fn two_ended_midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
-    // BEGIN SOLUTION two_ended: one midpoint walker from each end, each with its own tie rule, stepped in turn until they meet
+pub fn two_ended_midpoint_line(
+    from: Pixel,
+    to: Pixel,
+    mut plot: impl FnMut(Pixel),
+    mut step: impl FnMut(i64),
+) {
+    // BEGIN SOLUTION two_ended: one midpoint walker from each end, each with its own tie rule, stepped in turn until they meet; before each step report the stepping walker's decision variable to `step`
     if [from.x, from.y, to.x, to.y]
         .iter()
         .any(|c| c.unsigned_abs() > MAX_COORD as u32)
@@ -53,11 +67,14 @@ pub fn two_ended_midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixe
     // Pixels still to plot between the two ends.
     let mut left = near.long - 1;
     while left >= 2 {
+        step(near.d);
         plot(near.step());
+        step(far.d);
         plot(far.step());
         left -= 2;
     }
     if left == 1 {
+        step(near.d);
         plot(near.step());
     }
     // END SOLUTION
@@ -68,6 +85,7 @@ pub fn two_ended_midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixe
 struct Walker {
     x: i32,
     y: i32,
+    /// Twice `F` at the next midpoint, in this walker's first octant.
     d: i64,
     long: i64,
     short: i64,
