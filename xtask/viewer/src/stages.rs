@@ -255,7 +255,7 @@ impl Default for Stages {
             },
             wu: Stage {
                 name: "Wu line",
-                source: "01-lines · wu::wu_line",
+                source: "01-lines · wu::wu_line_traced (through the given wu::wu_line)",
                 run: None,
             },
             circle: Stage {
