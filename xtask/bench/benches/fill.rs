@@ -131,7 +131,12 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
         |b| {
             b.iter(|| {
                 for tri in triangles {
-                    fill_spans(tri, viewport, |span| canvas.fill_span(span, Rgba::WHITE));
+                    fill_spans(
+                        tri,
+                        viewport,
+                        |span| canvas.fill_span(span, Rgba::WHITE),
+                        |_, _| {},
+                    );
                 }
                 black_box(&canvas);
             });
