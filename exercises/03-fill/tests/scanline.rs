@@ -22,22 +22,28 @@ fn polygon(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
     collect(|plot| spans.into_iter().flat_map(Span::pixels).for_each(plot))
 }
 
+/// What `fill_spans` reports, in order.
+enum Event {
+    Span(Span),
+    Table(i32, Vec<ActiveEdge>),
+}
+
 /// The spans of `fill_spans`, after checking its table.
 #[track_caller]
 fn spans(vertices: &[Vec2], viewport: Viewport) -> Vec<Span> {
     // Spans and tables in the order they came.
-    let events: RefCell<Vec<Result<Span, (i32, Vec<ActiveEdge>)>>> = RefCell::default();
+    let events: RefCell<Vec<Event>> = RefCell::default();
     fill_spans(
         vertices,
         viewport,
-        |span| events.borrow_mut().push(Ok(span)),
-        |y, active| events.borrow_mut().push(Err((y, active.to_vec()))),
+        |span| events.borrow_mut().push(Event::Span(span)),
+        |y, active| events.borrow_mut().push(Event::Table(y, active.to_vec())),
     );
     let mut rows: Vec<(i32, Vec<ActiveEdge>)> = Vec::new();
     let mut spans = Vec::new();
     for event in events.into_inner() {
         match event {
-            Ok(span) => {
+            Event::Span(span) => {
                 assert!(
                     rows.last().is_some_and(|(y, _)| *y == span.y),
                     "fill_spans({vertices:?}, {viewport:?}): {span:?} does not follow its \
@@ -45,7 +51,7 @@ fn spans(vertices: &[Vec2], viewport: Viewport) -> Vec<Span> {
                 );
                 spans.push(span);
             }
-            Err(row) => rows.push(row),
+            Event::Table(y, active) => rows.push((y, active)),
         }
     }
     check_table(vertices, viewport, &rows);

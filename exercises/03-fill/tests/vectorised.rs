@@ -81,17 +81,23 @@ fn clipped_box(vertices: [Vertex; 3], viewport: Viewport) -> Option<([i64; 2], [
     (x[0] <= x[1] && y[0] <= y[1]).then_some((x, y))
 }
 
+/// What `fill_triangle_vectorised` reports, in order.
+enum Event {
+    Batch(Batch),
+    Plot(Fragment, EdgeWeights),
+}
+
 /// The fragments of `fill_triangle_vectorised`, after checking the batches
 /// it reported (see [`check_batches`]) and the exact weights of every
 /// fragment: every test grades the lanes, not only the pixels.
 #[track_caller]
 fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
-    let events: RefCell<Vec<Result<Batch, (Fragment, EdgeWeights)>>> = RefCell::default();
+    let events: RefCell<Vec<Event>> = RefCell::default();
     fill_triangle_vectorised(
         vertices,
         viewport,
-        |batch| events.borrow_mut().push(Ok(*batch)),
-        |fragment, weights| events.borrow_mut().push(Err((fragment, weights))),
+        |batch| events.borrow_mut().push(Event::Batch(*batch)),
+        |fragment, weights| events.borrow_mut().push(Event::Plot(fragment, weights)),
     );
     check_batches(vertices, viewport, &events.into_inner())
 }
@@ -103,11 +109,7 @@ fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
 /// lanes' fragments, in lane order, with the batch's depth and the exact
 /// edge weights.
 #[track_caller]
-fn check_batches(
-    vertices: [Vertex; 3],
-    viewport: Viewport,
-    events: &[Result<Batch, (Fragment, EdgeWeights)>],
-) -> Vec<Fragment> {
+fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) -> Vec<Fragment> {
     let call = format!(
         "fill_triangle_vectorised({:?}, {viewport:?})",
         vertices.map(|v| v.position)
@@ -127,7 +129,10 @@ fn check_batches(
     }
     let reported: Vec<(i32, i32, usize)> = events
         .iter()
-        .filter_map(|e| e.as_ref().ok().map(|b| (b.x, b.y, b.len)))
+        .filter_map(|e| match e {
+            Event::Batch(b) => Some((b.x, b.y, b.len)),
+            Event::Plot(..) => None,
+        })
         .collect();
     assert!(
         reported == tiling,
@@ -152,7 +157,7 @@ fn check_batches(
     };
     for event in events {
         match event {
-            Ok(batch) => {
+            Event::Batch(batch) => {
                 finish(&mut current);
                 for k in 0..LANES {
                     let pixel = Pixel::new(batch.x + k as i32, batch.y);
@@ -176,7 +181,7 @@ fn check_batches(
                 }
                 current = Some((*batch, Vec::new()));
             }
-            Err((fragment, weights)) => {
+            Event::Plot(fragment, weights) => {
                 let Some((batch, plotted)) = current.as_mut() else {
                     panic!("{call}: {fragment:?} is plotted before any batch was reported");
                 };
