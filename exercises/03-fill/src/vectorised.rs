@@ -37,6 +37,12 @@ pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed-point units.
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
+/// Where a lane's threshold `−(base_i + bias_i)` is clamped so that it fits
+/// `i64`: the lanes' offsets stay below 2⁴⁴, so beyond ±2⁶² none of them
+/// can reach it and the comparison keeps its answer.
+#[allow(dead_code)]
+const CLAMP: i128 = 1 << 62;
+
 /// The exact edge functions at a pixel, as in `edge_function`:
 /// `weights[k]` belongs to vertex `k` as given, `≥ 0` inside.
 pub type EdgeWeights = [i128; 3];
@@ -66,9 +72,10 @@ pub struct Batch {
     /// Per lane: whether the pixel's centre is covered (top-left rule);
     /// `false` from `len` on.
     pub covered: [bool; LANES],
-    /// Per lane: the depth interpolated there, `Σ λ_k · depth_k` (computed
-    /// for every lane, as the seed's matrices are; meaningful where
-    /// covered).
+    /// Per lane: the depth interpolated there, `Σ λ_k · depth_k`, computed
+    /// for every lane of a batch with a covered lane, as the seed's
+    /// matrices are (meaningful where covered; all 0 in a batch with no
+    /// covered lane).
     pub depth: [f32; LANES],
 }
 
@@ -92,9 +99,11 @@ pub struct Batch {
 ///   right side clamped to ±2⁶² so that it fits `i64` too (beyond the
 ///   clamp no offset changes the answer). Lanes past `len` are switched
 ///   off.
-/// - **Interpolation**, in every lane: `λ(i+2) = (base_i + offset) · (1/D)`
-///   in `f64`, `1/D` computed once; depth `λ0·d0 + λ1·d1 + λ2·d2` and each
-///   channel of the colour likewise, in `f32`.
+/// - **Interpolation**, in every lane of a batch with a covered lane:
+///   `λ(i+2) = (base_i + offset) · (1/D)` in `f64`, `1/D` computed once;
+///   depth `λ0·d0 + λ1·d1 + λ2·d2` and each channel of the colour
+///   likewise, in `f32`. A batch with no covered lane is reported with
+///   depths 0 and mixes nothing.
 /// - **Plot** the covered lanes in order, each with its batch's depth, the
 ///   interpolated colour and the exact weights: `weights[k]` for vertex `k`
 ///   as given is `−O_i` for the vertex `i + 2` of the clockwise triangle.
