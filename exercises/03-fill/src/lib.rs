@@ -25,3 +25,7 @@ pub mod edge_function;
 
 /// Task 6 (bonus): the triangle in 8 × 8 blocks, data-parallel edge functions.
 pub mod blocked;
+
+/// Task 7 (bonus): the triangle in lanes over its bounding box, edge
+/// functions, coverage and interpolation as arrays (seed 004, §6.4).
+pub mod vectorised;

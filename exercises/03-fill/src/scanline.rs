@@ -29,7 +29,9 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// Fills the closed polygon through `vertices` (an edge also joins the last
 /// vertex to the first) with the even-odd rule and calls `span` once per
 /// run of filled pixels inside `viewport`: rows bottom to top, the runs of
-/// a row left to right, never empty, never overlapping.
+/// a row left to right, never empty, never overlapping. Before the spans
+/// of a row, `table(y, active)` reports the active edge table of that row
+/// (see below); rows with no active edge are skipped and not reported.
 ///
 /// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
 /// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
@@ -51,19 +53,55 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// that cross it. (Departure from the slides, which sort all intersection
 /// points of all rows at once: "hoher Sortieraufwand!")
 ///
+/// ```text
+///   row 5   active: e2 (x 3.0)  e0 (x 7.5)     e1 left after row 4,
+///   row 4   active: e1 (x 2.5)  e0 (x 7.0)     e2 joined at row 5
+///   row 3   active: e1 (x 2.0)  e0 (x 6.5)
+/// ```
+///
+/// `table(y, active)` receives row `y`'s active list after its sort: one
+/// [`ActiveEdge`] per edge that crosses the row, in order of `x`, which is
+/// [`crossing`] at that row. Only rows inside `viewport` are walked and
+/// reported. Departure from the classic table, which keeps `x` and `1/m`
+/// in each entry and adds `1/m` per row: a running sum of `f64` steps
+/// drifts off the exact crossing in its last bits, and a centre exactly on
+/// an edge would then change sides; [`crossing`] costs a multiplication
+/// more and is the definition's `x` bit for bit.
+///
 /// Fewer than three vertices, or any NaN or infinite coordinate, fill
-/// nothing. Huge coordinates are fine: rows and spans are clipped to
-/// `viewport` before any pixel is visited.
-pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Span)) {
+/// nothing and report no row. Huge coordinates are fine: rows and spans are
+/// clipped to `viewport` before any pixel is visited.
+pub fn fill_spans(
+    vertices: &[Vec2],
+    viewport: Viewport,
+    mut span: impl FnMut(Span),
+    mut table: impl FnMut(i32, &[ActiveEdge]),
+) {
     // Unused until you write the body:
-    let _ = (&vertices, &viewport, &mut span);
+    let _ = (&vertices, &viewport, &mut span, &mut table);
     todo!(
-        "scanline: active edge table; crossings at pixel rows; one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
+        "scanline: edge table sorted by first row; per row the active edges (report them to `table`, sorted by x), then one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
     )
 }
 
-/// The pixels of [`fill_spans`], one `plot` call per pixel (given: the
-/// tests and the pictures use it).
+/// An entry of the active edge table as [`fill_spans`] reports it: which
+/// edge, and where it crosses the row.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActiveEdge {
+    /// The edge from `vertices[edge]` to `vertices[edge + 1]` (the last
+    /// edge, `edge = n − 1`, closes the polygon back to `vertices[0]`).
+    pub edge: usize,
+    /// Where it crosses the row: [`crossing`] of its end points.
+    pub x: f64,
+}
+
+/// The pixels of [`fill_spans`], one `plot` call per pixel, the table
+/// unobserved (given: the tests and the pictures use it).
 pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
-    fill_spans(vertices, viewport, |span| span.pixels().for_each(&mut plot));
+    fill_spans(
+        vertices,
+        viewport,
+        |span| span.pixels().for_each(&mut plot),
+        |_, _| {},
+    );
 }

@@ -3,25 +3,147 @@
 
 mod common;
 
-use canvas::{Pixel, Vec2, Viewport};
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+use canvas::{Canvas, Pixel, Vec2, Viewport};
 use common::{
-    POLYGON_VIEWPORT, any_polygon, collect, even_odd_pixels, first_duplicate, grid_pixels,
+    POLYGON_VIEWPORT, any_polygon, crossing, even_odd_pixels, first_duplicate, grid_pixels,
     hostile_polygon, star_polygon,
 };
 use fill::edge_fence::{edge_fill, fence_fill};
 use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 
+/// Edge fill's pixels and count, after checking its inversions pixel by
+/// pixel (see [`check_inversions`]): every test grades the inverting, not
+/// only the pixels it leaves.
+#[track_caller]
 fn by_edges(vertices: &[Vec2], viewport: Viewport) -> (Vec<Pixel>, u64) {
-    let mut n = 0;
-    let pixels = collect(|plot| n = edge_fill(vertices, viewport, plot));
-    (pixels, n)
+    traced(vertices, None, viewport, |plot, invert| {
+        edge_fill(vertices, viewport, plot, invert)
+    })
 }
 
+/// Fence fill's pixels and count, after checking its inversions.
+#[track_caller]
 fn by_fence(vertices: &[Vec2], fence: i32, viewport: Viewport) -> (Vec<Pixel>, u64) {
-    let mut n = 0;
-    let pixels = collect(|plot| n = fence_fill(vertices, fence, viewport, plot));
-    (pixels, n)
+    traced(vertices, Some(fence), viewport, |plot, invert| {
+        fence_fill(vertices, fence, viewport, plot, invert)
+    })
+}
+
+/// Runs a fill, keeps its plots and inversions in order, and checks them.
+#[track_caller]
+fn traced(
+    vertices: &[Vec2],
+    fence: Option<i32>,
+    viewport: Viewport,
+    fill: impl FnOnce(&mut dyn FnMut(Pixel), &mut dyn FnMut(Pixel)) -> u64,
+) -> (Vec<Pixel>, u64) {
+    let call = match fence {
+        None => format!("edge_fill({vertices:?}, {viewport:?})"),
+        Some(fence) => format!("fence_fill({vertices:?}, {fence}, {viewport:?})"),
+    };
+    let plotted = RefCell::new(Vec::new());
+    let inverted = RefCell::new(Vec::new());
+    let mut late = None;
+    let n = fill(&mut |p| plotted.borrow_mut().push(p), &mut |p| {
+        if late.is_none() && !plotted.borrow().is_empty() {
+            late = Some(p);
+        }
+        inverted.borrow_mut().push(p);
+    });
+    if let Some(p) = late {
+        panic!(
+            "{call}: the inversion of {p} comes after a pixel was plotted (invert first, then plot)"
+        );
+    }
+    let inverted = inverted.into_inner();
+    assert_eq!(
+        n,
+        inverted.len() as u64,
+        "{call}: the count returned is not the number of inversions reported to `invert`"
+    );
+    check_inversions(
+        &call,
+        &expected_inversions(vertices, fence, viewport),
+        &inverted,
+    );
+    (plotted.into_inner(), n)
+}
+
+/// How often each pixel is inverted, as the sheet defines it: for every
+/// crossing of an edge with a row of the buffer (lower end in, upper end
+/// out), `c = ⌈s⌉` clamped to `x_min ..= x_max + 1`; edge fill inverts
+/// `c ..= x_max`, fence fill (fence `f` clamped alike) `c ..= f − 1` or
+/// `f ..= c − 1`. Nothing for an invalid polygon or a buffer of more than
+/// `Canvas::MAX_PIXELS`.
+fn expected_inversions(
+    vertices: &[Vec2],
+    fence: Option<i32>,
+    viewport: Viewport,
+) -> HashMap<Pixel, u64> {
+    let mut counts = HashMap::new();
+    if vertices.len() < 3 || !vertices.iter().all(|v| v.is_finite()) || viewport.is_empty() {
+        return counts;
+    }
+    let lo = vertices
+        .iter()
+        .map(|v| f64::from(v.y))
+        .fold(f64::INFINITY, f64::min);
+    let hi = vertices
+        .iter()
+        .map(|v| f64::from(v.y))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let y0 = lo.ceil().max(f64::from(viewport.y_min));
+    let y1 = (hi.ceil() - 1.0).min(f64::from(viewport.y_max));
+    if y0 > y1 {
+        return counts;
+    }
+    let (left, right) = (i64::from(viewport.x_min), i64::from(viewport.x_max) + 1);
+    let height = (y1 - y0) as u64 + 1;
+    if ((right - left) as u64).saturating_mul(height) > Canvas::MAX_PIXELS {
+        return counts;
+    }
+    // Edge fill is a fence past the right end.
+    let fence = fence.map_or(right, |f| i64::from(f).clamp(left, right));
+    let n = vertices.len();
+    for i in 0..n {
+        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
+        for y in y0 as i32..=y1 as i32 {
+            if (f64::from(a.y) <= f64::from(y)) == (f64::from(b.y) <= f64::from(y)) {
+                continue;
+            }
+            let c = crossing(a, b, y).ceil().clamp(left as f64, right as f64) as i64;
+            for x in c.min(fence)..c.max(fence) {
+                *counts.entry(Pixel::new(x as i32, y)).or_insert(0) += 1;
+            }
+        }
+    }
+    counts
+}
+
+#[track_caller]
+fn check_inversions(call: &str, expected: &HashMap<Pixel, u64>, inverted: &[Pixel]) {
+    let mut yours: HashMap<Pixel, u64> = HashMap::new();
+    for &p in inverted {
+        *yours.entry(p).or_insert(0) += 1;
+    }
+    let mut pixels: Vec<Pixel> = expected.keys().chain(yours.keys()).copied().collect();
+    pixels.sort_by_key(|p| (p.y, p.x));
+    pixels.dedup();
+    for p in pixels {
+        let (want, got) = (
+            expected.get(&p).copied().unwrap_or(0),
+            yours.get(&p).copied().unwrap_or(0),
+        );
+        assert_eq!(
+            got, want,
+            "{call}: {p} is inverted {got} times, the crossings of its row invert it {want} times \
+             (sheet, ‘What is counted’)"
+        );
+    }
 }
 
 fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
@@ -115,6 +237,20 @@ proptest! {
         let (yours, _) = by_fence(&shape, fence, POLYGON_VIEWPORT);
         assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}, fence {fence}"));
         prop_assert_eq!(first_duplicate(&yours), None);
+    }
+
+    #[testkit::test]
+    fn fence_through_a_vertex_as_the_slides_place_it(
+        shape in prop_oneof![star_polygon(), any_polygon()], k in 0usize..12,
+    ) {
+        // The slides' fence is the vertical through a vertex, where two
+        // edges meet: the column ⌈v.x⌉. The helper checks every pixel's
+        // inversions.
+        if let Some(v) = shape.get(k % shape.len().max(1)) {
+            let fence = v.x.ceil() as i32;
+            let (yours, _) = by_fence(&shape, fence, POLYGON_VIEWPORT);
+            assert_pixels_eq(&even_odd_pixels(&shape, POLYGON_VIEWPORT), &yours, &format!("{shape:?}, fence {fence} through vertex {k}"));
+        }
     }
 
     #[testkit::test]

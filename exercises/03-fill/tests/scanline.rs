@@ -2,17 +2,120 @@
 
 mod common;
 
+use std::cell::RefCell;
+
 use canvas::{Pixel, Span, Vec2, Viewport};
 use common::{
-    POLYGON_VIEWPORT, any_polygon, canvas_with, collect, even_odd_pixels, first_duplicate,
-    grid_pixels, hostile_polygon, star_polygon,
+    POLYGON_VIEWPORT, any_polygon, canvas_with, collect, crossing, even_odd_pixels,
+    first_duplicate, grid_pixels, hostile_polygon, star_polygon,
 };
-use fill::scanline::{fill_polygon, fill_spans};
+use fill::scanline::{ActiveEdge, fill_spans};
 use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 
+/// The pixels of `fill_spans`, after checking the active edge table it
+/// reported (see [`check_table`]): every test grades the table, not only
+/// the pixels.
+#[track_caller]
 fn polygon(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
-    collect(|plot| fill_polygon(vertices, viewport, plot))
+    let spans = spans(vertices, viewport);
+    collect(|plot| spans.into_iter().flat_map(Span::pixels).for_each(plot))
+}
+
+/// What `fill_spans` reports, in order.
+enum Event {
+    Span(Span),
+    Table(i32, Vec<ActiveEdge>),
+}
+
+/// The spans of `fill_spans`, after checking its table.
+#[track_caller]
+fn spans(vertices: &[Vec2], viewport: Viewport) -> Vec<Span> {
+    // Spans and tables in the order they came.
+    let events: RefCell<Vec<Event>> = RefCell::default();
+    fill_spans(
+        vertices,
+        viewport,
+        |span| events.borrow_mut().push(Event::Span(span)),
+        |y, active| events.borrow_mut().push(Event::Table(y, active.to_vec())),
+    );
+    let mut rows: Vec<(i32, Vec<ActiveEdge>)> = Vec::new();
+    let mut spans = Vec::new();
+    for event in events.into_inner() {
+        match event {
+            Event::Span(span) => {
+                assert!(
+                    rows.last().is_some_and(|(y, _)| *y == span.y),
+                    "fill_spans({vertices:?}, {viewport:?}): {span:?} does not follow its \
+                     row's table (report row y's active edges to `table`, then its spans)"
+                );
+                spans.push(span);
+            }
+            Event::Table(y, active) => rows.push((y, active)),
+        }
+    }
+    check_table(vertices, viewport, &rows);
+    spans
+}
+
+/// The active edge table row by row, as the sheet defines it: every row of
+/// the viewport that some edge crosses (lower end in, upper end out),
+/// upwards, and in it exactly those edges, at `x` = `crossing` bit for
+/// bit, in order of `x`.
+#[track_caller]
+fn check_table(vertices: &[Vec2], viewport: Viewport, rows: &[(i32, Vec<ActiveEdge>)]) {
+    let call = format!("fill_spans({vertices:?}, {viewport:?})");
+    let valid = vertices.len() >= 3 && vertices.iter().all(|v| v.is_finite());
+    let n = vertices.len();
+    let expected_rows: Vec<(i32, Vec<ActiveEdge>)> = if valid && !viewport.is_empty() {
+        (viewport.y_min..=viewport.y_max)
+            .map(|y| {
+                let crossing_edges = (0..n)
+                    .filter(|&i| {
+                        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
+                        (f64::from(a.y) <= f64::from(y)) != (f64::from(b.y) <= f64::from(y))
+                    })
+                    .map(|i| ActiveEdge {
+                        edge: i,
+                        x: crossing(vertices[i], vertices[(i + 1) % n], y),
+                    })
+                    .collect::<Vec<_>>();
+                (y, crossing_edges)
+            })
+            .filter(|(_, active)| !active.is_empty())
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let reported: Vec<i32> = rows.iter().map(|(y, _)| *y).collect();
+    let expected: Vec<i32> = expected_rows.iter().map(|(y, _)| *y).collect();
+    assert_eq!(
+        reported, expected,
+        "{call}: the rows whose table was reported (each row of the viewport that an edge crosses, upwards, once)"
+    );
+    for ((y, active), (_, definition)) in rows.iter().zip(&expected_rows) {
+        let mut edges: Vec<usize> = active.iter().map(|e| e.edge).collect();
+        edges.sort_unstable();
+        let wanted: Vec<usize> = definition.iter().map(|e| e.edge).collect();
+        assert_eq!(
+            edges, wanted,
+            "{call}: the active edges of row {y} (edge i runs from vertex i to vertex i + 1); \
+             yours {active:?}"
+        );
+        for entry in active {
+            let exact = crossing(vertices[entry.edge], vertices[(entry.edge + 1) % n], *y);
+            assert!(
+                entry.x.to_bits() == exact.to_bits(),
+                "{call}: in row {y} edge {} is at x = {}, `crossing` gives {exact}",
+                entry.edge,
+                entry.x
+            );
+        }
+        assert!(
+            active.windows(2).all(|pair| pair[0].x <= pair[1].x),
+            "{call}: row {y}'s table is not sorted by x: {active:?}"
+        );
+    }
 }
 
 fn v(points: &[(f32, f32)]) -> Vec<Vec2> {
@@ -159,8 +262,7 @@ proptest! {
 
     #[testkit::test]
     fn spans_come_bottom_up_and_left_to_right_without_overlap(shape in any_polygon()) {
-        let mut spans: Vec<Span> = Vec::new();
-        fill_spans(&shape, POLYGON_VIEWPORT, |span| spans.push(span));
+        let spans = spans(&shape, POLYGON_VIEWPORT);
         prop_assert_eq!(spans.is_empty(), even_odd_pixels(&shape, POLYGON_VIEWPORT).is_empty(), "spans exactly when the even-odd rule fills pixels");
         for span in &spans {
             prop_assert!(!span.is_empty(), "empty span {:?}", span);
@@ -230,17 +332,37 @@ fn work_grows_with_the_active_edges_not_with_all_of_them() {
     // far beyond the time limit.
     let n = 50_000;
     let band = diagonal_band(n);
+    // Row y's table holds the band's two edges there, at y − ½ and y + ½
+    // (the vertical steps of the staircases).
     let mut spans = 0;
+    let mut rows = 0;
     let mut wrong = None;
-    fill_spans(&band, Viewport::new(-1, -1, n, n), |span| {
-        spans += 1;
-        if (span.x_start, span.x_end) != (span.y, span.y) {
-            wrong.get_or_insert(span);
-        }
-    });
+    let mut wrong_table = None;
+    fill_spans(
+        &band,
+        Viewport::new(-1, -1, n, n),
+        |span| {
+            spans += 1;
+            if (span.x_start, span.x_end) != (span.y, span.y) {
+                wrong.get_or_insert(span);
+            }
+        },
+        |y, active| {
+            rows += 1;
+            let xs: Vec<f64> = active.iter().map(|e| e.x).collect();
+            if xs != [f64::from(y) - 0.5, f64::from(y) + 0.5] {
+                wrong_table.get_or_insert((y, active.to_vec()));
+            }
+        },
+    );
     assert_eq!(
         wrong, None,
         "in row y the band holds the pixel (y, y) alone"
     );
     assert_eq!(spans, n, "one span per row");
+    assert_eq!(
+        wrong_table, None,
+        "row y's table holds two edges, at y − ½ and y + ½"
+    );
+    assert_eq!(rows, n, "one table per row");
 }

@@ -29,7 +29,9 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// Fills the closed polygon through `vertices` (an edge also joins the last
 /// vertex to the first) with the even-odd rule and calls `span` once per
 /// run of filled pixels inside `viewport`: rows bottom to top, the runs of
-/// a row left to right, never empty, never overlapping.
+/// a row left to right, never empty, never overlapping. Before the spans
+/// of a row, `table(y, active)` reports the active edge table of that row
+/// (see below); rows with no active edge are skipped and not reported.
 ///
 /// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
 /// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
@@ -51,11 +53,31 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// that cross it. (Departure from the slides, which sort all intersection
 /// points of all rows at once: "hoher Sortieraufwand!")
 ///
+/// ```text
+///   row 5   active: e2 (x 3.0)  e0 (x 7.5)     e1 left after row 4,
+///   row 4   active: e1 (x 2.5)  e0 (x 7.0)     e2 joined at row 5
+///   row 3   active: e1 (x 2.0)  e0 (x 6.5)
+/// ```
+///
+/// `table(y, active)` receives row `y`'s active list after its sort: one
+/// [`ActiveEdge`] per edge that crosses the row, in order of `x`, which is
+/// [`crossing`] at that row. Only rows inside `viewport` are walked and
+/// reported. Departure from the classic table, which keeps `x` and `1/m`
+/// in each entry and adds `1/m` per row: a running sum of `f64` steps
+/// drifts off the exact crossing in its last bits, and a centre exactly on
+/// an edge would then change sides; [`crossing`] costs a multiplication
+/// more and is the definition's `x` bit for bit.
+///
 /// Fewer than three vertices, or any NaN or infinite coordinate, fill
-/// nothing. Huge coordinates are fine: rows and spans are clipped to
-/// `viewport` before any pixel is visited.
-pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Span)) {
-    // BEGIN SOLUTION scanline: active edge table; crossings at pixel rows; one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair
+/// nothing and report no row. Huge coordinates are fine: rows and spans are
+/// clipped to `viewport` before any pixel is visited.
+pub fn fill_spans(
+    vertices: &[Vec2],
+    viewport: Viewport,
+    mut span: impl FnMut(Span),
+    mut table: impl FnMut(i32, &[ActiveEdge]),
+) {
+    // BEGIN SOLUTION scanline: edge table sorted by first row; per row the active edges (report them to `table`, sorted by x), then one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair
     if vertices.len() < 3 || viewport.is_empty() || !vertices.iter().all(|v| v.is_finite()) {
         return;
     }
@@ -71,6 +93,7 @@ pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Sp
             let last = (hi.ceil() - 1.0).min(f64::from(viewport.y_max));
             #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
             (first <= last).then_some(Edge {
+                index: i,
                 first: first as i32,
                 last: last as i32,
                 a,
@@ -81,9 +104,10 @@ pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Sp
     edges.sort_unstable_by_key(|e| e.first);
     // The active edge table is the window `edges[done..next]`: edges before
     // `next` have joined; an edge past its last row is swapped to the
-    // front and `done` moves past it. One allocation for both tables.
+    // front and `done` moves past it. `active` is the window of one row,
+    // sorted by x.
     let (mut done, mut next) = (0, 0);
-    let mut xs: Vec<f64> = Vec::with_capacity(edges.len());
+    let mut active: Vec<ActiveEdge> = Vec::with_capacity(edges.len());
     let Some(mut y) = edges.first().map(|e| e.first) else {
         return;
     };
@@ -94,12 +118,16 @@ pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Sp
         while next < edges.len() && edges[next].first == y {
             next += 1;
         }
-        xs.clear();
-        xs.extend(edges[done..next].iter().map(|e| crossing(e.a, e.b, y)));
-        xs.sort_unstable_by(f64::total_cmp);
-        for pair in xs.chunks_exact(2) {
-            let x0 = pair[0].ceil().max(f64::from(viewport.x_min));
-            let x1 = (pair[1].ceil() - 1.0).min(f64::from(viewport.x_max));
+        active.clear();
+        active.extend(edges[done..next].iter().map(|e| ActiveEdge {
+            edge: e.index,
+            x: crossing(e.a, e.b, y),
+        }));
+        active.sort_unstable_by(|p, q| p.x.total_cmp(&q.x));
+        table(y, &active);
+        for pair in active.chunks_exact(2) {
+            let x0 = pair[0].x.ceil().max(f64::from(viewport.x_min));
+            let x1 = (pair[1].x.ceil() - 1.0).min(f64::from(viewport.x_max));
             if x0 <= x1 {
                 #[allow(clippy::cast_possible_truncation)] // clipped to the viewport
                 span(Span::new(y, x0 as i32, x1 as i32));
@@ -123,10 +151,22 @@ pub fn fill_spans(vertices: &[Vec2], viewport: Viewport, mut span: impl FnMut(Sp
     // END SOLUTION
 }
 
+/// An entry of the active edge table as [`fill_spans`] reports it: which
+/// edge, and where it crosses the row.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActiveEdge {
+    /// The edge from `vertices[edge]` to `vertices[edge + 1]` (the last
+    /// edge, `edge = n − 1`, closes the polygon back to `vertices[0]`).
+    pub edge: usize,
+    /// Where it crosses the row: [`crossing`] of its end points.
+    pub x: f64,
+}
+
 // BEGIN SOLUTION
 
 /// An entry of the edge table: an edge and the rows it crosses.
 struct Edge {
+    index: usize,
     first: i32,
     last: i32,
     a: Vec2,
@@ -134,8 +174,13 @@ struct Edge {
 }
 // END SOLUTION
 
-/// The pixels of [`fill_spans`], one `plot` call per pixel (given: the
-/// tests and the pictures use it).
+/// The pixels of [`fill_spans`], one `plot` call per pixel, the table
+/// unobserved (given: the tests and the pictures use it).
 pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(Pixel)) {
-    fill_spans(vertices, viewport, |span| span.pixels().for_each(&mut plot));
+    fill_spans(
+        vertices,
+        viewport,
+        |span| span.pixels().for_each(&mut plot),
+        |_, _| {},
+    );
 }

@@ -8,7 +8,9 @@
 //! Contenders: the reference scanline fill with its active edge table
 //! (writing spans, and pixel by pixel through `fill_polygon`), the
 //! reference edge-function rasterizer (which also interpolates depth
-//! and colour per pixel), the reference blocked rasterizer (task 03/6: 8 × 8
+//! and colour per pixel), the same in lanes over the bounding box (task
+//! 03/7, seed 004's vectorised bonus: eight pixels of a row at once, depth
+//! and colour mixed in every lane), the reference blocked rasterizer (task 03/6: 8 × 8
 //! blocks, trivially accepted and rejected, eight lanes per row; coverage
 //! only), euc (a software renderer: a pipeline whose vertex stage passes
 //! clip positions through and whose fragment stage writes the
@@ -28,6 +30,7 @@ use euc::{DepthStrategy, Pipeline};
 use fill::blocked::fill_triangle_blocked;
 use fill::edge_function::fill_triangle;
 use fill::scanline::{fill_polygon, fill_spans};
+use fill::vectorised::fill_triangle_vectorised;
 use image::RgbaImage;
 use imageproc::drawing::draw_polygon_mut;
 use imageproc::point::Point;
@@ -131,7 +134,12 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
         |b| {
             b.iter(|| {
                 for tri in triangles {
-                    fill_spans(tri, viewport, |span| canvas.fill_span(span, Rgba::WHITE));
+                    fill_spans(
+                        tri,
+                        viewport,
+                        |span| canvas.fill_span(span, Rgba::WHITE),
+                        |_, _| {},
+                    );
                 }
                 black_box(&canvas);
             });
@@ -164,6 +172,17 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
             b.iter(|| {
                 for tri in &vertices {
                     fill_triangle(*tri, viewport, |f, _| canvas.plot(f));
+                }
+                black_box(&canvas);
+            });
+        },
+    );
+    group.bench_function(
+        "reference fill_triangle_vectorised (lanes over the box, depth + colour)",
+        |b| {
+            b.iter(|| {
+                for tri in &vertices {
+                    fill_triangle_vectorised(*tri, viewport, |_| {}, |f, _| canvas.plot(f));
                 }
                 black_box(&canvas);
             });

@@ -1,0 +1,352 @@
+//! Task 7 (bonus): the triangle in lanes over its bounding box — task 5's
+//! fragments (pixels, exact edge weights, depth and colour), found a batch
+//! of eight pixels at a time, checked against the definition in
+//! `tests/common` (not against your task 5).
+
+mod common;
+
+use std::cell::RefCell;
+
+use canvas::{Fragment, Pixel, Rgba, Vec2, Vertex, Viewport};
+use common::{counts, snap, triangle_covers, triangle_pixels};
+use fill::vectorised::{Batch, EdgeWeights, LANES, SUBPIXEL_BITS, fill_triangle_vectorised};
+use proptest::prelude::*;
+use testkit::assert_pixels_eq;
+use testkit::strategies::{half_pixel_point, hostile_point, point};
+
+/// Larger than a batch in every direction.
+const WIDE: Viewport = Viewport::new(-50, -50, 50, 50);
+
+/// Depth and colour must match the definition's barycentric mix to this
+/// tolerance (f32 arithmetic on values of order 1).
+const MIX_TOLERANCE: f32 = 1e-4;
+
+fn vertex(position: Vec2, depth: f32, colour: Rgba) -> Vertex {
+    Vertex::new(position, depth, colour)
+}
+
+/// A triangle with distinct depths and colours at its corners.
+fn coloured(positions: [Vec2; 3]) -> [Vertex; 3] {
+    [
+        vertex(positions[0], 0.1, Rgba::RED),
+        vertex(positions[1], 0.5, Rgba::GREEN),
+        vertex(positions[2], 0.9, Rgba::BLUE),
+    ]
+}
+
+/// The sheet's exact edge weights at `pixel` and `|D|`, twice the
+/// snapped area; `None` where a vertex does not snap.
+fn definition_weights(vertices: [Vertex; 3], pixel: Pixel) -> Option<(EdgeWeights, i128)> {
+    let mut p = [[0_i64; 2]; 3];
+    for (k, v) in vertices.iter().enumerate() {
+        p[k] = [snap(v.position.x)?, snap(v.position.y)?];
+    }
+    let orient = |a: [i64; 2], b: [i64; 2], c: [i64; 2]| {
+        i128::from(b[0] - a[0]) * i128::from(c[1] - a[1])
+            - i128::from(b[1] - a[1]) * i128::from(c[0] - a[0])
+    };
+    let one = 1_i64 << SUBPIXEL_BITS;
+    let centre = [i64::from(pixel.x) * one, i64::from(pixel.y) * one];
+    let area = orient(p[0], p[1], p[2]);
+    let weights =
+        std::array::from_fn(|k| area.signum() * orient(p[(k + 1) % 3], p[(k + 2) % 3], centre));
+    Some((weights, area.abs()))
+}
+
+/// The clipped bounding box of the snapped vertices, in pixels (columns,
+/// rows), as task 5 walks it; `None` when it is empty or the triangle
+/// draws nothing.
+fn clipped_box(vertices: [Vertex; 3], viewport: Viewport) -> Option<([i64; 2], [i64; 2])> {
+    let mut p = [[0_i64; 2]; 3];
+    for (k, v) in vertices.iter().enumerate() {
+        p[k] = [snap(v.position.x)?, snap(v.position.y)?];
+    }
+    let area = i128::from(p[1][0] - p[0][0]) * i128::from(p[2][1] - p[0][1])
+        - i128::from(p[1][1] - p[0][1]) * i128::from(p[2][0] - p[0][0]);
+    if area == 0 || viewport.is_empty() {
+        return None;
+    }
+    let one = 1_i64 << SUBPIXEL_BITS;
+    let range = |k: usize, min: i32, max: i32| {
+        let lo = p.iter().map(|q| q[k]).min().unwrap_or(0);
+        let hi = p.iter().map(|q| q[k]).max().unwrap_or(0);
+        let first = (-(-lo).div_euclid(one)).max(i64::from(min));
+        let last = hi.div_euclid(one).min(i64::from(max));
+        [first, last]
+    };
+    let (x, y) = (
+        range(0, viewport.x_min, viewport.x_max),
+        range(1, viewport.y_min, viewport.y_max),
+    );
+    (x[0] <= x[1] && y[0] <= y[1]).then_some((x, y))
+}
+
+/// What `fill_triangle_vectorised` reports, in order.
+enum Event {
+    Batch(Batch),
+    Plot(Fragment, EdgeWeights),
+}
+
+/// The fragments of `fill_triangle_vectorised`, after checking the batches
+/// it reported (see [`check_batches`]) and the exact weights of every
+/// fragment: every test grades the lanes, not only the pixels.
+#[track_caller]
+fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
+    let events: RefCell<Vec<Event>> = RefCell::default();
+    fill_triangle_vectorised(
+        vertices,
+        viewport,
+        |batch| events.borrow_mut().push(Event::Batch(*batch)),
+        |fragment, weights| events.borrow_mut().push(Event::Plot(fragment, weights)),
+    );
+    check_batches(vertices, viewport, &events.into_inner())
+}
+
+/// The batches tile the clipped box row by row, bottom to top, each row
+/// from its left end in batches of [`LANES`] (fewer only at the right end);
+/// each lane's coverage is the definition's and its depth the
+/// definition's barycentric mix; after each batch come exactly its covered
+/// lanes' fragments, in lane order, with the batch's depth and the exact
+/// edge weights.
+#[track_caller]
+fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) -> Vec<Fragment> {
+    let call = format!(
+        "fill_triangle_vectorised({:?}, {viewport:?})",
+        vertices.map(|v| v.position)
+    );
+    let positions = vertices.map(|v| v.position);
+    // The tiling the sheet prescribes.
+    let mut tiling = Vec::new();
+    if let Some((xs, ys)) = clipped_box(vertices, viewport) {
+        for y in ys[0]..=ys[1] {
+            let mut x = xs[0];
+            while x <= xs[1] {
+                let len = (xs[1] - x + 1).min(LANES as i64) as usize;
+                tiling.push((x as i32, y as i32, len));
+                x += LANES as i64;
+            }
+        }
+    }
+    let reported: Vec<(i32, i32, usize)> = events
+        .iter()
+        .filter_map(|e| match e {
+            Event::Batch(b) => Some((b.x, b.y, b.len)),
+            Event::Plot(..) => None,
+        })
+        .collect();
+    assert!(
+        reported == tiling,
+        "{call}: the batches (x, y, len) are {:?}…, the clipped box cut row by row into \
+         batches of {LANES} from its left end gives {:?}…",
+        &reported[..reported.len().min(6)],
+        &tiling[..tiling.len().min(6)]
+    );
+    let mut fragments = Vec::new();
+    let mut current: Option<(Batch, Vec<Pixel>)> = None;
+    let finish = |current: &mut Option<(Batch, Vec<Pixel>)>| {
+        if let Some((batch, plotted)) = current.take() {
+            let wanted: Vec<Pixel> = (0..batch.len)
+                .filter(|&k| batch.covered[k])
+                .map(|k| Pixel::new(batch.x + k as i32, batch.y))
+                .collect();
+            assert_eq!(
+                plotted, wanted,
+                "{call}: after {batch:?} come its covered lanes' fragments, in lane order"
+            );
+        }
+    };
+    for event in events {
+        match event {
+            Event::Batch(batch) => {
+                finish(&mut current);
+                for k in 0..LANES {
+                    let pixel = Pixel::new(batch.x + k as i32, batch.y);
+                    let covers = k < batch.len && triangle_covers(positions, pixel);
+                    assert_eq!(
+                        batch.covered[k], covers,
+                        "{call}: lane {k} of {batch:?} ({pixel}; lanes from `len` on are off)"
+                    );
+                    if covers {
+                        let (weights, area) = definition_weights(vertices, pixel).unwrap();
+                        let depth = (0..3)
+                            .map(|v| weights[v] as f64 / area as f64 * f64::from(vertices[v].depth))
+                            .sum::<f64>() as f32;
+                        assert!(
+                            (batch.depth[k] - depth).abs() <= MIX_TOLERANCE,
+                            "{call}: lane {k} of {batch:?} ({pixel}) has depth {}, the \
+                             barycentric mix gives {depth}",
+                            batch.depth[k]
+                        );
+                    }
+                }
+                current = Some((*batch, Vec::new()));
+            }
+            Event::Plot(fragment, weights) => {
+                let Some((batch, plotted)) = current.as_mut() else {
+                    panic!("{call}: {fragment:?} is plotted before any batch was reported");
+                };
+                let k = (fragment.pixel.x - batch.x) as usize;
+                let (expected, area) =
+                    definition_weights(vertices, fragment.pixel).expect("a triangle that snaps");
+                assert_eq!(
+                    *weights, expected,
+                    "{call}: the edge weights at {} (exact integers in 1/256-pixel units, \
+                     weights[k] for vertex k as given: see the sheet, task 5)",
+                    fragment.pixel
+                );
+                assert!(
+                    k < LANES && fragment.depth.to_bits() == batch.depth[k].to_bits(),
+                    "{call}: {fragment:?} does not carry its lane's depth in {batch:?}"
+                );
+                let lambda = expected.map(|w| (w as f64 / area as f64) as f32);
+                let colour = vertices[0].colour * lambda[0]
+                    + vertices[1].colour * lambda[1]
+                    + vertices[2].colour * lambda[2];
+                let off = [
+                    fragment.colour.r - colour.r,
+                    fragment.colour.g - colour.g,
+                    fragment.colour.b - colour.b,
+                    fragment.colour.a - colour.a,
+                ];
+                assert!(
+                    off.iter().all(|d| d.abs() <= MIX_TOLERANCE),
+                    "{call}: the colour at {} is {:?}, the barycentric mix gives {colour:?}",
+                    fragment.pixel,
+                    fragment.colour
+                );
+                plotted.push(fragment.pixel);
+                fragments.push(*fragment);
+            }
+        }
+    }
+    finish(&mut current);
+    fragments
+}
+
+fn pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {
+    fragments(coloured(positions), viewport)
+        .iter()
+        .map(|f| f.pixel)
+        .collect()
+}
+
+#[testkit::test]
+fn right_triangle_in_batches_of_eight() {
+    //  the box is 21 × 21 pixels: each row is two batches of 8 and one of 5
+    let tri = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(0.0, 20.0),
+        Vec2::new(20.0, 0.0),
+    ];
+    assert_pixels_eq(
+        &triangle_pixels(tri, WIDE),
+        &pixels(tri, WIDE),
+        "right triangle, 20 pixels",
+    );
+}
+
+#[testkit::test]
+fn far_from_the_origin_the_lanes_stay_exact() {
+    // Near ±MAX_COORD edge functions reach 2⁶⁶: a batch's base needs
+    // i128, its lanes' offsets do not.
+    let base = 16_000_000.0;
+    let tri = [
+        Vec2::new(base, base),
+        Vec2::new(base + 37.3, base + 5.1),
+        Vec2::new(-base, base + 29.8),
+    ];
+    let viewport = Viewport::new(15_999_990, 15_999_990, 16_000_040, 16_000_040);
+    assert_pixels_eq(
+        &triangle_pixels(tri, viewport),
+        &pixels(tri, viewport),
+        "far triangle",
+    );
+}
+
+#[testkit::test]
+fn degenerate_and_hostile_triangles_draw_nothing() {
+    for tri in [
+        [
+            Vec2::new(0.0, 0.0),
+            Vec2::new(2.0, 2.0),
+            Vec2::new(5.0, 5.0),
+        ],
+        [
+            Vec2::new(f32::NAN, 0.0),
+            Vec2::new(5.0, 0.0),
+            Vec2::new(0.0, 5.0),
+        ],
+        [
+            Vec2::new(0.0, 0.0),
+            Vec2::new(f32::INFINITY, 0.0),
+            Vec2::new(0.0, 5.0),
+        ],
+        [
+            Vec2::new(0.0, 0.0),
+            Vec2::new(1e30, 0.0),
+            Vec2::new(0.0, 1e30),
+        ],
+    ] {
+        assert_eq!(pixels(tri, WIDE), [], "{tri:?}");
+    }
+    let big = [
+        Vec2::new(-1.6e7, -1.6e7),
+        Vec2::new(1.6e7, -1.6e7),
+        Vec2::new(0.0, 1.6e7),
+    ];
+    assert_eq!(
+        pixels(big, Viewport::new(-3, -3, 3, 3)).len(),
+        49,
+        "a huge triangle, clipped"
+    );
+}
+
+fn any_triangle() -> impl Strategy<Value = [Vec2; 3]> {
+    prop_oneof![
+        prop::array::uniform3(point(45.0)),
+        prop::array::uniform3(point(6.0)),
+        prop::array::uniform3(half_pixel_point(30)),
+    ]
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    #[testkit::test]
+    fn covered_pixels_match_the_definition(tri in any_triangle()) {
+        let yours = pixels(tri, WIDE);
+        assert_pixels_eq(&triangle_pixels(tri, WIDE), &yours, &format!("{tri:?}"));
+        prop_assert!(counts(&yours).values().all(|&n| n == 1), "a pixel plotted twice");
+    }
+
+    #[testkit::test]
+    fn both_windings_give_the_same_fragments(tri in any_triangle()) {
+        let [a, b, c] = coloured(tri);
+        let forward = fragments([a, b, c], WIDE);
+        let backward = fragments([a, c, b], WIDE);
+        prop_assert_eq!(forward.len(), backward.len());
+        for (f, g) in forward.iter().zip(&backward) {
+            prop_assert_eq!(f.pixel, g.pixel);
+            prop_assert!((f.depth - g.depth).abs() <= MIX_TOLERANCE, "{:?} against {:?}", f, g);
+        }
+    }
+
+    #[testkit::test]
+    fn clipping_keeps_exactly_the_pixels_in_the_viewport(
+        tri in any_triangle(), x in -40..20, y in -40..20, w in 0..30, h in 0..30,
+    ) {
+        let viewport = Viewport::new(x, y, x + w, y + h);
+        assert_pixels_eq(&triangle_pixels(tri, viewport), &pixels(tri, viewport), &format!("{tri:?} in {viewport:?}"));
+    }
+
+    #[testkit::test]
+    fn hostile_vertices_never_panic(a in hostile_point(), b in point(20.0), c in hostile_point()) {
+        let small = Viewport::new(-5, -5, 5, 5);
+        let yours = pixels([a, b, c], small);
+        prop_assert!(yours.iter().all(|&p| small.contains(p)));
+        prop_assert!(counts(&yours).values().all(|&n| n == 1));
+        // Refusing one is no reason to refuse the next.
+        let ordinary = [Vec2::new(-3.5, -3.5), Vec2::new(3.5, -3.5), Vec2::new(0.0, 3.5)];
+        assert_pixels_eq(&triangle_pixels(ordinary, small), &pixels(ordinary, small), "an ordinary triangle after a hostile one");
+    }
+}
