@@ -28,7 +28,7 @@ pub mod polygon_offset;
 /// Task 5: the stencil test, the eight stencil operations and the write mask.
 pub mod stencil;
 
-/// Task 6: double buffering and jittered accumulation for scene antialiasing.
+/// Task 6: double buffering, jittered accumulation for scene antialiasing, and smoothing by alpha blending.
 pub mod accumulation;
 
 /// Task 7: stereo buffering — one camera per eye (parallel axes, asymmetric frusta) and the anaglyph.
