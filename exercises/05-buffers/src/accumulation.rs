@@ -16,9 +16,18 @@
 //!       accum(ACCUM, 1/n)              acc += colour / n
 //!   accum(RETURN, 1)                   colour = acc  → the antialiased image
 //! ```
+//!
+//! The slides' other route, "Anti-Aliasing bei Linien … Nutzt Alpha
+//! Blending" (`glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)` with
+//! `GL_POLYGON_SMOOTH`), draws each primitive once: a pixel's fragment
+//! carries the fraction of the pixel the primitive covers as its alpha,
+//! and [`blend`] mixes it into what is there ([`smooth_triangle`]). It
+//! needs no second buffer, but it depends on the drawing order and leaves
+//! a seam where two triangles share an edge: each covers half of such a
+//! pixel, and half over half blends to ¾, not 1.
 
 #[allow(unused_imports)]
-use canvas::{Canvas, CanvasError, Pixel, Rgba, Vec2, Vec4};
+use canvas::{Canvas, CanvasError, Pixel, Rgba, Vec2, Vec4, Vertex};
 
 /// The Red Book's eight jitter offsets (`j8` in `jitter.h`), moved from
 /// the pixel square `[0, 1)²` of that table to offsets from the pixel
@@ -192,5 +201,42 @@ pub fn jittered_antialias(
     let _ = (&width, &height, &jitter, &mut render);
     todo!(
         "accumulation: accumulate one frame per offset with weight 1/n, then return the sum into a canvas"
+    )
+}
+
+/// OpenGL's blending with `glBlendFunc(GL_SRC_ALPHA,
+/// GL_ONE_MINUS_SRC_ALPHA)`: the incoming colour `src` weighted by its
+/// alpha, over the stored colour `dst` weighted by the rest, every
+/// channel alike (alpha too, as OpenGL does with one blend function):
+///
+/// ```text
+///   out = src · src.a + dst · (1 − src.a)
+/// ```
+///
+/// `src.a = 1` gives `src` (an opaque fragment replaces), `src.a = 0`
+/// gives `dst`.
+#[must_use]
+pub fn blend(src: Rgba, dst: Rgba) -> Rgba {
+    // Unused until you write the body:
+    let _ = (&src, &dst);
+    todo!("accumulation: weight src by its alpha and dst by one minus it, channel by channel")
+}
+
+/// Draws a triangle of one `colour` antialiased by alpha blending, the
+/// slides' OpenGL route (`GL_POLYGON_SMOOTH`): each pixel's coverage `c`
+/// is the fraction of the [`JITTER_8`] samples `centre + j` of the pixel
+/// that [`crate::raster::fill_triangle`] covers (fill the triangle moved
+/// by `−j`, as [`jittered_antialias`] does, and count per pixel), and
+/// every pixel with `c > 0` becomes [`blend`] of the colour, its alpha
+/// multiplied by `c`, over the canvas's colour there. Pixels outside the
+/// canvas are ignored; the depth plane is untouched.
+///
+/// On a black canvas a white triangle comes out as jittered accumulation
+/// draws it; two triangles sharing an edge do not (the seam).
+pub fn smooth_triangle(canvas: &mut Canvas, vertices: [Vec2; 3], colour: Rgba) {
+    // Unused until you write the body:
+    let _ = (&canvas, &vertices, &colour);
+    todo!(
+        "accumulation: count per pixel the jittered samples fill_triangle covers, then blend the colour with alpha times that fraction"
     )
 }

@@ -1,7 +1,8 @@
 //! Topic 05: buffers — the z-buffer with OpenGL's depth functions, depth
 //! along a scanline, the painter's algorithm, polygon offset for
 //! hidden-line drawing, the stencil buffer, double buffering, the
-//! accumulation buffer and stereo buffering. The task sheet is `README.md`
+//! accumulation buffer, stereo buffering, and when a swap is shown
+//! (tearing, VSYNC, triple buffering). The task sheet is `README.md`
 //! next to this crate.
 //!
 //! Each task module below is one task. You edit the files in `src/`: what
@@ -27,8 +28,11 @@ pub mod polygon_offset;
 /// Task 5: the stencil test, the eight stencil operations and the write mask.
 pub mod stencil;
 
-/// Task 6: double buffering and jittered accumulation for scene antialiasing.
+/// Task 6: double buffering, jittered accumulation for scene antialiasing, and smoothing by alpha blending.
 pub mod accumulation;
 
 /// Task 7: stereo buffering — one camera per eye (parallel axes, asymmetric frusta) and the anaglyph.
 pub mod stereo;
+
+/// Task 8: when the back buffer is shown — tearing without VSYNC, VSYNC, triple buffering.
+pub mod presentation;

@@ -131,6 +131,13 @@ impl DepthPlane {
     pub fn step_x(&self) -> f64 {
         todo!("scanline_depth: the x step of the plane equation")
     }
+
+    /// The constant `B/C` that one step up subtracts:
+    /// `z(x, y + 1) = z(x, y) − B/C`.
+    #[must_use]
+    pub fn step_y(&self) -> f64 {
+        todo!("scanline_depth: the y step of the plane equation")
+    }
 }
 
 /// The depths of `count` pixels of row `y`, starting at column `first_x`,
@@ -146,4 +153,30 @@ pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize
     // Unused until you write the body:
     let _ = (&plane, &y, &first_x, &count);
     todo!("scanline_depth: evaluate the plane once at the first pixel, then subtract A/C per step")
+}
+
+/// The depth of the first pixel of each row of a triangle, each found
+/// from the row below it (seed: "Gleiches gilt für die Berechnung des
+/// ersten z-Wertes der darauffolgenden Scanline!"): row `k` is
+/// `y = first_y + k` and starts at column `first_xs[k]` (where the left
+/// edge crosses it, as the fill finds it), and
+///
+/// ```text
+///   z_0     = z(first_xs[0], first_y)                (the plane equation, once)
+///   z_{k+1} = z_k − A/C · (x_{k+1} − x_k) − B/C      (evaluated left to right)
+/// ```
+///
+/// One step up subtracts `B/C`; the new row's start lies `x_{k+1} − x_k`
+/// columns to the side, which subtracts `A/C` per column, as along a row.
+/// Together with [`incremental_depths`] every depth of the triangle comes
+/// from one evaluation of the plane. The result holds one depth per entry
+/// of `first_xs` (none for an empty slice). Rounding adds up over the
+/// rows as it does along a row.
+#[must_use]
+pub fn row_start_depths(plane: &DepthPlane, first_y: i32, first_xs: &[i32]) -> Vec<f64> {
+    // Unused until you write the body:
+    let _ = (&plane, &first_y, &first_xs);
+    todo!(
+        "scanline_depth: evaluate the plane once at the first row's start, then per row subtract A/C times the columns moved and B/C"
+    )
 }

@@ -3,7 +3,8 @@
 mod common;
 
 use buffers::accumulation::{
-    AccumError, AccumOp, AccumulationBuffer, DoubleBuffer, JITTER_8, jittered_antialias,
+    AccumError, AccumOp, AccumulationBuffer, DoubleBuffer, JITTER_8, blend, jittered_antialias,
+    smooth_triangle,
 };
 use buffers::raster::fill_triangle;
 use canvas::{Canvas, Pixel, Rgba, Vec2, Vec4, Vertex};
@@ -271,5 +272,145 @@ fn antialiased_triangles_match_the_reference_image() {
             "/tests/images/accumulation_antialiased.png"
         ),
         testkit::image::Tolerance::EXACT,
+    );
+}
+
+// ---------------------------------------------------------------------------
+// The slides' OpenGL route: smoothing by alpha blending.
+
+fn close_rgba(a: Rgba, b: Rgba, tolerance: f32) -> bool {
+    [a.r - b.r, a.g - b.g, a.b - b.b, a.a - b.a]
+        .iter()
+        .all(|d| d.abs() <= tolerance)
+}
+
+#[testkit::test]
+fn blending_weights_the_fragment_by_its_alpha() {
+    let red_quarter = Rgba::new(1.0, 0.0, 0.0, 0.25);
+    let blue = Rgba::new(0.0, 0.0, 1.0, 1.0);
+    let out = blend(red_quarter, blue);
+    assert!(
+        close_rgba(out, Rgba::new(0.25, 0.0, 0.75, 0.8125), 1e-6),
+        "glBlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA): red at alpha ¼ over opaque blue is \
+         src·¼ + dst·¾ in every channel, alpha too (¼·¼ + 1·¾ = 0.8125); yours: {out:?}"
+    );
+    assert_eq!(
+        blend(Rgba::new(0.3, 0.6, 0.9, 1.0), blue),
+        Rgba::new(0.3, 0.6, 0.9, 1.0),
+        "an opaque fragment (alpha 1) replaces the stored colour"
+    );
+    assert_eq!(
+        blend(Rgba::new(0.3, 0.6, 0.9, 0.0), blue),
+        blue,
+        "a transparent fragment (alpha 0) leaves the stored colour"
+    );
+}
+
+/// The triangle of `edge_pixels_get_the_fraction_of_samples_inside`.
+fn smooth_test_triangle() -> [Vec2; 3] {
+    [
+        Vec2::new(0.3, 0.2),
+        Vec2::new(11.7, 2.1),
+        Vec2::new(2.2, 8.9),
+    ]
+}
+
+#[testkit::test]
+fn a_smooth_triangle_on_black_is_the_accumulated_one() {
+    let vertices = smooth_test_triangle();
+    let mut smooth = Canvas::new(12, 10);
+    smooth.clear(Rgba::BLACK);
+    smooth_triangle(&mut smooth, vertices, Rgba::WHITE);
+    let triangles = [vertices.map(|v| Vertex::new(v, 0.5, Rgba::WHITE))];
+    let accumulated = jittered_antialias(12, 10, &JITTER_8, render(&triangles)).unwrap();
+    for (p, c) in accumulated.enumerate() {
+        let s = smooth.get(p).expect("same size");
+        assert!(
+            (s.r - c.r).abs() <= 1.0 / 255.0,
+            "{p}: smoothed {}, accumulated {}: on black, a white triangle blended with alpha = \
+             its coverage (the fraction of the 8 jittered samples fill_triangle covers) is the \
+             accumulated average of the 8 jittered frames",
+            s.r,
+            c.r
+        );
+    }
+}
+
+#[testkit::test]
+fn smoothing_blends_the_covered_fraction_over_the_background() {
+    let vertices = smooth_test_triangle();
+    let background = Rgba::new(0.2, 0.4, 0.6, 1.0);
+    let colour = Rgba::new(1.0, 0.1, 0.0, 1.0);
+    let mut canvas = Canvas::new(12, 10);
+    canvas.clear(background);
+    smooth_triangle(&mut canvas, vertices, colour);
+    let triangle = vertices.map(|v| Vertex::new(v, 0.5, colour));
+    for (p, got) in canvas.enumerate() {
+        let hits = JITTER_8
+            .iter()
+            .filter(|&&j| inside(&triangle, p.centre() + j))
+            .count();
+        let c = hits as f32 / 8.0;
+        let expected = Rgba::new(
+            colour.r * c + background.r * (1.0 - c),
+            colour.g * c + background.g * (1.0 - c),
+            colour.b * c + background.b * (1.0 - c),
+            c * c + (1.0 - c),
+        );
+        assert!(
+            close_rgba(got, expected, 1.0 / 255.0),
+            "{p}: {hits} of 8 samples inside, so alpha {c}: blended over the background that \
+             is {expected:?}, yours {got:?} (blend, do not overwrite the background)"
+        );
+    }
+}
+
+/// Smoothing's known flaw: a square cut along its diagonal into two
+/// triangles. Accumulation covers every sample once (the fill's top-left
+/// rule), smoothing blends the two halves of a diagonal pixel — ½ over ½
+/// is ¾ — and leaves a darker seam.
+///
+/// ```text
+///   +-------+        accumulated: the square white
+///   |     / |        smoothed:    a grey line along the diagonal
+///   |   /   |
+///   | /     |
+///   +-------+
+/// ```
+#[testkit::test]
+fn a_shared_edge_leaves_a_seam_when_smoothed_but_not_when_accumulated() {
+    let (a, b, c, d) = (
+        Vec2::new(1.5, 1.5),
+        Vec2::new(9.5, 1.5),
+        Vec2::new(9.5, 9.5),
+        Vec2::new(1.5, 9.5),
+    );
+    let halves = [[a, b, d], [b, c, d]];
+    let mut smooth = Canvas::new(11, 11);
+    smooth.clear(Rgba::BLACK);
+    for half in halves {
+        smooth_triangle(&mut smooth, half, Rgba::WHITE);
+    }
+    let triangles = halves.map(|t| t.map(|v| Vertex::new(v, 0.5, Rgba::WHITE)));
+    let accumulated = jittered_antialias(11, 11, &JITTER_8, render(&triangles)).unwrap();
+    let interior: Vec<Pixel> = (2..=9)
+        .flat_map(|y| (2..=9).map(move |x| Pixel::new(x, y)))
+        .collect();
+    for &p in &interior {
+        let got = accumulated.get(p).expect("inside").r;
+        assert!(
+            got >= 254.0 / 255.0,
+            "{p}: accumulation covers each sample of the square once, so it is white; got {got}"
+        );
+    }
+    let darkest = interior
+        .iter()
+        .map(|&p| smooth.get(p).expect("inside").r)
+        .fold(1.0f32, f32::min);
+    assert!(
+        darkest <= 0.9,
+        "the pixels the shared diagonal cuts are covered partly by each half: blended one \
+         after the other they stay darker than white (½ over ½ gives ¾), yet the darkest is \
+         {darkest}"
     );
 }

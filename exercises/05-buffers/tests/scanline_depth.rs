@@ -2,7 +2,8 @@
 //! intersections and incrementally from the plane equation.
 
 use buffers::scanline_depth::{
-    DepthPlane, ScanlineError, SpanEnds, depth_in_span, incremental_depths, span_at,
+    DepthPlane, ScanlineError, SpanEnds, depth_in_span, incremental_depths, row_start_depths,
+    span_at,
 };
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
@@ -202,6 +203,77 @@ fn each_depth_is_the_previous_one_minus_the_step() {
     }
 }
 
+/// The seed's "the same holds for the first z value of the next
+/// scanline": on `z = 2x + 3y + 1` the known triangle's rows 0 to 5 start
+/// where its left edge `lo–hi` (`x = y/3`) crosses them, at the first
+/// pixel centre to its right.
+///
+/// ```text
+///   row 5  ..#####       starts at x = 2:  z = 2·2 + 3·5 + 1 = 20
+///   row 4  ..######      x = 2: 17
+///   row 3  .#######      x = 1: 12
+///   row 2  .########     x = 1:  9
+///   row 1  .####         x = 1:  6
+///   row 0  #             x = 0:  1
+/// ```
+#[testkit::test]
+fn row_starts_of_the_known_triangle() {
+    let plane = DepthPlane::try_from_triangle(known_triangle()).unwrap();
+    // z(x, y + 1) = z − B/C, and z grows by 3 per row: B/C = −3.
+    assert!(
+        close(plane.step_y(), -3.0, 1e-15),
+        "B/C = {}, but z = 2x + 3y + 1 grows by 3 per row up: B/C = −3",
+        plane.step_y()
+    );
+    assert_eq!(
+        row_start_depths(&plane, 0, &[0, 1, 1, 1, 2, 2]),
+        [1.0, 6.0, 9.0, 12.0, 17.0, 20.0],
+        "the first depth of rows 0 to 5 starting at x = 0, 1, 1, 1, 2, 2: each the one \
+         below minus A/C per column moved and minus B/C"
+    );
+    assert_eq!(
+        row_start_depths(&plane, 0, &[]),
+        Vec::<f64>::new(),
+        "no rows, no depths"
+    );
+}
+
+/// The instrument of the walk up the rows: each row's first depth must
+/// be exactly the row below's minus `A/C · Δx` minus `B/C`, evaluated in
+/// that order, starting from `depth_at` at the first row's start; the
+/// starts wander left and right as a curved edge's would.
+#[testkit::test]
+fn each_row_start_is_the_one_below_moved_by_the_steps() {
+    // z = 0.1 x + 0.3 y + 0.7: neither A/C = −0.1 nor B/C = −0.3 is a
+    // binary fraction.
+    let triangle = [(0.0, 0.0), (1000.0, 10.0), (3.0, 400.0)]
+        .map(|(x, y)| DVec3::new(x, y, 0.1 * x + 0.3 * y + 0.7));
+    let plane = DepthPlane::try_from_triangle(triangle).unwrap();
+    let first_y = -5;
+    let first_xs: Vec<i32> = (0..600)
+        .map(|k| (40.0 * (f64::from(k) / 25.0).sin()).round() as i32 + k / 7)
+        .collect();
+    let yours = row_start_depths(&plane, first_y, &first_xs);
+    assert_eq!(yours.len(), first_xs.len(), "one depth per row start given");
+    let (step_x, step_y) = (plane.step_x(), plane.step_y());
+    let mut z = plane.depth_at(DVec2::new(f64::from(first_xs[0]), f64::from(first_y)));
+    for (k, &got) in yours.iter().enumerate() {
+        if k > 0 {
+            let dx = f64::from(first_xs[k]) - f64::from(first_xs[k - 1]);
+            z = z - step_x * dx - step_y;
+        }
+        assert!(
+            got.to_bits() == z.to_bits(),
+            "row {k} (y = {}, starting at x = {}): {got:e}, but z_{k} = z_{} − A/C·Δx − B/C \
+             = {z:e}: the first depth of a row comes from the row below (the seed's \
+             acceleration), the plane equation is evaluated only at the first row's start",
+            first_y + k as i32,
+            first_xs[k],
+            k.saturating_sub(1)
+        );
+    }
+}
+
 #[testkit::test]
 fn triangles_without_a_depth_plane_are_errors() {
     let edge_on = [
@@ -262,6 +334,27 @@ proptest! {
         }
     }
 
+    /// Up the rows of a random triangle, starting each at the first pixel
+    /// centre right of its left crossing: the walk stays on the plane.
+    #[testkit::test]
+    fn row_starts_stay_on_the_plane(triangle in triangle()) {
+        let plane = DepthPlane::try_from_triangle(triangle).unwrap();
+        let lo = triangle.iter().map(|v| v.y).fold(f64::MAX, f64::min).ceil() as i32;
+        let hi = triangle.iter().map(|v| v.y).fold(f64::MIN, f64::max).floor() as i32;
+        let first_xs: Vec<i32> = (lo..=hi)
+            .filter_map(|y| span_at(triangle, f64::from(y)))
+            .map(|span| span.a.x.min(span.b.x).ceil() as i32)
+            .collect();
+        prop_assume!(first_xs.len() == (lo..=hi).count());
+        let yours = row_start_depths(&plane, lo, &first_xs);
+        prop_assert_eq!(yours.len(), first_xs.len(), "one depth per row");
+        for (k, (&z, &x)) in yours.iter().zip(&first_xs).enumerate() {
+            let y = lo + k as i32;
+            let exact = plane.depth_at(DVec2::new(f64::from(x), f64::from(y)));
+            prop_assert!(close(z, exact, 1e-9), "row {} from x = {}: {} walked up vs {} from the plane", y, x, z, exact);
+        }
+    }
+
     #[testkit::test]
     fn hostile_input_never_panics(
         v in prop::array::uniform9(prop_oneof![Just(f64::NAN), Just(f64::INFINITY), Just(1e300), Just(-1e300), -5.0f64..5.0]),
@@ -273,6 +366,7 @@ proptest! {
         }
         if let Ok(plane) = DepthPlane::try_from_triangle(triangle) {
             let _ = incremental_depths(&plane, 0, 0, 4);
+            let _ = row_start_depths(&plane, i32::MIN, &[i32::MIN, i32::MAX, 0]);
         }
     }
 }

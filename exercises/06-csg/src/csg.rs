@@ -16,7 +16,7 @@
 use std::fmt;
 
 use crate::primitive::Primitive;
-use crate::raster::Face;
+use crate::raster::{Face, Solid};
 
 /// The most literals a product may have: the layer count of layered
 /// Goldfeather must fit the 8-bit stencil buffer without saturating.
@@ -238,14 +238,11 @@ fn validate_primitives(primitives: &[Primitive]) -> Result<(), CsgError> {
         .try_for_each(|(index, p)| p.validate(index))
 }
 
-fn known(index: usize, primitives: &[Primitive]) -> Result<(), CsgError> {
-    if index < primitives.len() {
+fn known(index: usize, count: usize) -> Result<(), CsgError> {
+    if index < count {
         Ok(())
     } else {
-        Err(CsgError::UnknownPrimitive {
-            index,
-            count: primitives.len(),
-        })
+        Err(CsgError::UnknownPrimitive { index, count })
     }
 }
 
@@ -264,7 +261,7 @@ impl Scene {
     pub fn new(primitives: Vec<Primitive>, tree: Csg) -> Result<Self, CsgError> {
         validate_primitives(&primitives)?;
         for index in tree.leaves() {
-            known(index, &primitives)?;
+            known(index, primitives.len())?;
         }
         Ok(Self { primitives, tree })
     }
@@ -286,9 +283,14 @@ impl Scene {
 /// product is non-empty, starts with a positive literal, names each
 /// primitive at most once and has at most [`MAX_LITERALS`] literals.
 /// The empty sum is the empty solid.
+///
+/// The "primitives" are whatever the renderers can draw, any
+/// [`Solid`]: [`Primitive`]s ([`Model::new`]), or primitives placed by
+/// the transformations of a tree ([`Model::with_solids`] over
+/// `transforms::Placed`); a literal names one by its index.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Model {
-    primitives: Vec<Primitive>,
+pub struct Model<S = Primitive> {
+    primitives: Vec<S>,
     products: Vec<Product>,
 }
 
@@ -300,6 +302,18 @@ impl Model {
     /// [`CsgError::BadProduct`].
     pub fn new(primitives: Vec<Primitive>, products: Vec<Product>) -> Result<Self, CsgError> {
         validate_primitives(&primitives)?;
+        Self::with_solids(primitives, products)
+    }
+}
+
+impl<S: Solid> Model<S> {
+    /// Checks the products over `solids`, which the caller vouches for
+    /// (each convex, closed and bounded; a [`Primitive`] checked by
+    /// [`Primitive::validate`] and moved by an invertible map is).
+    ///
+    /// # Errors
+    /// [`CsgError::UnknownPrimitive`] or [`CsgError::BadProduct`].
+    pub fn with_solids(solids: Vec<S>, products: Vec<Product>) -> Result<Self, CsgError> {
         for (index, product) in products.iter().enumerate() {
             let bad = |reason| Err(CsgError::BadProduct { index, reason });
             let Some(first) = product.literals.first() else {
@@ -313,21 +327,23 @@ impl Model {
             }
             let mut seen = std::collections::BTreeSet::new();
             for l in &product.literals {
-                known(l.primitive, &primitives)?;
+                known(l.primitive, solids.len())?;
                 if !seen.insert(l.primitive) {
                     return bad("it names a primitive twice");
                 }
             }
         }
         Ok(Self {
-            primitives,
+            primitives: solids,
             products,
         })
     }
+}
 
-    /// The primitives.
+impl<S> Model<S> {
+    /// The primitives (the solids the literals name).
     #[must_use]
-    pub fn primitives(&self) -> &[Primitive] {
+    pub fn primitives(&self) -> &[S] {
         &self.primitives
     }
 

@@ -23,7 +23,7 @@
 //! surface of the solid.
 
 use crate::csg::Model;
-use crate::raster::{Framebuffer, State, Stats};
+use crate::raster::{Framebuffer, Solid, State, Stats};
 
 /// The state for drawing a literal's entry face into the second buffer:
 /// the z-buffer algorithm, [`State::DEFAULT`].
@@ -54,7 +54,11 @@ pub const DRAW: State = State::DEFAULT;
 ///
 /// Fragments exactly at the depth of a face of `B` count as outside `B`
 /// (z-less); the tests avoid such coincident surfaces.
-pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+///
+/// The model's primitives are any [`Solid`]s: axis-aligned primitives, or
+/// primitives moved by the affine maps of a tree's nodes (seed §2.1),
+/// which [`Framebuffer::draw`] draws alike.
+pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // Unused until you write the body:
     let _ = (&model, &frame);
     todo!(

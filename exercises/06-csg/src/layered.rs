@@ -19,7 +19,7 @@
 //! Each layer is parity-tested once against each literal: `k·m` tests.
 
 use crate::csg::{Model, Product};
-use crate::raster::{Framebuffer, Stats};
+use crate::raster::{Framebuffer, Solid, Stats};
 
 /// Counts, in `buffer`'s stencil plane, how many entry faces of
 /// `product`'s literals (front faces of primitives, back faces of
@@ -32,7 +32,11 @@ use crate::raster::{Framebuffer, Stats};
 /// side": with both faces every count would be twice as large. Products
 /// have at most `MAX_LITERALS` = 254 literals, so a count never saturates.
 /// Literals naming a primitive `model` does not have are skipped.
-pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuffer) -> u8 {
+pub fn depth_complexity<S: Solid>(
+    model: &Model<S>,
+    product: &Product,
+    buffer: &mut Framebuffer,
+) -> u8 {
     // Unused until you write the body:
     let _ = (&model, &product, &buffer);
     todo!(
@@ -70,7 +74,10 @@ pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuff
 /// The seed reserves one of the 8 stencil bits for the parity during the
 /// extraction (at most 2⁷ = 128 layers); here the stencil is cleared
 /// between extraction and parity tests, so the count may use all 8 bits.
-pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+///
+/// Like plain Goldfeather, it draws any [`Solid`]s: primitives moved by
+/// the affine maps of a tree's nodes as well.
+pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // Unused until you write the body:
     let _ = (&model, &frame);
     todo!(

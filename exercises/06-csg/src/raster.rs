@@ -16,13 +16,19 @@
 //! bit-identical depths, and a pixel's ray grazing a silhouette (a span
 //! of length zero) gives no fragment.
 //!
+//! **What is drawn** is any [`Solid`]: a convex solid that a viewing ray
+//! meets in one span or not at all. A [`Primitive`] is one; so is a
+//! primitive moved by an affine map (`transforms::Placed`, seed §2.1), which
+//! OpenGL would draw under a model matrix and which is drawn here through
+//! the span of the moved primitive.
+//!
 //! This module is given: you use it, you do not edit it.
 
 use canvas::Pixel;
 use glam::Vec3;
 
 use crate::csg::CsgError;
-use crate::primitive::{Primitive, Ray};
+use crate::primitive::{Primitive, Ray, RayInterval};
 
 /// The depth a cleared depth plane holds: farther than everything.
 pub const DEPTH_FAR: f32 = f32::INFINITY;
@@ -33,6 +39,22 @@ pub const MAX_PIXELS: u64 = 1 << 28;
 /// The stencil bit that holds the parity of the parity test (seed §4.3:
 /// one bit suffices).
 pub const PARITY_BIT: u8 = 0b0000_0001;
+
+/// A convex solid as the framebuffer rasterizes it: where a viewing ray
+/// enters and leaves it. The renderers draw any `Solid`: a [`Primitive`],
+/// or a primitive placed by the transformations of a CSG tree.
+pub trait Solid {
+    /// Where `ray` (a unit direction) runs through the solid, in the ray's
+    /// depths, `near < far`; `None` where it misses or only grazes it.
+    fn span(&self, ray: &Ray) -> Option<RayInterval>;
+}
+
+impl Solid for Primitive {
+    /// [`Primitive::interval`].
+    fn span(&self, ray: &Ray) -> Option<RayInterval> {
+        self.interval(ray)
+    }
+}
 
 /// What a rendering cost, for comparing plain and layered Goldfeather.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -366,10 +388,10 @@ impl Framebuffer {
         self.stencil.fill(value);
     }
 
-    /// Rasterizes one face of `primitive` (`surface.face`), recording
+    /// Rasterizes one face of `solid` (`surface.face`), recording
     /// `surface` where a fragment passes: every pixel whose ray hits the
-    /// primitive gets one fragment at the face's depth, processed as
-    /// OpenGL does:
+    /// solid ([`Solid::span`]) gets one fragment at the face's depth,
+    /// processed as OpenGL does:
     ///
     /// ```text
     ///   stencil test fails          → stencil op `fail`
@@ -377,10 +399,10 @@ impl Framebuffer {
     ///   else                        → stencil op `pass`, then depth and
     ///                                 surface written if their masks allow
     /// ```
-    pub fn draw(&mut self, primitive: &Primitive, surface: Surface, state: &State) {
+    pub fn draw<S: Solid + ?Sized>(&mut self, solid: &S, surface: Surface, state: &State) {
         let camera = self.camera;
         for (i, p) in camera.pixels().enumerate() {
-            let Some(span) = primitive.interval(&camera.ray(p)) else {
+            let Some(span) = solid.span(&camera.ray(p)) else {
                 continue;
             };
             let depth = match surface.face {

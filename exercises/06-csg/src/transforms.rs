@@ -19,6 +19,11 @@
 //! while [`Primitive::interval`] takes a unit direction: along
 //! `d' = M⁻¹d / |M⁻¹d|` the depth `t'` is `t · |M⁻¹d|`.
 //!
+//! The image-based renderers draw the instances too: a [`Placed`]
+//! primitive is a [`Solid`] whose span is [`instance_interval`]'s, so
+//! `Model::with_solids` over them is drawn by Goldfeather as it is (the
+//! seed's model matrix at each node, pushed down to the primitives).
+//!
 //! Convention: glam's `Affine3A` maps column vectors, `(A · B)·p =
 //! A·(B·p)`: in `Transform(A, Transform(B, X))` the inner `B` moves `X`
 //! first, then `A` moves the result.
@@ -27,6 +32,7 @@ use glam::{Affine3A, Vec3};
 
 use crate::csg::Csg;
 use crate::primitive::{Primitive, Ray, RayInterval};
+use crate::raster::Solid;
 
 /// A CSG tree whose nodes may carry an affine transformation.
 #[derive(Clone, Debug, PartialEq)]
@@ -123,6 +129,42 @@ pub struct Instance {
     /// Its space to the root's: the product of the transforms on the path
     /// from the root to the leaf, the root's leftmost.
     pub to_world: Affine3A,
+}
+
+/// A primitive moved into the root's space by an instance's map: what the
+/// image-based renderers draw for an [`Instance`] (`Model::with_solids`).
+/// Its span along a viewing ray is [`instance_interval`]'s.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placed {
+    /// The primitive, in its own space.
+    pub primitive: Primitive,
+    /// Its space to the root's.
+    pub to_world: Affine3A,
+}
+
+impl Placed {
+    /// The instances of [`flatten`] as solids, in order: literal `i` of a
+    /// product of the flattened tree names `placed[i]`. `None` if an
+    /// instance names a primitive `primitives` does not have.
+    #[must_use]
+    pub fn instances(primitives: &[Primitive], instances: &[Instance]) -> Option<Vec<Self>> {
+        instances
+            .iter()
+            .map(|instance| {
+                Some(Self {
+                    primitive: *primitives.get(instance.primitive)?,
+                    to_world: instance.to_world,
+                })
+            })
+            .collect()
+    }
+}
+
+impl Solid for Placed {
+    /// [`instance_interval`] of the primitive and its map.
+    fn span(&self, ray: &Ray) -> Option<RayInterval> {
+        instance_interval(&self.primitive, self.to_world, ray)
+    }
 }
 
 /// Pushes the transforms down to the leaves: every leaf becomes an

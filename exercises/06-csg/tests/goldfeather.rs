@@ -4,7 +4,9 @@ mod common;
 
 use canvas::Pixel;
 use common::{
-    assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth,
+    assert_frames_equal, dnf_model, example_camera, example_scene, moved_instances, moved_model,
+    scene, shade_by_depth, small_camera, transformed_scene, truth, truth_of, turned_camera,
+    turned_scene,
 };
 use csg::Vec3;
 use csg::csg::{Csg, Literal, Model, Product, Scene};
@@ -50,7 +52,11 @@ fn a_single_primitive_shows_its_front_face() {
         let yours = frame
             .surface(p)
             .map(|s| (frame.depth(p).unwrap_or(f32::NAN), s));
-        assert_eq!(yours, expected, "{p:?}");
+        assert_eq!(
+            yours, expected,
+            "pixel {p:?}: a product of one primitive shows its front face (depth, surface) \
+             wherever the ray hits it, drawn with DRAW (depth Less), and nothing elsewhere"
+        );
     }
 }
 
@@ -72,26 +78,38 @@ fn a_dent_shows_the_back_face_of_the_subtracted_sphere() {
     )
     .expect("valid");
     let (frame, tests) = rendered(&model, camera);
-    assert_eq!(tests, 2);
+    assert_eq!(
+        tests, 2,
+        "A ∩ B̄: each literal's pass tests against the other one, 2 · 1 parity tests"
+    );
     let centre = Pixel::new(4, 4);
     assert_eq!(
-        frame.surface(centre),
-        Some(Surface {
-            primitive: 1,
-            face: Face::Back
-        })
+        (frame.surface(centre), frame.depth(centre)),
+        (
+            Some(Surface {
+                primitive: 1,
+                face: Face::Back
+            }),
+            Some(-1.0)
+        ),
+        "on the axis the dent's wall shows: B's back face at t = −1, kept by A's parity \
+         test (inside A). Erase where the parity bit is clear for a positive literal and \
+         where it is set for a complement (the seed's pseudo-code; its §4.4 prose swaps them)"
     );
-    assert_eq!(frame.depth(centre), Some(-1.0));
     // 1.5 units right of the axis: outside B, on A's front at z = √(4 − 2.25).
     let side = Pixel::new(7, 4);
     assert_eq!(
-        frame.surface(side),
-        Some(Surface {
-            primitive: 0,
-            face: Face::Front
-        })
+        (frame.surface(side), frame.depth(side)),
+        (
+            Some(Surface {
+                primitive: 0,
+                face: Face::Front
+            }),
+            Some(-(4.0f32 - 2.25).sqrt())
+        ),
+        "beside the dent A's front face shows, kept by B̄'s parity test: no face of B in \
+         front of it (bit clear), so for the complement B̄ it is not erased"
     );
-    assert_eq!(frame.depth(side), Some(-(4.0f32 - 2.25).sqrt()));
 }
 
 #[testkit::test]
@@ -115,7 +133,9 @@ fn the_lens_of_two_spheres_shows_both_front_faces() {
                 primitive,
                 face: Face::Front
             }),
-            "{shown:?}"
+            "the lens X ∩ Y is bounded by both spheres' front faces, so sphere {primitive}'s \
+             front face must show; yours shows {shown:?}. Every literal draws its own pass \
+             (the seed's remark that Y ∩ X can be skipped is wrong)"
         );
     }
     assert_frames_equal(&frame, &truth(&scene, camera), "the lens");
@@ -140,7 +160,11 @@ fn parity_tests_are_m_times_m_minus_one_per_product() {
         Model::new(primitives, vec![chain(1), chain(2), chain(3), chain(5)]).expect("valid");
     let (_, tests) = rendered(&model, small_camera());
     // Products of 1, 2, 3 and 5 literals: 0 + 2 + 6 + 20.
-    assert_eq!(tests, 28);
+    assert_eq!(
+        tests, 28,
+        "products of 1, 2, 3 and 5 literals: m·(m − 1) parity tests each, 0 + 2 + 6 + 20 \
+         (each literal against every other, never against itself)"
+    );
 }
 
 #[testkit::test]
@@ -157,15 +181,19 @@ fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_les
     ] {
         assert!(
             Model::new(two.clone(), vec![Product::new(bad.clone())]).is_err(),
-            "{bad:?}"
+            "Model::new refuses the product {bad:?} (empty, starting with a complement, \
+             naming a primitive twice or one that does not exist)"
         );
     }
     assert!(Camera::new(0, 10, Vec3::ZERO, 0.0, 0.0, 1.0).is_err());
     assert!(Camera::new(10, 10, Vec3::ZERO, f32::NAN, 0.0, 1.0).is_err());
     let empty = Model::new(vec![sphere(Vec3::ZERO, 1.0)], vec![]).expect("valid");
     let (frame, tests) = rendered(&empty, camera);
-    assert_eq!(tests, 0);
-    assert!(common::surfaces(&frame).is_empty());
+    assert_eq!(tests, 0, "the empty sum has no literal to test");
+    assert!(
+        common::surfaces(&frame).is_empty(),
+        "the empty sum is the empty solid: nothing drawn"
+    );
     // A frame that already holds a nearer sphere keeps it where it is in
     // front: the result is the union's.
     let near = sphere(Vec3::new(0.0, 0.0, 1.0), 0.8);
@@ -270,8 +298,61 @@ fn each_literal_merges_its_visible_fragments_into_the_frame() {
     picture.assert_matches();
 }
 
+/// Seed §2.1: a node may carry an affine map. The turned scene of task 6
+/// — a turned cube, an ellipsoid cut out of it, a sheared column —
+/// flattened to moved primitives (the tests' own, not your task 6) and
+/// drawn by your Goldfeather must be the ray caster's frame, pixel by
+/// pixel, and task 6's picture.
+#[testkit::test]
+fn a_transformed_tree_matches_the_ray_caster_and_the_turned_picture() {
+    let (primitives, node) = turned_scene();
+    let camera = turned_camera();
+    let (instances, tree) = moved_instances(&node, &primitives);
+    let model = moved_model(&instances, &tree);
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(&model, &mut frame);
+    let picture = testkit::image::check_image(
+        "goldfeather_turned_scene",
+        &shade_by_depth(&frame),
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/images/transforms_turned_scene.png"
+        ),
+        testkit::image::Tolerance {
+            channel: 2.0 / 255.0,
+            mismatched_fraction: 0.005,
+        },
+    );
+    assert_eq!(
+        stats.parity_tests, 2,
+        "(cube − ellipsoid) ∪ column is the products cube ∩ ¬ellipsoid and column: \
+         2 · 1 + 1 · 0 parity tests"
+    );
+    assert_frames_equal(
+        &frame,
+        &truth_of(&tree, &instances, camera),
+        "the turned scene (primitives moved by the maps at the nodes)",
+    );
+    picture.assert_matches();
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
+
+    /// Random trees with random maps (scale, rotation, translation) at
+    /// random nodes: the moved primitives are drawn through their spans
+    /// like any others.
+    #[testkit::test]
+    fn random_transformed_trees_match_the_ray_caster((primitives, node) in transformed_scene(5)) {
+        let camera = small_camera();
+        let (instances, tree) = moved_instances(&node, &primitives);
+        let model = moved_model(&instances, &tree);
+        let mut frame = Framebuffer::new(camera);
+        let stats = render(&model, &mut frame);
+        let expected: usize = model.products().iter().map(|p| p.literals.len() * (p.literals.len() - 1)).sum();
+        prop_assert_eq!(stats.parity_tests, expected as u64);
+        assert_frames_equal(&frame, &truth_of(&tree, &instances, camera), &format!("{tree}, each leaf a primitive moved by the maps above it"));
+    }
 
     #[testkit::test]
     fn random_scenes_match_the_ray_caster(scene in scene(5)) {

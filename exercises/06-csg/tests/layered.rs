@@ -4,7 +4,8 @@
 mod common;
 
 use common::{
-    assert_frames_equal, dnf_model, example_camera, example_scene, scene, small_camera, truth,
+    assert_frames_equal, dnf_model, example_camera, example_scene, moved_instances, moved_model,
+    scene, small_camera, transformed_scene, truth, truth_of, turned_camera, turned_scene,
 };
 use csg::Vec3;
 use csg::csg::{Csg, Literal, Model, Product, Scene};
@@ -81,7 +82,11 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
         ),
         testkit::image::Tolerance::EXACT,
     );
-    assert_eq!(k, common::depth_complexity(&model, product, &camera));
+    assert_eq!(
+        k,
+        common::depth_complexity(&model, product, &camera),
+        "depth_complexity returns the largest count of entry faces over a pixel"
+    );
     for p in camera.pixels() {
         let ray = camera.ray(p);
         let count = product
@@ -89,8 +94,18 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
             .iter()
             .filter(|l| model.primitives()[l.primitive].interval(&ray).is_some())
             .count();
-        assert_eq!(buffer.stencil(p), Some(count as u8), "{p:?}");
-        assert_eq!(buffer.surface(p), None, "colour writes are off");
+        assert_eq!(
+            buffer.stencil(p),
+            Some(count as u8),
+            "pixel {p:?}: the stencil counts the entry faces over it, one per literal whose \
+             primitive the ray crosses (front face of a primitive, back face of a complement; \
+             depth Always, stencil op Increment); both faces would count twice"
+        );
+        assert_eq!(
+            buffer.surface(p),
+            None,
+            "pixel {p:?}: counting draws with colour writes off"
+        );
     }
     picture.assert_matches();
 }
@@ -104,12 +119,18 @@ fn a_drilled_plate_needs_two_layers_however_many_holes() {
         let mut buffer = Framebuffer::new(camera);
         assert_eq!(
             depth_complexity(&model, &model.products()[0], &mut buffer),
-            2
+            2,
+            "a plate with {holes} holes: a pixel is covered by the plate's front face and at \
+             most one dent's back face (one entry face per literal), so k = 2"
         );
         let mut frame = Framebuffer::new(camera);
         let stats = render(&model, &mut frame);
         let m = holes as u64 + 1;
-        assert_eq!(stats.layers, 2, "{holes} holes");
+        assert_eq!(
+            stats.layers, 2,
+            "a plate with {holes} holes has depth complexity k = 2: extract k layers \
+             (Stats::layers), however many holes"
+        );
         assert_eq!(
             stats.parity_tests,
             2 * m,
@@ -126,8 +147,12 @@ fn skewered_balls_need_one_layer_per_ball() {
     let model = dnf_model(&scene);
     let mut frame = Framebuffer::new(camera);
     let stats = render(&model, &mut frame);
-    assert_eq!(stats.layers, 5);
-    assert_eq!(stats.parity_tests, 25);
+    assert_eq!(
+        (stats.layers, stats.parity_tests),
+        (5, 25),
+        "five balls on the view direction: depth complexity 5, so 5 layers, each \
+         parity-tested against all 5 literals (k·m = 25)"
+    );
     assert_frames_equal(&frame, &truth(&scene, camera), "skewered balls");
 }
 
@@ -140,8 +165,17 @@ fn a_product_of_one_primitive_is_one_layer_with_one_parity_test() {
     let model = dnf_model(&scene);
     let mut frame = Framebuffer::new(camera);
     let stats = render(&model, &mut frame);
-    assert_eq!((stats.layers, stats.parity_tests), (1, 1));
-    assert_frames_equal(&frame, &truth(&scene, camera), "one sphere");
+    assert_eq!(
+        (stats.layers, stats.parity_tests),
+        (1, 1),
+        "one sphere: 1 layer, tested once against the sphere itself (k·m = 1)"
+    );
+    assert_frames_equal(
+        &frame,
+        &truth(&scene, camera),
+        "one sphere (its front fragment must see its own front face at equal depth: \
+         parity tests with LessEqual, seed §6.4)",
+    );
 }
 
 #[testkit::test]
@@ -166,8 +200,13 @@ fn parity_tests_of_plain_and_layered_goldfeather() {
                 &camera,
             ));
             let m = n as u64;
-            assert_eq!(stats.layers, k, "{name}, {n} primitives");
-            assert_eq!(stats.parity_tests, k * m, "{name}, {n} primitives");
+            assert_eq!(
+                (stats.layers, stats.parity_tests),
+                (k, k * m),
+                "{name}, {n} primitives: depth complexity k = {k} layers, k·m = {} parity \
+                 tests",
+                k * m
+            );
             println!("| {name} | {m} | {} | {k} | {} |", m * (m - 1), k * m);
         }
     }
@@ -202,8 +241,11 @@ fn the_seeds_example_matches_the_ray_caster_and_the_reference_image() {
         &model.products()[0],
         &camera,
     ));
-    assert_eq!(stats.layers, k);
-    assert_eq!(stats.parity_tests, 5 * k);
+    assert_eq!(
+        (stats.layers, stats.parity_tests),
+        (k, 5 * k),
+        "the example's product of 5 literals: k = {k} layers, k·5 parity tests"
+    );
     assert_frames_equal(&frame, &truth, "the example");
     picture.assert_matches();
 }
@@ -297,8 +339,52 @@ fn products_are_rendered_one_after_the_other() {
     assert_frames_equal(&frame, &truth(&scene, camera), "two products");
 }
 
+/// Seed §2.1: the turned scene of task 6, flattened to moved primitives
+/// (the tests' own, not your task 6): the products cube ∩ ¬ellipsoid
+/// (depth complexity 2) and the column (1).
+#[testkit::test]
+fn a_transformed_tree_matches_the_ray_caster() {
+    let (primitives, node) = turned_scene();
+    let camera = turned_camera();
+    let (instances, tree) = moved_instances(&node, &primitives);
+    let model = moved_model(&instances, &tree);
+    let mut frame = Framebuffer::new(camera);
+    let stats = render(&model, &mut frame);
+    assert_eq!(
+        (stats.layers, stats.parity_tests),
+        (3, 5),
+        "cube ∩ ¬ellipsoid: 2 layers · 2 literals, the column: 1 layer · 1 literal"
+    );
+    assert_frames_equal(
+        &frame,
+        &truth_of(&tree, &instances, camera),
+        "the turned scene (primitives moved by the maps at the nodes)",
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
+
+    /// Random trees with random maps at random nodes, with the exact layer
+    /// and test counts.
+    #[testkit::test]
+    fn random_transformed_trees_match_the_ray_caster((primitives, node) in transformed_scene(5)) {
+        let camera = small_camera();
+        let (instances, tree) = moved_instances(&node, &primitives);
+        let model = moved_model(&instances, &tree);
+        let mut frame = Framebuffer::new(camera);
+        let stats = render(&model, &mut frame);
+        let mut expected_layers = 0;
+        let mut expected_tests = 0;
+        for product in model.products() {
+            let k = u64::from(common::depth_complexity(&model, product, &camera));
+            expected_layers += k;
+            expected_tests += k * product.literals.len() as u64;
+        }
+        prop_assert_eq!(stats.layers, expected_layers);
+        prop_assert_eq!(stats.parity_tests, expected_tests);
+        assert_frames_equal(&frame, &truth_of(&tree, &instances, camera), &format!("{tree}, each leaf a primitive moved by the maps above it"));
+    }
 
     #[testkit::test]
     fn random_scenes_match_the_ray_caster(scene in scene(5)) {

@@ -2,15 +2,18 @@
 
 mod common;
 
-use canvas::{Canvas, Rgba};
-use common::{in_primitive, point, primitive, tree};
+use canvas::Canvas;
+use common::{
+    affine, in_primitive, point, primitive, shade_by_depth, tree, turned_camera, turned_scene,
+    with_transforms,
+};
 use csg::Vec3;
 use csg::csg::Csg;
-use csg::primitive::{Axis, Primitive, Ray, RayInterval};
-use csg::raster::{Camera, Face, Framebuffer};
+use csg::primitive::{Primitive, Ray, RayInterval};
+use csg::raster::{Camera, Framebuffer};
 use csg::raycast::intervals_by;
 use csg::transforms::{Instance, Node, TransformError, contains, flatten, instance_interval};
-use glam::{Affine3A, Quat};
+use glam::Affine3A;
 use proptest::prelude::*;
 
 fn unit_sphere() -> Primitive {
@@ -110,52 +113,10 @@ fn flatten_numbers_the_leaves_left_to_right_and_keeps_the_operations() {
     }
 }
 
-/// A random affine map: a non-uniform scale, a rotation and a
-/// translation.
-fn affine() -> impl Strategy<Value = Affine3A> {
-    (
-        (0.5f32..2.0, 0.5f32..2.0, 0.5f32..2.0),
-        (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0, -3.0f32..3.0),
-        (-1.5f32..1.5, -1.5f32..1.5, -1.5f32..1.5),
-    )
-        .prop_map(|((sx, sy, sz), (ax, ay, az, angle), (tx, ty, tz))| {
-            let axis = Vec3::new(ax, ay, az).try_normalize().unwrap_or(Vec3::Y);
-            Affine3A::from_scale_rotation_translation(
-                Vec3::new(sx, sy, sz),
-                Quat::from_axis_angle(axis, angle),
-                Vec3::new(tx, ty, tz),
-            )
-        })
-}
-
-/// `tree` with a transform taken from `maps` above each node whose map is
-/// `Some`, in pre-order.
-fn with_transforms(tree: &Csg, maps: &mut impl Iterator<Item = Option<Affine3A>>) -> Node {
-    let node = match tree {
-        Csg::Primitive(i) => Node::leaf(*i),
-        Csg::Union(x, y) => {
-            let x = with_transforms(x, maps);
-            Node::union(x, with_transforms(y, maps))
-        }
-        Csg::Intersection(x, y) => {
-            let x = with_transforms(x, maps);
-            Node::intersection(x, with_transforms(y, maps))
-        }
-        Csg::Difference(x, y) => {
-            let x = with_transforms(x, maps);
-            Node::difference(x, with_transforms(y, maps))
-        }
-    };
-    match maps.next().flatten() {
-        Some(m) => Node::transform(m, node),
-        None => node,
-    }
-}
-
 fn scene_with_transforms() -> impl Strategy<Value = (Vec<Primitive>, Node)> {
     (
         prop::collection::vec(primitive(), 1..=4),
-        prop::collection::vec(prop::option::of(affine()), 16),
+        prop::collection::vec(prop::option::of(affine(0.5..2.0, 1.5)), 16),
     )
         .prop_flat_map(|(primitives, maps)| {
             let n = primitives.len();
@@ -347,40 +308,6 @@ proptest! {
     }
 }
 
-/// A box turned about two axes, an ellipsoid cut out of it, and a
-/// cylinder sheared into a slanted column through it.
-fn turned_scene() -> (Vec<Primitive>, Node) {
-    let primitives = vec![
-        Primitive::Cuboid {
-            min: Vec3::splat(-1.0),
-            max: Vec3::splat(1.0),
-        },
-        unit_sphere(),
-        Primitive::Cylinder {
-            centre: Vec3::ZERO,
-            axis: Axis::Y,
-            radius: 0.3,
-            half_length: 1.6,
-        },
-    ];
-    let turn = Affine3A::from_rotation_y(0.5) * Affine3A::from_rotation_x(0.4);
-    let ellipsoid = Affine3A::from_scale(Vec3::new(1.5, 0.7, 1.5));
-    let shear = Affine3A::from_cols(
-        Vec3::X.into(),
-        Vec3::new(0.4, 1.0, 0.0).into(),
-        Vec3::Z.into(),
-        Vec3::ZERO.into(),
-    );
-    let node = Node::union(
-        Node::transform(
-            turn,
-            Node::difference(Node::leaf(0), Node::transform(ellipsoid, Node::leaf(1))),
-        ),
-        Node::transform(shear, Node::leaf(2)),
-    );
-    (primitives, node)
-}
-
 /// Ray casts `node` with `flatten` and `instance_interval` and shades the
 /// first boundary at each pixel: a colour per instance, darker with depth,
 /// back faces (the walls of a cut) darker still.
@@ -399,33 +326,13 @@ fn picture(primitives: &[Primitive], node: &Node, camera: Camera) -> Canvas {
             frame.write_less(p, b.t, b.surface);
         }
     }
-    let palette = [
-        Rgba::rgb(0.9, 0.6, 0.2),
-        Rgba::rgb(0.3, 0.6, 0.9),
-        Rgba::rgb(0.4, 0.8, 0.4),
-    ];
-    let mut canvas = Canvas::new(camera.width(), camera.height());
-    for p in camera.pixels() {
-        if let (Some(depth), Some(surface)) = (frame.depth(p), frame.surface(p))
-            && depth.is_finite()
-        {
-            let shade = (0.75 - 0.2 * depth).clamp(0.25, 1.0)
-                * if surface.face == Face::Back {
-                    0.55
-                } else {
-                    1.0
-                };
-            let c = palette[surface.primitive % palette.len()];
-            canvas.set(p, Rgba::rgb(c.r * shade, c.g * shade, c.b * shade));
-        }
-    }
-    canvas
+    shade_by_depth(&frame)
 }
 
 #[testkit::test]
 fn the_turned_scene_matches_the_reference_image() {
     let (primitives, node) = turned_scene();
-    let camera = Camera::new(160, 160, Vec3::ZERO, 0.3, -0.35, 45.0).expect("a valid camera");
+    let camera = turned_camera();
     testkit::image::assert_image_matches(
         "transforms_turned_scene",
         &picture(&primitives, &node, camera),

@@ -23,7 +23,7 @@
 //! surface of the solid.
 
 use crate::csg::Model;
-use crate::raster::{Framebuffer, State, Stats};
+use crate::raster::{Framebuffer, Solid, State, Stats};
 // BEGIN SOLUTION
 use crate::csg::Literal;
 use crate::raster::{Compare, Face, PARITY_BIT, Stencil, StencilOp, Surface};
@@ -58,7 +58,11 @@ pub const DRAW: State = State::DEFAULT;
 ///
 /// Fragments exactly at the depth of a face of `B` count as outside `B`
 /// (z-less); the tests avoid such coincident surfaces.
-pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+///
+/// The model's primitives are any [`Solid`]s: axis-aligned primitives, or
+/// primitives moved by the affine maps of a tree's nodes (seed §2.1),
+/// which [`Framebuffer::draw`] draws alike.
+pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // BEGIN SOLUTION goldfeather: per literal, draw its entry face, parity-test it against every other literal, merge z-less
     let mut stats = Stats::default();
     let mut second = Framebuffer::new(*frame.camera());
@@ -90,7 +94,7 @@ pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
 // BEGIN SOLUTION
 /// Toggles the parity bit wherever a face of `b`'s primitive passes
 /// `depth_func` against the stored depth; writes nothing else.
-fn parity_test(frame: &mut Framebuffer, b: Literal, depth_func: Compare, model: &Model) {
+fn parity_test<S: Solid>(frame: &mut Framebuffer, b: Literal, depth_func: Compare, model: &Model<S>) {
     let state = State {
         depth_func,
         depth_write: false,

@@ -19,7 +19,7 @@
 //! Each layer is parity-tested once against each literal: `k·m` tests.
 
 use crate::csg::{Model, Product};
-use crate::raster::{Framebuffer, Stats};
+use crate::raster::{Framebuffer, Solid, Stats};
 // BEGIN SOLUTION
 use crate::csg::Literal;
 use crate::raster::{Compare, Face, PARITY_BIT, State, Stencil, StencilOp, Surface};
@@ -36,7 +36,11 @@ use crate::raster::{Compare, Face, PARITY_BIT, State, Stencil, StencilOp, Surfac
 /// side": with both faces every count would be twice as large. Products
 /// have at most `MAX_LITERALS` = 254 literals, so a count never saturates.
 /// Literals naming a primitive `model` does not have are skipped.
-pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuffer) -> u8 {
+pub fn depth_complexity<S: Solid>(
+    model: &Model<S>,
+    product: &Product,
+    buffer: &mut Framebuffer,
+) -> u8 {
     // BEGIN SOLUTION layered: draw every entry face with stencil op Increment and no other writes; return the largest count
     buffer.clear();
     let count = State {
@@ -83,7 +87,10 @@ pub fn depth_complexity(model: &Model, product: &Product, buffer: &mut Framebuff
 /// The seed reserves one of the 8 stencil bits for the parity during the
 /// extraction (at most 2⁷ = 128 layers); here the stencil is cleared
 /// between extraction and parity tests, so the count may use all 8 bits.
-pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
+///
+/// Like plain Goldfeather, it draws any [`Solid`]s: primitives moved by
+/// the affine maps of a tree's nodes as well.
+pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // BEGIN SOLUTION layered: count k, extract each layer by stencil Equal n − 1 with Increment, test it against every literal, merge
     let mut stats = Stats::default();
     let mut second = Framebuffer::new(*frame.camera());
@@ -120,7 +127,12 @@ pub fn render(model: &Model, frame: &mut Framebuffer) -> Stats {
 
 // BEGIN SOLUTION
 /// Draws the entry face of every literal, in product order.
-fn draw_entry_faces(model: &Model, product: &Product, buffer: &mut Framebuffer, state: &State) {
+fn draw_entry_faces<S: Solid>(
+    model: &Model<S>,
+    product: &Product,
+    buffer: &mut Framebuffer,
+    state: &State,
+) {
     for l in &product.literals {
         if let Some(primitive) = model.primitives().get(l.primitive) {
             let surface = Surface {
@@ -134,7 +146,7 @@ fn draw_entry_faces(model: &Model, product: &Product, buffer: &mut Framebuffer, 
 
 /// Toggles the parity bit wherever a face of `a`'s primitive lies in front
 /// of or at the stored depth.
-fn parity_test(model: &Model, a: Literal, buffer: &mut Framebuffer) {
+fn parity_test<S: Solid>(model: &Model<S>, a: Literal, buffer: &mut Framebuffer) {
     let state = State {
         depth_func: Compare::LessEqual,
         depth_write: false,

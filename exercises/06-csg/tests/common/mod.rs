@@ -5,9 +5,11 @@
 
 use csg::Vec3;
 use csg::csg::{Csg, Literal, Model, Product, Scene};
-use csg::primitive::Ray;
 use csg::primitive::{Axis, Primitive};
-use csg::raster::{Camera, Face, Framebuffer, Surface};
+use csg::primitive::{Ray, RayInterval};
+use csg::raster::{Camera, Face, Framebuffer, Solid, Surface};
+use csg::transforms::Node;
+use glam::{Affine3A, Quat};
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------
@@ -204,7 +206,7 @@ pub fn surfaces(frame: &Framebuffer) -> std::collections::BTreeSet<Surface> {
 
 /// How many entry faces of the product's literals each pixel's ray
 /// crosses, the largest such count: the depth complexity by definition.
-pub fn depth_complexity(model: &Model, product: &Product, camera: &Camera) -> u8 {
+pub fn depth_complexity<S: Solid>(model: &Model<S>, product: &Product, camera: &Camera) -> u8 {
     camera
         .pixels()
         .map(|p| {
@@ -212,7 +214,7 @@ pub fn depth_complexity(model: &Model, product: &Product, camera: &Camera) -> u8
             product
                 .literals
                 .iter()
-                .filter(|l| model.primitives()[l.primitive].interval(&ray).is_some())
+                .filter(|l| model.primitives()[l.primitive].span(&ray).is_some())
                 .count() as u8
         })
         .max()
@@ -428,4 +430,221 @@ pub fn rows(rows: &[canvas::Canvas]) -> canvas::Canvas {
         top = y0 - gap as i32;
     }
     out
+}
+
+// ---------------------------------------------------------------------------
+// Transformed trees, for the renderers (seed §2.1): the tests' own
+// flattening and moved primitives, so that a renderer is tested without
+// the transforms task.
+
+/// A primitive moved by an affine map, met by a ray where the ray taken
+/// back by the inverse map meets the primitive: `M⁻¹·o + t·M⁻¹·d`, whose
+/// depths along the unit direction are `|M⁻¹·d|` times the world's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Moved {
+    /// The primitive in its own space.
+    pub primitive: Primitive,
+    /// Its space to the world's.
+    pub to_world: Affine3A,
+}
+
+impl Solid for Moved {
+    fn span(&self, ray: &Ray) -> Option<RayInterval> {
+        let to_local = self.to_world.inverse();
+        let along = to_local.transform_vector3(ray.direction);
+        let stretch = along.length();
+        let local = Ray {
+            origin: to_local.transform_point3(ray.origin),
+            direction: along / stretch,
+        };
+        let s = self.primitive.interval(&local)?;
+        Some(RayInterval {
+            near: s.near / stretch,
+            far: s.far / stretch,
+        })
+    }
+}
+
+/// The moved primitives of `node`'s leaves, left to right, each under the
+/// product of the maps above it (outermost first), and the tree over them.
+pub fn moved_instances(node: &Node, primitives: &[Primitive]) -> (Vec<Moved>, Csg) {
+    fn walk(node: &Node, above: Affine3A, primitives: &[Primitive], out: &mut Vec<Moved>) -> Csg {
+        let mut pair = |x: &Node, y: &Node| {
+            let x = walk(x, above, primitives, out);
+            (x, walk(y, above, primitives, out))
+        };
+        match node {
+            Node::Leaf(i) => {
+                out.push(Moved {
+                    primitive: primitives[*i],
+                    to_world: above,
+                });
+                Csg::leaf(out.len() - 1)
+            }
+            Node::Union(x, y) => {
+                let (x, y) = pair(x, y);
+                Csg::union(x, y)
+            }
+            Node::Intersection(x, y) => {
+                let (x, y) = pair(x, y);
+                Csg::intersection(x, y)
+            }
+            Node::Difference(x, y) => {
+                let (x, y) = pair(x, y);
+                Csg::difference(x, y)
+            }
+            Node::Transform(m, x) => walk(x, above * *m, primitives, out),
+        }
+    }
+    let mut out = Vec::new();
+    let tree = walk(node, Affine3A::IDENTITY, primitives, &mut out);
+    (out, tree)
+}
+
+/// The ray caster's frame of `tree` over any solids: at every pixel the
+/// first entry point of the tree's intervals.
+pub fn truth_of<S: Solid>(tree: &Csg, solids: &[S], camera: Camera) -> Framebuffer {
+    let mut frame = Framebuffer::new(camera);
+    for p in camera.pixels() {
+        let ray = camera.ray(p);
+        let span = |i: usize| solids.get(i).and_then(|s| s.span(&ray));
+        if let Some(b) = csg::raycast::intervals_by(tree, &span).first()
+            && b.t.is_finite()
+        {
+            frame.write_less(p, b.t, b.surface);
+        }
+    }
+    frame
+}
+
+/// The model of a tree over moved primitives, products by expansion.
+pub fn moved_model(instances: &[Moved], tree: &Csg) -> Model<Moved> {
+    Model::with_solids(instances.to_vec(), dnf(tree)).expect("a valid model")
+}
+
+/// A random affine map: a non-uniform scale in `scale`, any rotation, a
+/// translation up to `shift` along each axis.
+pub fn affine(scale: std::ops::Range<f32>, shift: f32) -> impl Strategy<Value = Affine3A> {
+    (
+        (scale.clone(), scale.clone(), scale),
+        (-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0, -3.0f32..3.0),
+        (-shift..shift, -shift..shift, -shift..shift),
+    )
+        .prop_map(|((sx, sy, sz), (ax, ay, az, angle), (tx, ty, tz))| {
+            let axis = Vec3::new(ax, ay, az).try_normalize().unwrap_or(Vec3::Y);
+            Affine3A::from_scale_rotation_translation(
+                Vec3::new(sx, sy, sz),
+                Quat::from_axis_angle(axis, angle),
+                Vec3::new(tx, ty, tz),
+            )
+        })
+}
+
+/// `tree` with a transform taken from `maps` above each node whose map is
+/// `Some`, in post-order (children first).
+pub fn with_transforms(tree: &Csg, maps: &mut impl Iterator<Item = Option<Affine3A>>) -> Node {
+    let node = match tree {
+        Csg::Primitive(i) => Node::leaf(*i),
+        Csg::Union(x, y) => {
+            let x = with_transforms(x, maps);
+            Node::union(x, with_transforms(y, maps))
+        }
+        Csg::Intersection(x, y) => {
+            let x = with_transforms(x, maps);
+            Node::intersection(x, with_transforms(y, maps))
+        }
+        Csg::Difference(x, y) => {
+            let x = with_transforms(x, maps);
+            Node::difference(x, with_transforms(y, maps))
+        }
+    };
+    match maps.next().flatten() {
+        Some(m) => Node::transform(m, node),
+        None => node,
+    }
+}
+
+/// A random scene of `1..=max` primitives, each a leaf once, with affine
+/// maps at random nodes (mild ones, so that the solid stays in view of
+/// [`small_camera`]): a transformed tree and its primitives.
+pub fn transformed_scene(max: usize) -> impl Strategy<Value = (Vec<Primitive>, Node)> {
+    (
+        scene(max),
+        prop::collection::vec(prop::option::of(affine(0.6..1.4, 0.6)), 9),
+    )
+        .prop_map(|(scene, maps)| {
+            let node = with_transforms(scene.tree(), &mut maps.into_iter().cycle());
+            (scene.primitives().to_vec(), node)
+        })
+}
+
+/// A box turned about two axes, an ellipsoid (a sphere scaled by 1.5,
+/// 0.7, 1.5) cut out of it, and a cylinder sheared into a slanted column
+/// beside it: `turn(C − stretch(S)) ∪ shear(Y)`.
+pub fn turned_scene() -> (Vec<Primitive>, Node) {
+    let primitives = vec![
+        Primitive::Cuboid {
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+        },
+        Primitive::Sphere {
+            centre: Vec3::ZERO,
+            radius: 1.0,
+        },
+        Primitive::Cylinder {
+            centre: Vec3::ZERO,
+            axis: Axis::Y,
+            radius: 0.3,
+            half_length: 1.6,
+        },
+    ];
+    let turn = Affine3A::from_rotation_y(0.5) * Affine3A::from_rotation_x(0.4);
+    let ellipsoid = Affine3A::from_scale(Vec3::new(1.5, 0.7, 1.5));
+    let shear = Affine3A::from_cols(
+        Vec3::X.into(),
+        Vec3::new(0.4, 1.0, 0.0).into(),
+        Vec3::Z.into(),
+        Vec3::ZERO.into(),
+    );
+    let node = Node::union(
+        Node::transform(
+            turn,
+            Node::difference(Node::leaf(0), Node::transform(ellipsoid, Node::leaf(1))),
+        ),
+        Node::transform(shear, Node::leaf(2)),
+    );
+    (primitives, node)
+}
+
+/// The camera of the turned scene's picture.
+pub fn turned_camera() -> Camera {
+    Camera::new(160, 160, Vec3::ZERO, 0.3, -0.35, 45.0).expect("a valid camera")
+}
+
+/// The turned scene's picture of a frame: a colour per instance (orange
+/// cube, blue ellipsoid, green column), darker with depth, back faces
+/// (the walls of a cut) darker still.
+pub fn shade_by_depth(frame: &Framebuffer) -> canvas::Canvas {
+    let palette = [
+        canvas::Rgba::rgb(0.9, 0.6, 0.2),
+        canvas::Rgba::rgb(0.3, 0.6, 0.9),
+        canvas::Rgba::rgb(0.4, 0.8, 0.4),
+    ];
+    let camera = *frame.camera();
+    let mut canvas = canvas::Canvas::new(camera.width(), camera.height());
+    for p in camera.pixels() {
+        if let (Some(depth), Some(surface)) = (frame.depth(p), frame.surface(p))
+            && depth.is_finite()
+        {
+            let shade = (0.75 - 0.2 * depth).clamp(0.25, 1.0)
+                * if surface.face == Face::Back {
+                    0.55
+                } else {
+                    1.0
+                };
+            let c = palette[surface.primitive % palette.len()];
+            canvas.set(p, canvas::Rgba::rgb(c.r * shade, c.g * shade, c.b * shade));
+        }
+    }
+    canvas
 }
