@@ -234,12 +234,26 @@ proptest! {
 
     /// VSYNC: no refresh is torn, frames appear in order, and the renderer
     /// finishes no more frames than without VSYNC, and each shown frame
-    /// was finished.
+    /// was finished; the first frame, finished at tick `render`, is swapped
+    /// in at the first blank tick from then on, and every refresh scanned
+    /// after that shows a frame.
     #[testkit::test]
     fn vsync_never_tears(timing in timing(), refreshes in 1u32..=6) {
         let presented = run(SwapMode::Vsync, timing, refreshes);
         let free = run(SwapMode::Immediate, timing, refreshes);
+        prop_assert_eq!(presented.rows.len(), refreshes as usize, "one list of rows per refresh");
+        prop_assert!(presented.rows.iter().all(|rows| rows.len() == timing.height as usize), "height rows per refresh");
         prop_assert!(presented.finished <= free.finished);
+        let (period, height, render) = (timing.period(), u64::from(timing.height), u64::from(timing.render));
+        let first_swap = if render % period >= height { render } else { render / period * period + height };
+        for (r, rows) in presented.rows.iter().enumerate() {
+            let shows = r as u64 * period > first_swap;
+            prop_assert_eq!(rows[0].is_some(), shows, "refresh {} (first swap at tick {}): {:?}", r, first_swap, rows);
+        }
+        prop_assert!(
+            u64::from(presented.finished) >= u64::from(render <= refreshes as u64 * period),
+            "frame 0 is finished at tick {} ≤ {}", render, refreshes as u64 * period
+        );
         let mut last = None;
         for (r, rows) in presented.rows.iter().enumerate() {
             prop_assert!(rows.windows(2).all(|w| w[0] == w[1]), "refresh {} torn: {:?}", r, rows);
