@@ -211,7 +211,12 @@ pub fn judge(output: &str, exit: &Exit, token: &str, time_limit_s: f64) -> Verdi
     }
     let panic = last_panic(output);
     let mut verdict = Verdict {
-        panic_location: panic.as_ref().map(|p| p.location.clone()),
+        // A failed `prop_assert!` panics inside proptest's generated code
+        // (the test's first line); the assertion's own place is in the
+        // message.
+        panic_location: panic
+            .as_ref()
+            .map(|p| property_assertion_site(&p.message).unwrap_or_else(|| p.location.clone())),
         ..Verdict::default()
     };
     let mut panic_reason = None;
@@ -318,6 +323,23 @@ fn panic_header(line: &str) -> Option<(usize, String)> {
     let location = rest[at..].split_once("panicked at ")?.1.trim_end();
     let location = location.strip_suffix(':').unwrap_or(location);
     Some((start, location.to_owned()))
+}
+
+/// Where a failed `prop_assert!` stands: proptest's report `Test failed:
+/// … at tests/file.rs:12` (the last such place before the minimal input).
+fn property_assertion_site(message: &str) -> Option<String> {
+    let report = message.strip_prefix("Test failed: ")?;
+    let report = report
+        .split("\nminimal failing input")
+        .next()
+        .unwrap_or(report);
+    report.rmatch_indices(" at ").find_map(|(at, _)| {
+        let place = report[at + 4..].split_whitespace().next()?;
+        let place = place.trim_end_matches(['.', ',', ';']);
+        let (file, line) = place.rsplit_once(':')?;
+        (file.ends_with(".rs") && !line.is_empty() && line.bytes().all(|b| b.is_ascii_digit()))
+            .then(|| place.to_owned())
+    })
 }
 
 /// The last panic in the output: its location and its message lines.
@@ -538,6 +560,22 @@ mod tests {
         );
         assert_eq!(verdict.raster_diff.as_deref(), Some("legend\n2 |.+\n1 |#-"));
         assert_eq!(verdict.minimal_input, None);
+    }
+
+    #[test]
+    fn a_failed_prop_assert_is_placed_at_its_assertion() {
+        // proptest panics in the code its macro generated (the test's first
+        // line); `prop_assert!` names its own place in the message.
+        let output = "thread 'p' panicked at tests/liang_barsky.rs:7:1:\nTest failed: x = -0.6 runs parallel to the left border: rejected at tests/common/lines.rs:293.\nminimal failing input: y = 0.5\n\tsuccesses: 0\n\tlocal rejects: 0\n\tglobal rejects: 0\n\nFAILED\n";
+        let verdict = judge(output, &exit(101), TOKEN, 20.0);
+        assert_eq!(
+            verdict.panic_location.as_deref(),
+            Some("tests/common/lines.rs:293")
+        );
+        // A message that names no place keeps the panic's.
+        let output = "thread 'p' panicked at tests/dda.rs:20:1:\nTest failed: the ends differ at x = 3\nminimal failing input: a = 1\n\nFAILED\n";
+        let verdict = judge(output, &exit(101), TOKEN, 20.0);
+        assert_eq!(verdict.panic_location.as_deref(), Some("tests/dda.rs:20:1"));
     }
 
     #[test]
