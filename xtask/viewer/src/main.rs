@@ -265,14 +265,20 @@ fn chain_screenshot(
         drawing.status.describe(),
         drawing.setup.method.source()
     );
-    let Some(result) = drawing.result else {
-        bail!("your stages drew no picture: the chain stopped at a stage above");
-    };
+    // A chain that stopped at a stage draws nothing, as the mesh pipeline
+    // does: the empty picture, with the stage named above.
+    let canvas = drawing.result.map_or_else(
+        || {
+            let mut empty = canvas::Canvas::new(size, size);
+            empty.clear(canvas::Rgba::WHITE);
+            empty
+        },
+        |result| result.canvas,
+    );
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
-    result
-        .canvas
+    canvas
         .save_png(path)
         .with_context(|| format!("cannot write {}", path.display()))?;
     println!("wrote {}", path.display());
