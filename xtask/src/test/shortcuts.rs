@@ -275,6 +275,11 @@ pub fn b<T>() -> u32 {
     #[test]
     fn the_courses_shortcuts_are_read_and_each_file_holds_its_topics() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        if !root.join(SHORTCUTS).is_dir() {
+            // A student edition holds no shortcuts (they are the course's).
+            eprintln!("not run: no {SHORTCUTS} in this checkout");
+            return;
+        }
         let shortcuts = shortcuts(&root).unwrap();
         assert!(shortcuts.len() >= 29, "{} shortcuts", shortcuts.len());
         for entry in fs::read_dir(root.join(SHORTCUTS)).unwrap().flatten() {
