@@ -57,7 +57,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
 
-use crate::files::{bytes_under, walk};
+use crate::files::bytes_under;
 use crate::grade::report::Exit;
 
 /// How often a running job is checked on.
@@ -705,7 +705,7 @@ fn give_to_nobody(dir: &Path) -> Result<()> {
     fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     std::os::unix::fs::chown(dir, Some(NOBODY), Some(NOBODY))
         .with_context(|| format!("cannot give {} to nobody", dir.display()))?;
-    walk(dir, &mut |path, _| {
+    crate::files::walk(dir, &mut |path, _| {
         let _ = std::os::unix::fs::lchown(path, Some(NOBODY), Some(NOBODY));
         true
     });
