@@ -95,10 +95,53 @@ pub fn select_topics(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
             );
         }
     }
+    // A topic that builds on another (06's framebuffer runs 05's depth and
+    // stencil tests) needs it in the edition too.
+    let mut todo = names.clone();
+    while let Some(name) = todo.pop() {
+        let Some(topic) = all.iter().find(|t| t.name == name) else {
+            continue;
+        };
+        for needed in topic_dependencies(topic, &all)? {
+            if !names.contains(&needed) {
+                names.push(needed.clone());
+                todo.push(needed);
+            }
+        }
+    }
     Ok(all
         .into_iter()
         .filter(|topic| names.is_empty() || names.contains(&topic.name))
         .collect())
+}
+
+/// The other topics `topic`'s crate depends on (path dependencies into
+/// `exercises/`), by folder name.
+fn topic_dependencies(topic: &Topic, all: &[Topic]) -> Result<Vec<String>> {
+    let path = topic.dir.join("Cargo.toml");
+    let text =
+        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    let manifest: toml::Table =
+        toml::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut found = Vec::new();
+    for (_, dependency) in manifest
+        .get("dependencies")
+        .and_then(toml::Value::as_table)
+        .into_iter()
+        .flatten()
+    {
+        let Some(to) = dependency.get("path").and_then(toml::Value::as_str) else {
+            continue;
+        };
+        let folder = Path::new(to).file_name().map(|f| f.to_string_lossy());
+        if let Some(other) = all
+            .iter()
+            .find(|t| folder.as_deref() == Some(t.name.as_str()) && t.name != topic.name)
+        {
+            found.push(other.name.clone());
+        }
+    }
+    Ok(found)
 }
 
 /// `01` of `01-lines`.
@@ -463,6 +506,25 @@ pub fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_topic_brings_the_topics_it_builds_on() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        if !root.join("exercises/06-csg").is_dir() || !root.join("exercises/05-buffers").is_dir() {
+            eprintln!("not run: this edition does not hold topics 05 and 06");
+            return;
+        }
+        let names = |wanted: &str| -> Vec<String> {
+            select_topics(root, &[wanted.to_owned()])
+                .unwrap()
+                .into_iter()
+                .map(|t| t.name)
+                .collect()
+        };
+        assert_eq!(names("csg"), ["05-buffers", "06-csg"]);
+        assert_eq!(names("buffers"), ["05-buffers"]);
+        assert_eq!(names("01..=02"), ["01-lines", "02-circles"]);
+    }
 
     #[test]
     fn marked_lines_are_dropped_with_their_markers() {

@@ -3,9 +3,8 @@
 mod common;
 
 use buffers::raster::fill_triangle;
-use buffers::stencil::{
-    StencilFunc, StencilOp, StencilOutcome, StencilState, stencil_fragment, write_masked,
-};
+use buffers::stencil::{StencilOp, StencilOutcome, StencilState, stencil_fragment, write_masked};
+use buffers::zbuffer::Compare;
 use canvas::{Canvas, Pixel, Rgba, Vertex};
 use common::{fragment, fragments_of, vertex};
 use proptest::prelude::*;
@@ -31,15 +30,27 @@ fn operations_on_the_edge_values() {
     assert_eq!(StencilOp::default(), Keep);
 }
 
+/// The stencil test of `func` with `reference` and `value_mask` against
+/// `stored`.
+fn passes(func: Compare, reference: u8, stored: u8, value_mask: u8) -> bool {
+    let state = StencilState {
+        func,
+        reference,
+        value_mask,
+        ..StencilState::DEFAULT
+    };
+    state.test(stored)
+}
+
 #[testkit::test]
 fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
-    use StencilFunc::*;
+    use Compare::*;
     // ref 0xA1, stored 0xAF: 0xA1 < 0xAF in full, equal in the high nibble.
     let (reference, stored) = (0xA1, 0xAF);
     let full = [
         Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always,
     ]
-    .map(|f| f.passes(reference, stored, 0xFF));
+    .map(|f| passes(f, reference, stored, 0xFF));
     assert_eq!(
         full,
         [false, true, false, true, false, true, false, true],
@@ -48,16 +59,16 @@ fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
     let high = [
         Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always,
     ]
-    .map(|f| f.passes(reference, stored, 0xF0));
+    .map(|f| passes(f, reference, stored, 0xF0));
     assert_eq!(
         high,
         [false, false, true, true, false, false, true, true],
         "mask 0xF0"
     );
     // The reference is on the left: LESS passes where ref < stored.
-    assert!(Less.passes(1, 2, 0xFF) && !Less.passes(2, 1, 0xFF));
-    assert!(Greater.passes(2, 1, 0xFF) && !Greater.passes(1, 2, 0xFF));
-    assert_eq!(StencilFunc::default(), Always);
+    assert!(passes(Less, 1, 2, 0xFF) && !passes(Less, 2, 1, 0xFF));
+    assert!(passes(Greater, 2, 1, 0xFF) && !passes(Greater, 1, 2, 0xFF));
+    assert_eq!(StencilState::DEFAULT.func, Always);
 }
 
 #[testkit::test]
@@ -100,22 +111,22 @@ proptest! {
 
     #[testkit::test]
     fn the_test_sees_only_the_masked_bits(r in any::<u8>(), s in any::<u8>(), mask in any::<u8>(), noise in any::<u8>()) {
-        for f in StencilFunc::ALL {
+        for f in Compare::ALL {
             // Changing bits outside the mask changes nothing.
             let (r2, s2) = (r ^ (noise & !mask), s ^ (noise.rotate_left(3) & !mask));
-            prop_assert_eq!(f.passes(r, s, mask), f.passes(r2, s2, mask), "{:?}", f);
+            prop_assert_eq!(passes(f, r, s, mask), passes(f, r2, s2, mask), "{:?}", f);
         }
         let (rm, sm) = (r & mask, s & mask);
-        let p = |f: StencilFunc| f.passes(r, s, mask);
-        prop_assert_eq!(p(StencilFunc::Less), rm < sm);
-        prop_assert_eq!(p(StencilFunc::Equal), rm == sm);
-        prop_assert_eq!(p(StencilFunc::LEqual), p(StencilFunc::Less) || p(StencilFunc::Equal));
-        prop_assert_eq!(p(StencilFunc::GEqual), !p(StencilFunc::Less));
-        prop_assert_eq!(p(StencilFunc::Greater), !p(StencilFunc::LEqual));
-        prop_assert_eq!(p(StencilFunc::NotEqual), !p(StencilFunc::Equal));
-        prop_assert!(!p(StencilFunc::Never) && p(StencilFunc::Always));
+        let p = |f: Compare| passes(f, r, s, mask);
+        prop_assert_eq!(p(Compare::Less), rm < sm);
+        prop_assert_eq!(p(Compare::Equal), rm == sm);
+        prop_assert_eq!(p(Compare::LEqual), p(Compare::Less) || p(Compare::Equal));
+        prop_assert_eq!(p(Compare::GEqual), !p(Compare::Less));
+        prop_assert_eq!(p(Compare::Greater), !p(Compare::LEqual));
+        prop_assert_eq!(p(Compare::NotEqual), !p(Compare::Equal));
+        prop_assert!(!p(Compare::Never) && p(Compare::Always));
         // A zero mask compares 0 with 0.
-        prop_assert!(StencilFunc::Equal.passes(r, s, 0) && !StencilFunc::Less.passes(r, s, 0));
+        prop_assert!(passes(Compare::Equal, r, s, 0) && !passes(Compare::Less, r, s, 0));
     }
 
     #[testkit::test]
@@ -131,7 +142,7 @@ proptest! {
 
 /// A state whose three ops are told apart by their results on stored 10:
 /// sfail → 0 (ZERO), dpfail → 11 (INCR), dppass → 42 (REPLACE).
-fn telling_state(func: StencilFunc) -> StencilState {
+fn telling_state(func: Compare) -> StencilState {
     StencilState {
         func,
         reference: 42,
@@ -156,7 +167,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(0, 0, 0.1, Rgba::RED),
-        &telling_state(StencilFunc::Never),
+        &telling_state(Compare::Never),
         true,
     );
     assert_eq!(out, Some(StencilOutcome::StencilFail));
@@ -169,7 +180,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(0, 0, 0.9, Rgba::RED),
-        &telling_state(StencilFunc::Always),
+        &telling_state(Compare::Always),
         true,
     );
     assert_eq!(out, Some(StencilOutcome::DepthFail));
@@ -182,7 +193,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(0, 0, 0.1, Rgba::RED),
-        &telling_state(StencilFunc::Always),
+        &telling_state(Compare::Always),
         true,
     );
     assert_eq!(out, Some(StencilOutcome::DepthPass));
@@ -195,7 +206,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(0, 0, 0.9, Rgba::RED),
-        &telling_state(StencilFunc::Always),
+        &telling_state(Compare::Always),
         false,
     );
     assert_eq!(out, Some(StencilOutcome::DepthPass));
@@ -208,7 +219,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(0, 0, 0.5, Rgba::RED),
-        &telling_state(StencilFunc::Always),
+        &telling_state(Compare::Always),
         true,
     );
     assert_eq!(out, Some(StencilOutcome::DepthFail));
@@ -217,7 +228,7 @@ fn each_outcome_applies_its_own_operation() {
     let out = stencil_fragment(
         &mut c,
         fragment(1, 0, 0.1, Rgba::RED),
-        &telling_state(StencilFunc::Always),
+        &telling_state(Compare::Always),
         true,
     );
     assert_eq!(out, None);
@@ -262,7 +273,7 @@ fn masked_rectangle() -> Canvas {
         stencil_fragment(&mut canvas, invisible, &mark, false);
     });
     let test = StencilState {
-        func: StencilFunc::Equal,
+        func: Compare::Equal,
         reference: 1,
         ..StencilState::DEFAULT
     };

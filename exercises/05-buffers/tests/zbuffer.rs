@@ -4,7 +4,7 @@
 mod common;
 
 use buffers::raster::fill_triangle;
-use buffers::zbuffer::{DepthFunc, DepthRange, DepthState, clear, depth_test};
+use buffers::zbuffer::{Compare, DepthRange, DepthState, clear, depth_test};
 use canvas::{Canvas, Fragment, Pixel, Rgba};
 use common::{fragment, interpenetrating_triangles, nearest_fragment_picture};
 use proptest::prelude::*;
@@ -14,7 +14,7 @@ const BLUE: Rgba = Rgba::BLUE;
 
 #[testkit::test]
 fn depth_functions_compare_incoming_with_stored() {
-    use DepthFunc::*;
+    use Compare::*;
     // incoming 0.25, 0.5, 0.75 against stored 0.5: (<, =, >)
     let table = [
         (Never, [false, false, false]),
@@ -33,7 +33,7 @@ fn depth_functions_compare_incoming_with_stored() {
             "{func:?} for incoming 0.25, 0.5, 0.75 vs stored 0.5"
         );
     }
-    assert_eq!(DepthFunc::default(), Less, "OpenGL's default is LESS");
+    assert_eq!(DepthState::DEFAULT.func, Less, "OpenGL's default is LESS");
 }
 
 proptest! {
@@ -42,17 +42,17 @@ proptest! {
     #[testkit::test]
     fn less_and_lequal_differ_only_on_ties(a in 0.0f32..=1.0, b in 0.0f32..=1.0, tie in any::<bool>()) {
         let b = if tie { a } else { b };
-        let differ = DepthFunc::Less.passes(a, b) != DepthFunc::LEqual.passes(a, b);
+        let differ = Compare::Less.passes(a, b) != Compare::LEqual.passes(a, b);
         prop_assert_eq!(differ, a == b, "LESS vs LEQUAL for {} and {}", a, b);
-        let differ = DepthFunc::Greater.passes(a, b) != DepthFunc::GEqual.passes(a, b);
+        let differ = Compare::Greater.passes(a, b) != Compare::GEqual.passes(a, b);
         prop_assert_eq!(differ, a == b, "GREATER vs GEQUAL for {} and {}", a, b);
     }
 
     #[testkit::test]
     fn depth_functions_are_related_as_their_operators(a in 0.0f32..=1.0, b in 0.0f32..=1.0, tie in any::<bool>()) {
-        use DepthFunc::*;
+        use Compare::*;
         let b = if tie { a } else { b };
-        let p = |f: DepthFunc| f.passes(a, b);
+        let p = |f: Compare| f.passes(a, b);
         let exactly_one = [p(Less), p(Equal), p(Greater)].iter().filter(|&&x| x).count();
         prop_assert_eq!(exactly_one, 1, "exactly one of <, =, > holds for {} and {}", a, b);
         prop_assert_eq!(p(LEqual), p(Less) || p(Equal));
@@ -105,7 +105,7 @@ proptest! {
 /// The lecture's example: an 8 × 8 buffer cleared to "∞" (1 here), a
 /// polygon of constant depth 5, then a tilted one with depths 2..7 (all in
 /// tenths). Rows are written top first, as on the slide.
-fn seed_example(func: DepthFunc) -> Canvas {
+fn seed_example(func: Compare) -> Canvas {
     let mut canvas = Canvas::new(8, 8);
     clear(&mut canvas, Rgba::BLACK, 1.0).unwrap();
     let state = DepthState::with_func(func);
@@ -166,7 +166,7 @@ fn seed_example_keeps_the_nearer_depth_per_pixel() {
         "3 4 5 6 7 ∞ ∞ ∞",
         "2 3 4 5 6 7 ∞ ∞",
     ];
-    for func in [DepthFunc::Less, DepthFunc::LEqual] {
+    for func in [Compare::Less, Compare::LEqual] {
         assert_eq!(depth_rows(&seed_example(func)), expected_depths, "{func:?}");
     }
 }
@@ -183,9 +183,9 @@ fn seed_example_less_and_lequal_differ_on_the_ties_only() {
         "RRRRRRR.", "RRRRRR..", "RRRRR...", "RRRR....", "BRR.....", "BBBB....", "BBBBB...",
         "BBBBBB..",
     ];
-    assert_eq!(colour_rows(&seed_example(DepthFunc::Less)), less, "LESS");
+    assert_eq!(colour_rows(&seed_example(Compare::Less)), less, "LESS");
     assert_eq!(
-        colour_rows(&seed_example(DepthFunc::LEqual)),
+        colour_rows(&seed_example(Compare::LEqual)),
         lequal,
         "LEQUAL"
     );
@@ -193,7 +193,7 @@ fn seed_example_less_and_lequal_differ_on_the_ties_only() {
 
 #[testkit::test]
 fn never_draws_nothing_and_always_draws_the_last() {
-    for (func, expected) in [(DepthFunc::Never, Rgba::BLACK), (DepthFunc::Always, BLUE)] {
+    for (func, expected) in [(Compare::Never, Rgba::BLACK), (Compare::Always, BLUE)] {
         let mut canvas = Canvas::new(2, 1);
         let state = DepthState::with_func(func);
         depth_test(&mut canvas, fragment(0, 0, 0.1, RED), &state);
@@ -285,7 +285,7 @@ fn depth_mask_off_writes_colour_but_not_depth() {
 #[testkit::test]
 fn bad_fragments_are_discarded() {
     let mut canvas = Canvas::new(2, 2);
-    let always = DepthState::with_func(DepthFunc::Always);
+    let always = DepthState::with_func(Compare::Always);
     for f in [
         fragment(0, 0, f32::NAN, RED),
         fragment(0, 0, -0.1, RED),

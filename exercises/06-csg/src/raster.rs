@@ -22,8 +22,19 @@
 //! OpenGL would draw under a model matrix and which is drawn here through
 //! the span of the moved primitive.
 //!
+//! **The fragment stage is topic 05's.** Each fragment goes through the
+//! stencil test, the depth test and the stencil operation of its outcome
+//! exactly as OpenGL orders them, and the pieces are yours from topic 05:
+//! the comparison [`Compare`] (depth and stencil function), the stencil
+//! state [`StencilState`] with its masked test, the operations
+//! [`StencilOp`] and the write mask [`write_masked`]. Until topic 05's
+//! `zbuffer` and `stencil` tasks are done, drawing here stops at their
+//! `todo!()`.
+//!
 //! This module is given: you use it, you do not edit it.
 
+pub use buffers::stencil::{StencilOp, StencilState, write_masked};
+pub use buffers::zbuffer::Compare;
 use canvas::Pixel;
 use glam::Vec3;
 
@@ -172,94 +183,6 @@ impl Camera {
     }
 }
 
-/// A comparison, as OpenGL's depth and stencil functions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Compare {
-    /// Never passes.
-    Never,
-    /// Passes if incoming `<` stored.
-    Less,
-    /// Passes if incoming `≤` stored.
-    LessEqual,
-    /// Passes if incoming `=` stored.
-    Equal,
-    /// Passes if incoming `≥` stored.
-    GreaterEqual,
-    /// Passes if incoming `>` stored.
-    Greater,
-    /// Passes if incoming `≠` stored.
-    NotEqual,
-    /// Always passes.
-    Always,
-}
-
-impl Compare {
-    /// Whether `incoming` passes against `stored`.
-    #[must_use]
-    pub fn passes<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
-        match self {
-            Self::Never => false,
-            Self::Less => incoming < stored,
-            Self::LessEqual => incoming <= stored,
-            Self::Equal => incoming == stored,
-            Self::GreaterEqual => incoming >= stored,
-            Self::Greater => incoming > stored,
-            Self::NotEqual => incoming != stored,
-            Self::Always => true,
-        }
-    }
-}
-
-/// What happens to a stencil value, as OpenGL's stencil operations.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum StencilOp {
-    /// Leave it.
-    Keep,
-    /// Set it to 0.
-    Zero,
-    /// Set it to the reference value.
-    Replace,
-    /// Add 1, saturating at 255.
-    Increment,
-    /// Subtract 1, saturating at 0.
-    Decrement,
-    /// Flip every bit.
-    Invert,
-}
-
-/// The stencil test and what it does, as `glStencilFunc`/`glStencilOp`/
-/// `glStencilMask`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Stencil {
-    /// Compares `reference & read_mask` (incoming) with `stored & read_mask`.
-    pub func: Compare,
-    /// The reference value.
-    pub reference: u8,
-    /// The bits the comparison looks at.
-    pub read_mask: u8,
-    /// The bits an operation may change.
-    pub write_mask: u8,
-    /// The operation when the stencil test fails.
-    pub fail: StencilOp,
-    /// The operation when the stencil test passes and the depth test fails.
-    pub depth_fail: StencilOp,
-    /// The operation when both tests pass.
-    pub pass: StencilOp,
-}
-
-impl Stencil {
-    /// Always passes, changes nothing (the stencil test disabled).
-    pub const OFF: Self = Self {
-        func: Compare::Always,
-        reference: 0,
-        read_mask: 0xFF,
-        write_mask: 0xFF,
-        fail: StencilOp::Keep,
-        depth_fail: StencilOp::Keep,
-        pass: StencilOp::Keep,
-    };
-}
-
 /// Everything that decides what a fragment does (OpenGL's per-fragment
 /// state). Start from [`State::DEFAULT`] and change fields.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -270,8 +193,8 @@ pub struct State {
     pub depth_write: bool,
     /// Whether a fragment that passes both tests writes its surface.
     pub colour_write: bool,
-    /// The stencil test and operations.
-    pub stencil: Stencil,
+    /// The stencil test, operations and masks.
+    pub stencil: StencilState,
 }
 
 impl State {
@@ -280,7 +203,7 @@ impl State {
         depth_func: Compare::Less,
         depth_write: true,
         colour_write: true,
-        stencil: Stencil::OFF,
+        stencil: StencilState::DEFAULT,
     };
 }
 
@@ -429,11 +352,8 @@ impl Framebuffer {
         self.fragments += 1;
         let s = &state.stencil;
         let stored = self.stencil[i];
-        let op = if !s
-            .func
-            .passes(s.reference & s.read_mask, stored & s.read_mask)
-        {
-            s.fail
+        let op = if !s.test(stored) {
+            s.stencil_fail
         } else if !state.depth_func.passes(depth, self.depth[i]) {
             s.depth_fail
         } else {
@@ -443,17 +363,9 @@ impl Framebuffer {
             if state.colour_write {
                 self.surface[i] = surface;
             }
-            s.pass
+            s.depth_pass
         };
-        let new = match op {
-            StencilOp::Keep => stored,
-            StencilOp::Zero => 0,
-            StencilOp::Replace => s.reference,
-            StencilOp::Increment => stored.saturating_add(1),
-            StencilOp::Decrement => stored.saturating_sub(1),
-            StencilOp::Invert => !stored,
-        };
-        self.stencil[i] = (stored & !s.write_mask) | (new & s.write_mask);
+        self.stencil[i] = write_masked(stored, op.apply(stored, s.reference), s.write_mask);
     }
 
     /// Writes depth and surface at one pixel if `depth` is nearer than the

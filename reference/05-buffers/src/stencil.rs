@@ -21,63 +21,7 @@
 
 use canvas::{Canvas, Fragment};
 
-/// The comparison of the stencil test (`glStencilFunc`'s `func`).
-///
-/// Note the order: OpenGL compares the *reference* with the stored value,
-/// `(ref & mask) OP (stored & mask)`; `Less` passes where the reference is
-/// smaller than what the buffer holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub enum StencilFunc {
-    /// Never passes.
-    Never,
-    /// `ref < stored` (masked).
-    Less,
-    /// `ref = stored` (masked).
-    Equal,
-    /// `ref ≤ stored` (masked).
-    LEqual,
-    /// `ref > stored` (masked).
-    Greater,
-    /// `ref ≠ stored` (masked).
-    NotEqual,
-    /// `ref ≥ stored` (masked).
-    GEqual,
-    /// Always passes (the default).
-    #[default]
-    Always,
-}
-
-impl StencilFunc {
-    /// All eight functions, in the order of the OpenGL enum values.
-    pub const ALL: [Self; 8] = [
-        Self::Never,
-        Self::Less,
-        Self::Equal,
-        Self::LEqual,
-        Self::Greater,
-        Self::NotEqual,
-        Self::GEqual,
-        Self::Always,
-    ];
-
-    /// Whether the test `(reference & mask) OP (stored & mask)` passes.
-    #[must_use]
-    pub fn passes(self, reference: u8, stored: u8, mask: u8) -> bool {
-        // BEGIN SOLUTION stencil: mask both the reference and the stored value, then compare reference OP stored
-        let (r, s) = (reference & mask, stored & mask);
-        match self {
-            Self::Never => false,
-            Self::Less => r < s,
-            Self::Equal => r == s,
-            Self::LEqual => r <= s,
-            Self::Greater => r > s,
-            Self::NotEqual => r != s,
-            Self::GEqual => r >= s,
-            Self::Always => true,
-        }
-        // END SOLUTION
-    }
-}
+use crate::zbuffer::Compare;
 
 /// What happens to the stored stencil value (`glStencilOp`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
@@ -147,8 +91,11 @@ pub fn write_masked(old: u8, new: u8, write_mask: u8) -> u8 {
 /// `glStencilMask(write_mask)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct StencilState {
-    /// The comparison.
-    pub func: StencilFunc,
+    /// The comparison, `(reference & value_mask) OP (stored & value_mask)`
+    /// (default [`Compare::Always`]). Note the order: OpenGL compares the
+    /// *reference* with the stored value, so `Less` passes where the
+    /// reference is the smaller.
+    pub func: Compare,
     /// The reference value `ref`.
     pub reference: u8,
     /// The mask both sides of the comparison are ANDed with.
@@ -169,7 +116,7 @@ impl StencilState {
     /// OpenGL's initial state: `ALWAYS`, reference 0, both masks all ones,
     /// `KEEP` everywhere.
     pub const DEFAULT: Self = Self {
-        func: StencilFunc::Always,
+        func: Compare::Always,
         reference: 0,
         value_mask: u8::MAX,
         write_mask: u8::MAX,
@@ -177,6 +124,19 @@ impl StencilState {
         depth_fail: StencilOp::Keep,
         depth_pass: StencilOp::Keep,
     };
+}
+
+impl StencilState {
+    /// Whether the stencil test passes against the `stored` value:
+    /// `(reference & value_mask) OP (stored & value_mask)`, the masked
+    /// reference on the left.
+    #[must_use]
+    pub fn test(&self, stored: u8) -> bool {
+        // BEGIN SOLUTION stencil: mask both the reference and the stored value, then compare reference OP stored
+        self.func
+            .passes(self.reference & self.value_mask, stored & self.value_mask)
+        // END SOLUTION
+    }
 }
 
 impl Default for StencilState {
@@ -200,8 +160,7 @@ pub enum StencilOutcome {
 /// order, and returns the outcome (`None` for a pixel outside the canvas,
 /// which changes nothing).
 ///
-/// - The stencil test is [`StencilFunc::passes`]`(reference, stored,
-///   value_mask)`.
+/// - The stencil test is [`StencilState::test`] of the stored value.
 /// - With `depth_test` on, the depth test is `fragment.depth < stored
 ///   depth` (`LESS`, written here directly; a NaN depth fails it), and a
 ///   passing fragment writes its depth. With `depth_test` off the depth
@@ -221,7 +180,7 @@ pub fn stencil_fragment(
     let stored_depth = canvas.depth(p)?;
     // A NaN depth compares false and so fails LESS.
     let depth_passes = !depth_test || fragment.depth < stored_depth;
-    let outcome = if !state.func.passes(state.reference, stored, state.value_mask) {
+    let outcome = if !state.test(stored) {
         StencilOutcome::StencilFail
     } else if !depth_passes {
         StencilOutcome::DepthFail

@@ -26,19 +26,22 @@ pub enum DepthError {
     NotANumber,
 }
 
-/// The comparison of the depth test (`glDepthFunc`): the fragment passes
-/// when `incoming OP stored` holds, `incoming` being the fragment's window
-/// depth and `stored` the depth buffer's value.
+/// A comparison of OpenGL's per-fragment tests: the depth function
+/// (`glDepthFunc`) and the stencil function (`glStencilFunc`), one enum
+/// for both as in OpenGL, where both take the same eight constants
+/// `GL_NEVER` … `GL_ALWAYS`. A test passes when `incoming OP stored`
+/// holds: for the depth test `incoming` is the fragment's window depth
+/// and `stored` the depth buffer's value; for the stencil test (see
+/// [`crate::stencil`]) `incoming` is the masked reference value.
 ///
 /// The seed lists `GL_LESS` twice and no other typo; its pseudo-code tests
-/// `pz <= readZ` (that is [`DepthFunc::LEqual`]) although OpenGL's default
-/// is [`DepthFunc::Less`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub enum DepthFunc {
+/// `pz <= readZ` (that is [`Compare::LEqual`]) although OpenGL's default
+/// depth function is [`Compare::Less`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Compare {
     /// Never passes (`GL_NEVER`).
     Never,
-    /// `incoming < stored` (`GL_LESS`, the default).
-    #[default]
+    /// `incoming < stored` (`GL_LESS`, the default depth function).
     Less,
     /// `incoming = stored` (`GL_EQUAL`).
     Equal,
@@ -50,11 +53,11 @@ pub enum DepthFunc {
     NotEqual,
     /// `incoming ≥ stored` (`GL_GEQUAL`).
     GEqual,
-    /// Always passes (`GL_ALWAYS`).
+    /// Always passes (`GL_ALWAYS`, the default stencil function).
     Always,
 }
 
-impl DepthFunc {
+impl Compare {
     /// All eight functions, in the order of the OpenGL enum values
     /// (`GL_NEVER` = 0x0200 … `GL_ALWAYS` = 0x0207).
     pub const ALL: [Self; 8] = [
@@ -68,13 +71,15 @@ impl DepthFunc {
         Self::Always,
     ];
 
-    /// Whether a fragment of depth `incoming` passes against `stored`.
+    /// Whether `incoming OP stored` holds: a fragment's depth against the
+    /// stored depth, or a masked stencil reference against the masked
+    /// stored stencil value.
     ///
-    /// The comparisons are IEEE float comparisons: NaN compares unequal to
-    /// everything, so only `NotEqual` and `Always` pass a NaN (the z-buffer
-    /// below never lets a NaN depth get this far).
+    /// The comparisons are those of `PartialOrd`: for floats NaN compares
+    /// unequal to everything, so only `NotEqual` and `Always` pass a NaN
+    /// (the z-buffer below never lets a NaN depth get this far).
     #[must_use]
-    pub fn passes(self, incoming: f32, stored: f32) -> bool {
+    pub fn passes<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
         // BEGIN SOLUTION zbuffer: compare incoming OP stored for each of the eight functions
         match self {
             Self::Never => false,
@@ -154,10 +159,10 @@ impl Default for DepthRange {
 
 /// The state of the depth stage: the comparison, whether passing
 /// fragments write their depth (`glDepthMask`), and the depth range.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthState {
-    /// The comparison (`glDepthFunc`; default [`DepthFunc::Less`]).
-    pub func: DepthFunc,
+    /// The comparison (`glDepthFunc`; default [`Compare::Less`]).
+    pub func: Compare,
     /// Whether passing fragments write their depth (`glDepthMask`; default
     /// `true`). Colour is written either way.
     pub write: bool,
@@ -165,18 +170,24 @@ pub struct DepthState {
     pub range: DepthRange,
 }
 
+impl Default for DepthState {
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
 impl DepthState {
     /// OpenGL's defaults with the depth test enabled: `LESS`, depth writes
     /// on, range `[0, 1]`.
     pub const DEFAULT: Self = Self {
-        func: DepthFunc::Less,
+        func: Compare::Less,
         write: true,
         range: DepthRange::DEFAULT,
     };
 
     /// The default state with another comparison.
     #[must_use]
-    pub const fn with_func(func: DepthFunc) -> Self {
+    pub const fn with_func(func: Compare) -> Self {
         Self {
             func,
             ..Self::DEFAULT

@@ -26,7 +26,7 @@ use crate::csg::Model;
 use crate::raster::{Framebuffer, Solid, State, Stats};
 // BEGIN SOLUTION
 use crate::csg::Literal;
-use crate::raster::{Compare, Face, PARITY_BIT, Stencil, StencilOp, Surface};
+use crate::raster::{Compare, Face, PARITY_BIT, StencilState, StencilOp, Surface};
 // END SOLUTION
 
 /// The state for drawing a literal's entry face into the second buffer:
@@ -99,10 +99,10 @@ fn parity_test<S: Solid>(frame: &mut Framebuffer, b: Literal, depth_func: Compar
         depth_func,
         depth_write: false,
         colour_write: false,
-        stencil: Stencil {
+        stencil: StencilState {
             write_mask: PARITY_BIT,
-            pass: StencilOp::Invert,
-            ..Stencil::OFF
+            depth_pass: StencilOp::Invert,
+            ..StencilState::DEFAULT
         },
     };
     let primitive = &model.primitives()[b.primitive];
@@ -123,15 +123,15 @@ fn erase_outside(frame: &mut Framebuffer, b: Literal) {
         depth_func: Compare::Always,
         depth_write: true,
         colour_write: true,
-        stencil: Stencil {
+        stencil: StencilState {
             func: if b.complement {
                 Compare::NotEqual
             } else {
                 Compare::Equal
             },
             reference: 0,
-            read_mask: PARITY_BIT,
-            ..Stencil::OFF
+            value_mask: PARITY_BIT,
+            ..StencilState::DEFAULT
         },
     };
     frame.draw_background(&state);

@@ -22,7 +22,7 @@ use crate::csg::{Model, Product};
 use crate::raster::{Framebuffer, Solid, Stats};
 // BEGIN SOLUTION
 use crate::csg::Literal;
-use crate::raster::{Compare, Face, PARITY_BIT, State, Stencil, StencilOp, Surface};
+use crate::raster::{Compare, Face, PARITY_BIT, State, StencilState, StencilOp, Surface};
 // END SOLUTION
 
 /// Counts, in `buffer`'s stencil plane, how many entry faces of
@@ -47,9 +47,9 @@ pub fn depth_complexity<S: Solid>(
         depth_func: Compare::Always,
         depth_write: false,
         colour_write: false,
-        stencil: Stencil {
-            pass: StencilOp::Increment,
-            ..Stencil::OFF
+        stencil: StencilState {
+            depth_pass: StencilOp::Incr,
+            ..StencilState::DEFAULT
         },
     };
     draw_entry_faces(model, product, buffer, &count);
@@ -98,12 +98,12 @@ pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
         depth_func: Compare::Always,
         depth_write: true,
         colour_write: true,
-        stencil: Stencil {
+        stencil: StencilState {
             func: Compare::Equal,
             reference: n - 1,
-            fail: StencilOp::Increment,
-            pass: StencilOp::Increment,
-            ..Stencil::OFF
+            stencil_fail: StencilOp::Incr,
+            depth_pass: StencilOp::Incr,
+            ..StencilState::DEFAULT
         },
     };
     for product in model.products() {
@@ -148,13 +148,13 @@ fn draw_entry_faces<S: Solid>(
 /// of or at the stored depth.
 fn parity_test<S: Solid>(model: &Model<S>, a: Literal, buffer: &mut Framebuffer) {
     let state = State {
-        depth_func: Compare::LessEqual,
+        depth_func: Compare::LEqual,
         depth_write: false,
         colour_write: false,
-        stencil: Stencil {
+        stencil: StencilState {
             write_mask: PARITY_BIT,
-            pass: StencilOp::Invert,
-            ..Stencil::OFF
+            depth_pass: StencilOp::Invert,
+            ..StencilState::DEFAULT
         },
     };
     let primitive = &model.primitives()[a.primitive];
@@ -173,15 +173,15 @@ fn erase_outside(buffer: &mut Framebuffer, a: Literal) {
         depth_func: Compare::Always,
         depth_write: true,
         colour_write: true,
-        stencil: Stencil {
+        stencil: StencilState {
             func: if a.complement {
                 Compare::NotEqual
             } else {
                 Compare::Equal
             },
             reference: 0,
-            read_mask: PARITY_BIT,
-            ..Stencil::OFF
+            value_mask: PARITY_BIT,
+            ..StencilState::DEFAULT
         },
     };
     buffer.draw_background(&state);
