@@ -1,5 +1,6 @@
 //! Given code stands in for no task (step 9): every public function of the
-//! given code with a task's signature, planted into that task's stub,
+//! given code with a task's signature, and every method of the given code
+//! with a task method's name or signature, planted into that task's stub,
 //! scores 0.
 
 use std::fmt::Write as _;
@@ -34,7 +35,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     let (stand_ins, given, uncallable) = find_stand_ins(root)?;
     if stand_ins.is_empty() {
         return Ok(format!(
-            "none of the {given} public functions of the given code has a task's signature"
+            "none of the {given} public functions and methods of the given code has a task's signature or a task method's name"
         ));
     }
     // A round holds at most one stand-in per topic, so that one that does
@@ -79,13 +80,13 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     }
     if !problems.is_empty() {
         bail!(
-            "{} given function(s) solve a task (given code must not: replace them, or make the task's tests tell them apart):\n  {}",
+            "{} given function(s) or method(s) solve a task (given code must not: replace them, or make the task's tests tell them apart):\n  {}",
             problems.len(),
             problems.join("\n  ")
         );
     }
     let mut summary = format!(
-        "{} given function(s) with a task's signature planted in, each scores 0",
+        "{} given function(s) with a task's signature or method(s) with a task method's name or signature planted in, each scores 0",
         stand_ins.len()
     );
     if !not_compiling.is_empty() {
@@ -106,7 +107,9 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
 /// the task's stub; also how many given functions there are, and how many
 /// stand-ins could not be planted (a pattern such as `_` drops a value).
 pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)> {
-    use stubs::stand_ins::{Function, plant, public_functions, stub_task};
+    use stubs::stand_ins::{
+        Function, Method, methods, plant, plant_method, public_functions, stub_task,
+    };
     let read = |path: &Path| {
         fs::read_to_string(root.join(path))
             .with_context(|| format!("cannot read {}", root.join(path).display()))
@@ -152,10 +155,14 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
         }
     }
     let mut given: Vec<(&(PathBuf, PathBuf, String), String, Function)> = Vec::new();
+    let mut given_methods: Vec<(&(PathBuf, PathBuf, String), String, Method)> = Vec::new();
     for entry in &given_files {
         let text = read(&entry.1)?;
         for function in public_functions(&text) {
             given.push((entry, text.clone(), function));
+        }
+        for method in methods(&text) {
+            given_methods.push((entry, text.clone(), method));
         }
     }
     let mut found = Vec::new();
@@ -213,9 +220,51 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
                     });
                 }
             }
+            // Methods and trait methods: a given body in place of the
+            // task's, its parameters bound to the task's arguments and the
+            // names of its module in scope.
+            for task_method in methods(&stub) {
+                let Some(task) = stub_task(&stub, &task_method.function) else {
+                    continue;
+                };
+                for ((dir, given_file, package), text, method) in &given_methods {
+                    if !task_method.could_be(method) {
+                        continue;
+                    }
+                    let module = module_path(
+                        given_file
+                            .strip_prefix(dir.join("src"))
+                            .unwrap_or(given_file),
+                    );
+                    let path = if *dir == crate_dir {
+                        Some(format!("crate{}", prefixed(&module)))
+                    } else if depends_on(package) && public_chain(root, dir, &module) {
+                        Some(format!(
+                            "{}{}",
+                            package.replace('-', "_"),
+                            prefixed(&module)
+                        ))
+                    } else {
+                        None
+                    };
+                    let Some(planted) =
+                        plant_method(&stub, &task_method, method, text, path.as_deref())
+                    else {
+                        uncallable += 1;
+                        continue;
+                    };
+                    found.push(StandIn {
+                        topic: topic.name.clone(),
+                        task: task.clone(),
+                        file: file.clone(),
+                        given: format!("{}: {}", given_file.display(), method.display()),
+                        planted,
+                    });
+                }
+            }
         }
     }
-    Ok((found, given.len(), uncallable))
+    Ok((found, given.len() + given_methods.len(), uncallable))
 }
 
 /// The module a source file is, relative to its crate's `src`
