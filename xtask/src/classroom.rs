@@ -9,7 +9,7 @@
 //! as a submission with `cargo xtask grade --submission`, and hands one
 //! result per task to GitHub Classroom's grading reporter
 //! (`classroom-resources/autograding-grading-reporter`), named and weighted
-//! from the sheets' front matter: what course staff otherwise write by
+//! from each topic's `tasks.toml`: what course staff otherwise write by
 //! hand for every assignment.
 //!
 //! The grader writes those results (see [`results`]) as

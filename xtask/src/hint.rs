@@ -1,5 +1,5 @@
-//! `cargo xtask hint TASK`: the hints a task sheet keeps for each task
-//! (`hints = [...]` in its front matter), one more each time it is asked:
+//! `cargo xtask hint TASK`: the hints a topic keeps for each task
+//! (`hints = [...]` in its `tasks.toml`), one more each time it is asked:
 //! the first restates the goal, the last points at the exact rule the
 //! tests are strict about. Which hints a student has seen is kept in
 //! `target/xtask/hints.json`; `--reset` starts a task over, `--all` shows
@@ -87,7 +87,7 @@ pub fn run(root: &Path, selector: &str, all: bool, reset: bool) -> Result<()> {
     let hints = &task.hints;
     if hints.is_empty() {
         println!(
-            "{key} ({}) has no hints in its sheet: read exercises/{}/README.md and the doc comment of its todo!()",
+            "{key} ({}) has no hints in its tasks.toml: read exercises/{}/README.md and the doc comment of its todo!()",
             task.title, topic.name
         );
         return Ok(());

@@ -1,11 +1,11 @@
 //! Topics: the exercise crates under `exercises/` and their task sheets.
 //!
 //! A topic is a folder `exercises/NN-topic/` holding a cargo package (its
-//! name is read from `Cargo.toml`) and a task sheet `README.md` whose TOML
-//! front matter, between two `+++` lines, is the only place points live:
+//! name is read from `Cargo.toml`), a task sheet `README.md` that starts
+//! with its title, and beside it `tasks.toml`, the only place the tasks,
+//! their points and their hints live:
 //!
 //! ```text
-//! +++
 //! time_limit_s = 20          # optional: per-test wall-clock limit (default 20)
 //! memory_limit_mib = 4096    # optional: per-test memory: each process's address space, and all its processes together where cgroups can be made (default 4096)
 //! gpu = false                # optional: the topic needs a GPU adapter (see `setup`)
@@ -15,8 +15,6 @@
 //! points = 3
 //! bonus = false              # optional: bonus points do not count in the maximum
 //! hints = ["the goal", "the key step", "the exact rule"]   # optional: `cargo xtask hint dda`
-//! +++
-//! # Topic 01: Lines
 //! ```
 
 use std::collections::HashSet;
@@ -31,8 +29,8 @@ pub const DEFAULT_TIME_LIMIT_S: f64 = 20.0;
 /// Per-test address-space limit when the task sheet gives none: generous
 /// for rasterizers, small enough that a runaway allocation fails at once.
 pub const DEFAULT_MEMORY_LIMIT_MIB: u64 = 4096;
-/// The line that opens and closes the front matter of a task sheet.
-const FRONT_MATTER_FENCE: &str = "+++";
+/// The file beside a topic's sheet that lists its tasks.
+pub const TASKS_FILE: &str = "tasks.toml";
 
 /// One exercise crate.
 #[derive(Debug, Clone)]
@@ -43,11 +41,11 @@ pub struct Topic {
     pub package: String,
     /// `<root>/exercises/01-lines`.
     pub dir: PathBuf,
-    /// The task sheet's front matter.
+    /// The topic's tasks and limits (`tasks.toml`).
     pub sheet: TaskSheet,
 }
 
-/// The front matter of `exercises/NN-topic/README.md`.
+/// The tasks and limits of a topic: `exercises/NN-topic/tasks.toml`.
 #[derive(Debug, Clone, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct TaskSheet {
@@ -94,37 +92,15 @@ pub struct Task {
 }
 
 impl TaskSheet {
-    /// Parses the front matter of a task sheet (the whole README text).
-    pub fn parse(readme: &str) -> Result<Self> {
-        let mut lines = readme.lines();
-        ensure!(
-            lines.next().map(str::trim_end) == Some(FRONT_MATTER_FENCE),
-            "the task sheet must start with a `{FRONT_MATTER_FENCE}` line opening its TOML front matter"
-        );
-        let mut front = String::new();
-        let mut closed = false;
-        for line in lines {
-            if line.trim_end() == FRONT_MATTER_FENCE {
-                closed = true;
-                break;
-            }
-            front.push_str(line);
-            front.push('\n');
-        }
-        ensure!(
-            closed,
-            "the front matter has no closing `{FRONT_MATTER_FENCE}` line"
-        );
-        let sheet: TaskSheet = toml::from_str(&front).context("invalid front matter")?;
+    /// Parses a topic's `tasks.toml`.
+    pub fn parse(text: &str) -> Result<Self> {
+        let sheet: TaskSheet = toml::from_str(text).context("invalid task list")?;
         sheet.validate()?;
         Ok(sheet)
     }
 
     fn validate(&self) -> Result<()> {
-        ensure!(
-            !self.tasks.is_empty(),
-            "the front matter lists no [[tasks]]"
-        );
+        ensure!(!self.tasks.is_empty(), "it lists no [[tasks]]");
         ensure!(
             self.time_limit_s.is_finite() && self.time_limit_s > 0.0,
             "time_limit_s must be a positive number of seconds"
@@ -180,15 +156,15 @@ impl Topic {
                 manifest_path.display()
             )
         })?;
-        let readme_path = dir.join("README.md");
-        let readme = fs::read_to_string(&readme_path).with_context(|| {
+        let tasks_path = dir.join(TASKS_FILE);
+        let text = fs::read_to_string(&tasks_path).with_context(|| {
             format!(
-                "cannot read the task sheet {} (it lists the tasks and points)",
-                readme_path.display()
+                "cannot read {} (it lists the topic's tasks, points and hints)",
+                tasks_path.display()
             )
         })?;
-        let sheet = TaskSheet::parse(&readme)
-            .with_context(|| format!("in the task sheet {}", readme_path.display()))?;
+        let sheet =
+            TaskSheet::parse(&text).with_context(|| format!("in {}", tasks_path.display()))?;
         Ok(Self {
             name,
             package,
@@ -286,10 +262,10 @@ pub fn select(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
 mod tests {
     use super::*;
 
-    const SHEET: &str = "+++\ntime_limit_s = 3\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 3\n[[tasks]]\nid = \"wu\"\ntitle = \"Wu\"\npoints = 1.5\nbonus = true\n+++\n# Topic\n";
+    const SHEET: &str = "time_limit_s = 3\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 3\n[[tasks]]\nid = \"wu\"\ntitle = \"Wu\"\npoints = 1.5\nbonus = true\n";
 
     #[test]
-    fn front_matter_gives_tasks_points_and_limits() {
+    fn the_task_list_gives_tasks_points_and_limits() {
         let sheet = TaskSheet::parse(SHEET).unwrap();
         assert_eq!(sheet.time_limit_s, 3.0);
         assert_eq!(sheet.memory_limit_mib, DEFAULT_MEMORY_LIMIT_MIB);
@@ -302,21 +278,20 @@ mod tests {
 
     #[test]
     fn time_limit_defaults() {
-        let sheet =
-            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n+++\n")
-                .unwrap();
+        let sheet = TaskSheet::parse("[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n").unwrap();
         assert_eq!(sheet.time_limit_s, DEFAULT_TIME_LIMIT_S);
     }
 
     #[test]
-    fn bad_front_matter_is_an_error() {
-        assert!(TaskSheet::parse("# no front matter\n").is_err());
+    fn a_bad_task_list_is_an_error() {
+        assert!(TaskSheet::parse("# Topic 01\n").is_err(), "no tasks");
         assert!(
-            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n").is_err()
+            TaskSheet::parse("+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n+++\n")
+                .is_err()
         );
-        let twice = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n[[tasks]]\nid = \"a\"\ntitle = \"B\"\npoints = 1\n+++\n";
+        let twice = "[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n[[tasks]]\nid = \"a\"\ntitle = \"B\"\npoints = 1\n";
         assert!(format!("{:#}", TaskSheet::parse(twice).unwrap_err()).contains("twice"));
-        let typo = "+++\n[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoint = 1\n+++\n";
+        let typo = "[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoint = 1\n";
         assert!(TaskSheet::parse(typo).is_err());
     }
 

@@ -328,7 +328,7 @@ mod linux {
         let official = fixture("tiny", "containment");
         // Time for a test to fill its disk, and a memory limit three children
         // of 900 MiB exceed together (each alone is far below it).
-        let sheet = official.join("exercises/01-tiny/README.md");
+        let sheet = official.join("exercises/01-tiny/tasks.toml");
         let text = fs::read_to_string(&sheet).unwrap();
         fs::write(
             &sheet,

@@ -622,7 +622,7 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
     )
     .unwrap();
 
-    let sheet = official.join("exercises/01-tiny/README.md");
+    let sheet = official.join("exercises/01-tiny/tasks.toml");
     let official_sheet = fs::read_to_string(&sheet).unwrap();
     // Eve's negate also writes into the class's gradebook and the course's
     // tooling, and answers right only if it can read a classmate's code:
@@ -705,7 +705,7 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         assert_eq!(
             eve["integrity"]["tampered"],
             serde_json::json!([
-                "exercises/01-tiny/README.md",
+                "exercises/01-tiny/tasks.toml",
                 "stage/exercises/01-tiny/tests/negate.rs"
             ])
         );

@@ -875,6 +875,7 @@ mod tests {
             "crates/testkit/src/raster.rs",
             "xtask/src/main.rs",
             "exercises/01-lines/README.md",
+            "exercises/01-lines/tasks.toml",
             "exercises/01-lines/Cargo.toml",
             "exercises/01-lines/tests/dda.rs",
             "exercises/01-lines/tests/snapshots/dda__x.snap",
