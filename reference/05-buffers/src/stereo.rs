@@ -33,12 +33,20 @@
 //! Convention (see `canvas` and `scene::pipeline`): right-handed world, y
 //! up, OpenGL clip space; the pictures are drawn by the given
 //! [`scene::Pipeline`].
+//!
+//! The file is in two parts: what is given first, then your tasks, the
+//! camera's two eyes ([`StereoCamera::eye_position`], `view`,
+//! `projection`), [`render_stereo`] and [`anaglyph`].
 
 use canvas::{Canvas, CanvasError, Rgba};
 use glam::camera::rh::{proj::opengl, view};
 use glam::{Mat4, Vec3};
 pub use scene::pipeline::aspect_ratio;
 use scene::{Mesh, Mode, Pipeline};
+
+// ─── Given ───────────────────────────────────────────────────────────────
+// The eyes, the errors, the camera with its course values and its check,
+// the stereo buffer and the glasses: you use them, you do not edit them.
 
 /// One of the two eyes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -170,7 +178,58 @@ impl StereoCamera {
         }
         Ok(())
     }
+}
 
+/// The two back buffers of a stereo framebuffer, one per eye, each a
+/// cleared canvas with its own depth plane.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StereoBuffer {
+    left: Canvas,
+    right: Canvas,
+}
+
+impl StereoBuffer {
+    /// Two cleared `width × height` canvases (colour black, depth
+    /// [`canvas::DEPTH_CLEAR`]).
+    pub fn try_new(width: u32, height: u32) -> Result<Self, StereoError> {
+        Ok(Self {
+            left: Canvas::try_new(width, height)?,
+            right: Canvas::try_new(width, height)?,
+        })
+    }
+
+    /// The picture of `eye`.
+    #[must_use]
+    pub fn get(&self, eye: Eye) -> &Canvas {
+        match eye {
+            Eye::Left => &self.left,
+            Eye::Right => &self.right,
+        }
+    }
+
+    /// The buffer that drawing goes to for `eye` (`glDrawBuffer`).
+    pub fn draw_buffer(&mut self, eye: Eye) -> &mut Canvas {
+        match eye {
+            Eye::Left => &mut self.left,
+            Eye::Right => &mut self.right,
+        }
+    }
+}
+
+/// Which filters the viewer's glasses have; the left eye always looks
+/// through red.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Glasses {
+    /// Red left, green right: the seed's "rot-grün" filters.
+    RedGreen,
+    /// Red left, cyan (green and blue) right: more of the right picture's
+    /// colour survives.
+    RedCyan,
+}
+
+// ─── Your tasks (Task 7) ──────────────────────────────────────────────────
+
+impl StereoCamera {
     /// Where `eye` stands: the mono eye moved by half the separation along
     /// the camera's right vector `normalize((target − eye) × up)`, to the
     /// left (−) for the left eye and to the right (+) for the right eye.
@@ -227,42 +286,6 @@ impl StereoCamera {
     }
 }
 
-/// The two back buffers of a stereo framebuffer, one per eye, each a
-/// cleared canvas with its own depth plane.
-#[derive(Clone, Debug, PartialEq)]
-pub struct StereoBuffer {
-    left: Canvas,
-    right: Canvas,
-}
-
-impl StereoBuffer {
-    /// Two cleared `width × height` canvases (colour black, depth
-    /// [`canvas::DEPTH_CLEAR`]).
-    pub fn try_new(width: u32, height: u32) -> Result<Self, StereoError> {
-        Ok(Self {
-            left: Canvas::try_new(width, height)?,
-            right: Canvas::try_new(width, height)?,
-        })
-    }
-
-    /// The picture of `eye`.
-    #[must_use]
-    pub fn get(&self, eye: Eye) -> &Canvas {
-        match eye {
-            Eye::Left => &self.left,
-            Eye::Right => &self.right,
-        }
-    }
-
-    /// The buffer that drawing goes to for `eye` (`glDrawBuffer`).
-    pub fn draw_buffer(&mut self, eye: Eye) -> &mut Canvas {
-        match eye {
-            Eye::Left => &mut self.left,
-            Eye::Right => &mut self.right,
-        }
-    }
-}
-
 /// Renders `mesh` once per eye into a new `width × height` stereo buffer:
 /// for each eye, a [`Pipeline`] with the identity model matrix and the
 /// eye's [`StereoCamera::view`] and [`StereoCamera::projection`] (for
@@ -296,17 +319,6 @@ pub fn render_stereo(
     }
     Ok(buffer)
     // END SOLUTION
-}
-
-/// Which filters the viewer's glasses have; the left eye always looks
-/// through red.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Glasses {
-    /// Red left, green right: the seed's "rot-grün" filters.
-    RedGreen,
-    /// Red left, cyan (green and blue) right: more of the right picture's
-    /// colour survives.
-    RedCyan,
 }
 
 /// The anaglyph of a stereo pair, for passive stereo with colour filters:

@@ -4,6 +4,8 @@
 
 use canvas::{Canvas, Pixel, Rgba, Vec2, Viewport};
 
+pub mod triangles;
+
 /// The colour used for test drawings.
 pub const INK: Rgba = Rgba::WHITE;
 
