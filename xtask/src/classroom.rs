@@ -266,7 +266,7 @@ pub fn results(report: &Report) -> Vec<(String, TaskResult)> {
                         ),
                         status,
                         score: task.score,
-                        message: crate::grade::export::task_summary(topic, task),
+                        message: task.summary(topic),
                         test_code: format!("cargo xtask grade {}", topic.name),
                         filename: String::new(),
                         line_no: 0,

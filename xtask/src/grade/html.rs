@@ -466,7 +466,7 @@ fn url(path: &Path) -> String {
 /// Text for HTML element content and attribute values: XML's escapes
 /// are HTML's too.
 fn escape(text: &str) -> String {
-    super::export::xml_text(text)
+    super::markup::xml_text(text)
 }
 
 #[cfg(test)]

@@ -16,6 +16,8 @@
 
 use std::path::PathBuf;
 
+use std::fmt::Write as _;
+
 use serde::Serialize;
 
 pub use super::outcome::Exit;
@@ -253,6 +255,75 @@ pub fn points(x: f64) -> String {
         format!("{x:.0}")
     } else {
         format!("{x}")
+    }
+}
+
+impl TaskReport {
+    /// Its result in plain text: counts, then the first failure (`topic`
+    /// is the topic it belongs to).
+    #[must_use]
+    pub fn summary(&self, topic: &TopicReport) -> String {
+        let task = self;
+        let mut text = String::new();
+        match task.status {
+            TaskStatus::CompileError => {
+                let _ = write!(
+                    text,
+                    "compile error:\n{}",
+                    topic.compile_error.as_deref().unwrap_or_default()
+                );
+            }
+            TaskStatus::Error => {
+                let _ = write!(
+                    text,
+                    "not graded: {}",
+                    task.error.as_deref().unwrap_or_default()
+                );
+            }
+            TaskStatus::Ok | TaskStatus::Fail => {
+                let _ = write!(
+                    text,
+                    "{} of {} tests passed",
+                    task.passed,
+                    task.passed + task.failed
+                );
+                if task.ignored > 0 {
+                    let _ = write!(text, " ({} ignored)", task.ignored);
+                }
+            }
+        }
+        if let Some(test) = task.first_failure() {
+            let _ = write!(text, "\n\nfirst failing test: {}", test.name);
+            if let Some(reason) = &test.reason {
+                let _ = write!(text, "\nreason: {reason}");
+            }
+            if let Some(location) = &test.panic_location {
+                let _ = write!(text, "\nat: {location}");
+            }
+            if let Some(input) = &test.minimal_input {
+                let _ = write!(text, "\nminimal failing input: {input}");
+            }
+            if let Some(diff) = &test.raster_diff {
+                let _ = write!(text, "\nraster diff (expected vs yours):\n{diff}");
+            }
+            if let Some(diff) = &test.snapshot_diff {
+                let _ = write!(text, "\nsnapshot diff (- expected, + yours):\n{diff}");
+            }
+            let others = task.failed - 1;
+            if others > 0 {
+                let _ = write!(text, "\n\n{others} other test(s) of this task failed too");
+            }
+            if !task.hints.is_empty() {
+                let _ = write!(
+                    text,
+                    "\nhints: `cargo xtask hint {}/{}` ({} of them, one more each time)",
+                    topic.name,
+                    task.id,
+                    task.hints.len()
+                );
+            }
+        }
+        text
     }
 }
 

@@ -89,11 +89,12 @@ fn parse_in(masked: &str, at: usize, self_type: Option<&str>) -> Option<(String,
         if parameter.trim().is_empty() {
             continue;
         }
-        if i == 0 && self_type.is_some() {
-            if let Some(kind) = receiver_kind(parameter) {
-                receiver = kind.to_owned();
-                continue;
-            }
+        if i == 0
+            && self_type.is_some()
+            && let Some(kind) = receiver_kind(parameter)
+        {
+            receiver = kind.to_owned();
+            continue;
         }
         let (pattern, ty) = split_parameter(parameter)?;
         patterns.push(pattern.trim().to_owned());
