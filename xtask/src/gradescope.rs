@@ -9,8 +9,10 @@
 //!
 //! - `course/`: the student edition of the course (see [`crate::release`]):
 //!   its tests are the official ones, and it holds no solutions;
-//! - `setup.sh`: installs Rust, bubblewrap and the software Vulkan driver,
-//!   builds the grader, and grades the untouched edition once as a
+//! - `setup.sh`: installs Rust — the release of the toolchain that wrote
+//!   the bundle, which the course is built and tested with, pinned by its
+//!   version — bubblewrap and the software Vulkan driver, builds the
+//!   grader, and grades the untouched edition once as a
 //!   submission so that every dependency is compiled into the image;
 //! - `run_autograder`: grades `/autograder/submission` with
 //!   `cargo xtask grade --submission` and copies its `results.json`
@@ -41,12 +43,17 @@ apt-get update -q
 apt-get install -y -q --no-install-recommends \
     ca-certificates curl build-essential pkg-config \
     bubblewrap libvulkan1 mesa-vulkan-drivers
-if ! command -v cargo > /dev/null; then
+# The Rust the course was tested with when this bundle was written.
+TOOLCHAIN="@TOOLCHAIN@"
+if ! command -v rustup > /dev/null && [ ! -x "$HOME/.cargo/bin/rustup" ]; then
     curl --proto '=https' --tlsv1.2 -sSf https://sh.rustup.rs \
-        | sh -s -- -y --profile minimal --default-toolchain stable
+        | sh -s -- -y --profile minimal --default-toolchain "$TOOLCHAIN"
 fi
 . "$HOME/.cargo/env"
+rustup toolchain install "$TOOLCHAIN" --profile minimal
+rustup default "$TOOLCHAIN"
 cd "$SOURCE/course"
+rustc --version
 cargo build --release --package xtask
 # Grade the untouched edition once, as a submission: every dependency is
 # then compiled into the image, and a student's submission compiles only
@@ -122,13 +129,44 @@ pub fn run(root: &Path, dir: &Path, topics: &[String]) -> Result<()> {
 pub fn write(root: &Path, dir: &Path, topics: &[String]) -> Result<release::Release> {
     stage::claim(dir)?;
     let release = release::write(root, &dir.join("course"), topics, None)?;
+    let toolchain = toolchain()?;
     for (name, text) in SCRIPTS {
         let path = dir.join(name);
+        let text = text.replace("@TOOLCHAIN@", &toolchain);
         fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))?;
         make_executable(&path)?;
     }
     zip(dir)?;
     Ok(release)
+}
+
+/// The version of the Rust toolchain that runs `cargo` here (`1.95.0` of
+/// `rustc 1.95.0 (59807616e 2026-04-14)`): the one the course is built and
+/// tested with on this machine, which the autograder pins.
+fn toolchain() -> Result<String> {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let output = Command::new(&rustc)
+        .arg("--version")
+        .output()
+        .context("cannot run `rustc --version`")?;
+    ensure!(output.status.success(), "`rustc --version` failed");
+    let text = String::from_utf8_lossy(&output.stdout);
+    version_of(&text).with_context(|| format!("cannot read a version in `{}`", text.trim()))
+}
+
+/// The version in `rustc --version`'s answer.
+fn version_of(answer: &str) -> Option<String> {
+    let version = answer.split_whitespace().nth(1)?;
+    let plain = version
+        .split('.')
+        .all(|part| !part.is_empty() && part.bytes().all(|b| b.is_ascii_digit()));
+    // A nightly or beta (`1.96.0-nightly`) cannot be installed by that
+    // name: the autograder then takes the stable release.
+    Some(if plain {
+        version.to_owned()
+    } else {
+        "stable".to_owned()
+    })
 }
 
 #[cfg(unix)]
@@ -185,4 +223,28 @@ fn zip(dir: &Path) -> Result<()> {
         archive.display()
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_toolchain_is_pinned_by_its_release_version() {
+        assert_eq!(
+            version_of("rustc 1.95.0 (59807616e 2026-04-14)").as_deref(),
+            Some("1.95.0")
+        );
+        assert_eq!(
+            version_of("rustc 1.96.0-nightly (abc 2026-05-01)").as_deref(),
+            Some("stable")
+        );
+        assert_eq!(version_of("nonsense"), None);
+        let here = toolchain().unwrap();
+        assert!(
+            SETUP
+                .replace("@TOOLCHAIN@", &here)
+                .contains(&format!("TOOLCHAIN=\"{here}\""))
+        );
+    }
 }
