@@ -159,7 +159,7 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
     } else {
         for file in files_under(root)? {
             let stub = |file: &Path| {
-                crate::stubs::is_wgsl(file)
+                crate::files::is_wgsl(file)
                     || fs::read_to_string(root.join(file)).is_ok_and(|text| text.contains("todo!("))
             };
             if is_student_file(&file) && stub(&file) {

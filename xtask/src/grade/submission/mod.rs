@@ -140,7 +140,7 @@ fn grade_one(
             continue;
         };
         // WGSL reaches no files; Rust may, by macros.
-        let uses = if crate::stubs::is_wgsl(&task_file) {
+        let uses = if crate::files::is_wgsl(&task_file) {
             Vec::new()
         } else {
             super::forbidden::uses(&text)
