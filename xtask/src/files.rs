@@ -1,7 +1,8 @@
 //! The grader's file walks and reads, in one place: the files of a course
 //! (never `target/`, `.git/` or the solutions, no link followed), a
 //! bounded walk of what a job wrote, and the plain-file reads and writes
-//! that staging a submission needs (no link followed at any component).
+//! that staging a submission needs (no link followed at any component),
+//! and which files are WGSL.
 
 use std::fs::{self, File};
 use std::path::{Component, Path, PathBuf};
@@ -23,6 +24,12 @@ pub const MAX_ENTRIES: usize = 20_000;
 /// The most a file of a submission may hold to be read (a task file, a
 /// grading file compared with the course's).
 pub const MAX_SUBMITTED_FILE: u64 = 4 << 20;
+
+/// Whether a file is WGSL (a shader piece a student writes).
+#[must_use]
+pub fn is_wgsl(file: impl AsRef<Path>) -> bool {
+    file.as_ref().extension().is_some_and(|ext| ext == "wgsl")
+}
 
 /// Every file under `root`, relative to it and sorted, skipping
 /// [`SKIPPED_FOLDERS`] at any depth and [`SOLUTIONS`] at the top. Symbolic links are neither listed nor

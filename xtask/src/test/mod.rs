@@ -242,6 +242,38 @@ pub(super) fn one_per_topic<T>(items: &[T], topic: impl Fn(&T) -> &str) -> Vec<V
     rounds
 }
 
+/// Grades `items` planted a round at a time (see [`one_per_topic`]):
+/// `plant` writes each item of a round into the round's submission-like
+/// folder, `target/xtask/<scratch>`, which is graded as a submission of
+/// the round's topics into `target/grade/<out(round number)>`, its summary
+/// printed; `check` reads the round's report. Returns how many rounds
+/// there were.
+pub(super) fn grade_planted<T>(
+    root: &Path,
+    items: &[T],
+    topic: impl Fn(&T) -> &str,
+    scratch: &str,
+    out: impl Fn(usize) -> String,
+    mut plant: impl FnMut(&Path, &T) -> Result<()>,
+    mut check: impl FnMut(&[&T], &Report),
+) -> Result<usize> {
+    let rounds = one_per_topic(items, &topic);
+    for (number, round) in rounds.iter().enumerate() {
+        let planted = empty_folder(root.join("target").join("xtask").join(scratch))?;
+        for item in round {
+            plant(&planted, item)?;
+        }
+        let mut options = GradeOptions::new(root.to_path_buf());
+        options.out = root.join("target").join("grade").join(out(number));
+        options.topics = round.iter().map(|item| topic(item).to_owned()).collect();
+        options.topics.dedup();
+        let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;
+        grade::print_summary(&report, &options.out, false);
+        check(round, &report);
+    }
+    Ok(rounds.len())
+}
+
 /// `folder`, emptied (what an earlier round left there goes).
 pub(super) fn empty_folder(folder: PathBuf) -> Result<PathBuf> {
     if folder.exists() {

@@ -7,11 +7,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail, ensure};
 
-use crate::grade::{self, GradeOptions, Report, TestStatus};
-use crate::stage::Overlay;
+use crate::grade::{Report, TestStatus};
 use crate::stubs;
 
-use super::{SHORTCUTS, empty_folder, one_per_topic};
+use super::{SHORTCUTS, grade_planted};
 
 /// The planted shortcuts (see [`SHORTCUTS`]).
 #[derive(serde::Deserialize)]
@@ -148,13 +147,19 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     // A round is one submission-like folder: the solutions of its topics
     // with one shortcut planted in each, so that every shortcut is graded
     // alone, against the solutions of the other tasks.
-    let rounds = one_per_topic(&shortcuts.shortcut, |s| &s.topic);
     let mut problems = Vec::new();
     let mut topics = std::collections::BTreeSet::new();
     let mut duration_s = 0.0;
-    for (number, round) in rounds.iter().enumerate() {
-        let planted = empty_folder(root.join("target").join("xtask").join("shortcuts"))?;
-        for shortcut in round {
+    let rounds = grade_planted(
+        root,
+        &shortcuts.shortcut,
+        |s| &s.topic,
+        "shortcuts",
+        |number| match number {
+            0 => "shortcuts".to_owned(),
+            n => format!("shortcuts-{}", n + 1),
+        },
+        |planted, shortcut| {
             let solutions = root.join("reference").join(&shortcut.topic);
             for file in crate::files::files_under(&solutions)? {
                 let to = Path::new("exercises").join(&shortcut.topic).join(&file);
@@ -176,24 +181,16 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
             let text = shortcut
                 .plant(&source)
                 .with_context(|| format!("cannot plant {}", shortcut.what))?;
-            crate::files::write_file(&planted.join(file), text)?;
-        }
-        let mut options = GradeOptions::new(root.to_path_buf());
-        let folder = match number {
-            0 => "shortcuts".to_owned(),
-            n => format!("shortcuts-{}", n + 1),
-        };
-        options.out = root.join("target").join("grade").join(folder);
-        options.topics = round.iter().map(|s| s.topic.clone()).collect();
-        options.topics.dedup();
-        topics.extend(options.topics.iter().cloned());
-        let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;
-        grade::print_summary(&report, &options.out, false);
-        duration_s += report.duration_s;
-        for shortcut in round {
-            problems.extend(shortcut.problems(&report));
-        }
-    }
+            crate::files::write_file(&planted.join(file), text)
+        },
+        |round, report| {
+            topics.extend(round.iter().map(|s| s.topic.clone()));
+            duration_s += report.duration_s;
+            for shortcut in round {
+                problems.extend(shortcut.problems(report));
+            }
+        },
+    )?;
     if !problems.is_empty() {
         bail!(
             "{} planted shortcut(s) keep points they should lose:\n  {}",
@@ -205,7 +202,7 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
         "{} shortcuts planted in {} topics ({} rounds), each loses what it must ({duration_s:.1} s)",
         shortcuts.shortcut.len(),
         topics.len(),
-        rounds.len()
+        rounds
     ))
 }
 

@@ -9,11 +9,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 
-use crate::grade::{self, GradeOptions};
-use crate::stage::{self, Overlay};
+use crate::stage;
 use crate::{stubs, topics};
 
-use super::{empty_folder, one_per_topic};
+use super::grade_planted;
 
 /// A given function with a task's signature, and how it gets into the
 /// task's file.
@@ -40,44 +39,41 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     }
     // A round holds at most one stand-in per topic, so that one that does
     // not compile where planted hides no other.
-    let rounds = one_per_topic(&stand_ins, |s| &s.topic);
     let mut problems = Vec::new();
     let mut not_compiling = Vec::new();
-    for (number, round) in rounds.iter().enumerate() {
-        let planted = empty_folder(root.join("target").join("xtask").join("stand-ins"))?;
-        for stand_in in round {
-            crate::files::write_file(&planted.join(&stand_in.file), &stand_in.planted)?;
-        }
-        let mut options = GradeOptions::new(root.to_path_buf());
-        options.out = root
-            .join("target")
-            .join("grade")
-            .join(format!("stand-ins-{}", number + 1));
-        options.topics = round.iter().map(|s| s.topic.clone()).collect();
-        let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;
-        grade::print_summary(&report, &options.out, false);
-        for stand_in in round {
-            let topic = report.topics.iter().find(|t| t.name == stand_in.topic);
-            let task = topic
-                .into_iter()
-                .flat_map(|t| &t.tasks)
-                .find(|t| t.id == stand_in.task);
-            match (topic, task) {
-                (Some(topic), _) if topic.compile_error.is_some() => {
-                    not_compiling.push(format!("{} in {}", stand_in.given, stand_in.topic));
+    grade_planted(
+        root,
+        &stand_ins,
+        |s| &s.topic,
+        "stand-ins",
+        |number| format!("stand-ins-{}", number + 1),
+        |planted, stand_in| {
+            crate::files::write_file(&planted.join(&stand_in.file), &stand_in.planted)
+        },
+        |round, report| {
+            for stand_in in round {
+                let topic = report.topics.iter().find(|t| t.name == stand_in.topic);
+                let task = topic
+                    .into_iter()
+                    .flat_map(|t| &t.tasks)
+                    .find(|t| t.id == stand_in.task);
+                match (topic, task) {
+                    (Some(topic), _) if topic.compile_error.is_some() => {
+                        not_compiling.push(format!("{} in {}", stand_in.given, stand_in.topic));
+                    }
+                    (_, Some(task)) if task.score > 0.0 => problems.push(format!(
+                        "{} scores {} of {} points in place of {} / {}",
+                        stand_in.given, task.score, task.points, stand_in.topic, stand_in.task
+                    )),
+                    (_, Some(_)) => {}
+                    _ => problems.push(format!(
+                        "{}: no task {} / {} in the report",
+                        stand_in.given, stand_in.topic, stand_in.task
+                    )),
                 }
-                (_, Some(task)) if task.score > 0.0 => problems.push(format!(
-                    "{} scores {} of {} points in place of {} / {}",
-                    stand_in.given, task.score, task.points, stand_in.topic, stand_in.task
-                )),
-                (_, Some(_)) => {}
-                _ => problems.push(format!(
-                    "{}: no task {} / {} in the report",
-                    stand_in.given, stand_in.topic, stand_in.task
-                )),
             }
-        }
-    }
+        },
+    )?;
     if !problems.is_empty() {
         bail!(
             "{} given function(s) or method(s) solve a task (given code must not: replace them, or make the task's tests tell them apart):\n  {}",

@@ -10,6 +10,9 @@ use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
+#[cfg(target_os = "linux")]
+pub mod class;
+
 /// Copies `tests/fixtures/<name>` to a scratch folder of its own for
 /// `case`, keeping an earlier copy's `target/` so that builds stay warm.
 pub fn fixture(name: &str, case: &str) -> PathBuf {

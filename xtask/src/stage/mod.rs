@@ -40,8 +40,15 @@ use std::path::{Component, Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 
-use crate::files::{files_under, plain_file, write_file};
+use crate::files::{files_under, plain_file};
 
+mod build;
+mod sync;
+#[cfg(test)]
+mod tests;
+
+pub use build::{claim_build, claim_checkout_build};
+pub use sync::{claim, sync};
 /// Where the stage and its build cache live, under the checkout.
 const STAGE_HOME: [&str; 2] = ["target", "xtask"];
 
@@ -159,7 +166,7 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
     } else {
         for file in files_under(root)? {
             let stub = |file: &Path| {
-                crate::stubs::is_wgsl(file)
+                crate::files::is_wgsl(file)
                     || fs::read_to_string(root.join(file)).is_ok_and(|text| text.contains("todo!("))
             };
             if is_student_file(&file) && stub(&file) {
@@ -234,65 +241,6 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
 
 /// The lock file of a workspace.
 const LOCK_FILE: &str = "Cargo.lock";
-
-/// Makes `dest` hold exactly `files` (besides [`crate::files::SKIPPED_FOLDERS`] and the
-/// [`STAGE_MARKER`]): writes a file only when its contents differ, removes
-/// the others and the folders they leave empty. Returns how many files
-/// were written, and the files removed.
-pub fn sync(files: &[(PathBuf, Source)], dest: &Path) -> Result<(usize, Vec<PathBuf>)> {
-    fs::create_dir_all(dest).with_context(|| format!("cannot create {}", dest.display()))?;
-    let mut written = 0;
-    for (to, from) in files {
-        let contents = from.read()?;
-        let target = dest.join(to);
-        if fs::read(&target).is_ok_and(|old| old == contents) {
-            continue;
-        }
-        write_file(&target, &contents)?;
-        written += 1;
-    }
-    let mut removed = Vec::new();
-    let wanted: std::collections::HashSet<&Path> =
-        files.iter().map(|(to, _)| to.as_path()).collect();
-    for file in files_under(dest)? {
-        if !wanted.contains(file.as_path()) && file != Path::new(STAGE_MARKER) {
-            let path = dest.join(&file);
-            fs::remove_file(&path).with_context(|| format!("cannot remove {}", path.display()))?;
-            removed.push(file.clone());
-            // Folders left empty go too (`remove_dir` refuses non-empty ones).
-            let mut parent = path.parent();
-            while let Some(dir) = parent.filter(|dir| *dir != dest) {
-                if fs::remove_dir(dir).is_err() {
-                    break;
-                }
-                parent = dir.parent();
-            }
-        }
-    }
-    Ok((written, removed))
-}
-
-/// Refuses to sync into `dir` unless it is empty, missing, or marked as
-/// written by this tooling; then marks it.
-pub fn claim(dir: &Path) -> Result<()> {
-    if dir.exists() {
-        let mut entries =
-            fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))?;
-        let empty = entries.next().is_none();
-        if !empty && !dir.join(STAGE_MARKER).is_file() {
-            bail!(
-                "{} exists and was not written by `cargo xtask`; choose a new or empty folder",
-                dir.display()
-            );
-        }
-    }
-    fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    fs::write(
-        dir.join(STAGE_MARKER),
-        "Written by `cargo xtask`: files here are replaced on the next run.\n",
-    )
-    .with_context(|| format!("cannot write in {}", dir.display()))
-}
 
 /// `<root>/target/xtask`: where the checkout at `root` keeps its stage.
 #[must_use]
@@ -388,51 +336,6 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
     })
 }
 
-/// Makes the build folder `target_dir` build the stage at `stage_root`:
-/// when another stage was built there last (cargo would take that stage's
-/// artifacts for this one's, see the module's documentation), every file
-/// of this stage is touched, so that cargo rebuilds whatever they make.
-pub fn claim_build(stage_root: &Path, target_dir: &Path) -> Result<()> {
-    claim_files(stage_root, &[], target_dir)
-}
-
-/// The folders of a checkout that the test executables are built from.
-const TESTED_FOLDERS: [&str; 2] = ["crates", "exercises"];
-
-/// [`claim_build`] for a checkout graded in place (`cargo xtask grade`),
-/// whose build folder may have built another copy of the course last (a
-/// `CARGO_TARGET_DIR` shared between checkouts): then cargo would run that
-/// copy's tests. Only the files the tests are built from are touched
-/// (`crates/` and `exercises/`), so the tooling is not rebuilt.
-pub fn claim_checkout_build(root: &Path, target_dir: &Path) -> Result<()> {
-    claim_files(root, &TESTED_FOLDERS, target_dir)
-}
-
-/// [`claim_build`] touching only the files under `folders` of
-/// `stage_root` (all of them for none).
-fn claim_files(stage_root: &Path, folders: &[&str], target_dir: &Path) -> Result<()> {
-    let record = target_dir.join(BUILT_FROM);
-    let ours = stage_root.to_string_lossy().into_owned();
-    if fs::read_to_string(&record).is_ok_and(|last| last == ours) {
-        return Ok(());
-    }
-    if record.exists() || target_dir.join("debug").exists() {
-        let now = std::time::SystemTime::now();
-        let touched = files_under(stage_root)?.into_iter().filter(|file| {
-            folders.is_empty() || folders.iter().any(|folder| file.starts_with(folder))
-        });
-        for file in touched {
-            let path = stage_root.join(file);
-            File::options()
-                .write(true)
-                .open(&path)
-                .and_then(|f| f.set_modified(now))
-                .with_context(|| format!("cannot touch {}", path.display()))?;
-        }
-    }
-    write_file(&record, ours)
-}
-
 /// `dir` made absolute, if it lies outside the course at `root` (or in its
 /// build output): a folder inside would be copied into itself.
 pub fn outside_course(root: &Path, dir: &Path) -> Result<PathBuf> {
@@ -460,202 +363,4 @@ pub fn write_reference(root: &Path, dir: &Path) -> Result<()> {
     );
     println!("open it in your editor; `cargo test` there runs the official tests on the solutions");
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("xtask-stage-{name}-{}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
-        dir
-    }
-
-    fn write(path: &Path, text: &str) {
-        fs::create_dir_all(path.parent().unwrap()).unwrap();
-        fs::write(path, text).unwrap();
-    }
-
-    #[test]
-    fn a_checkout_built_after_another_copy_has_its_tested_files_touched() {
-        let dir = scratch("claim-checkout");
-        let (a, b, target) = (dir.join("a"), dir.join("b"), dir.join("shared-target"));
-        let files = [
-            "crates/c/src/lib.rs",
-            "exercises/e/src/lib.rs",
-            "xtask/src/main.rs",
-        ];
-        let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
-        for checkout in [&a, &b] {
-            for file in files {
-                write(&checkout.join(file), "pub fn f() {}\n");
-                File::options()
-                    .write(true)
-                    .open(checkout.join(file))
-                    .unwrap()
-                    .set_modified(old)
-                    .unwrap();
-            }
-        }
-        let touched = |checkout: &Path| -> Vec<bool> {
-            files
-                .iter()
-                .map(|file| {
-                    fs::metadata(checkout.join(file))
-                        .unwrap()
-                        .modified()
-                        .unwrap()
-                        > old
-                })
-                .collect()
-        };
-        // A fresh build folder: nothing was built there, nothing to touch.
-        claim_checkout_build(&a, &target).unwrap();
-        assert_eq!(touched(&a), [false, false, false]);
-        fs::create_dir_all(target.join("debug")).unwrap();
-        // Another copy graded with the same build folder: its crates and
-        // exercises are touched, its tooling is not.
-        claim_checkout_build(&b, &target).unwrap();
-        assert_eq!(touched(&b), [true, true, false]);
-        fs::remove_dir_all(&dir).unwrap();
-    }
-
-    #[test]
-    fn a_stage_built_after_another_has_its_files_touched() {
-        let dir = scratch("claim-build");
-        let (a, b, target) = (dir.join("a"), dir.join("b"), dir.join("build"));
-        for stage in [&a, &b] {
-            write(&stage.join("src/lib.rs"), "pub fn f() {}\n");
-        }
-        fs::create_dir_all(target.join("debug")).unwrap();
-        let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
-        let age = |stage: &Path| {
-            fs::metadata(stage.join("src/lib.rs"))
-                .unwrap()
-                .modified()
-                .unwrap()
-        };
-        let make_old = |stage: &Path| {
-            File::options()
-                .write(true)
-                .open(stage.join("src/lib.rs"))
-                .unwrap()
-                .set_modified(old)
-                .unwrap();
-        };
-        make_old(&a);
-        make_old(&b);
-        // A build folder of unknown history: its stage is touched.
-        claim_build(&a, &target).unwrap();
-        assert!(age(&a) > old);
-        // The same stage again: nothing to touch.
-        make_old(&a);
-        claim_build(&a, &target).unwrap();
-        assert_eq!(age(&a), old);
-        // Another stage, then the first again: each is touched.
-        claim_build(&b, &target).unwrap();
-        assert!(age(&b) > old);
-        claim_build(&a, &target).unwrap();
-        assert!(age(&a) > old);
-        assert_eq!(
-            fs::read_to_string(target.join(BUILT_FROM)).unwrap(),
-            a.to_string_lossy()
-        );
-        fs::remove_dir_all(&dir).unwrap();
-    }
-
-    #[test]
-    fn student_files_are_those_under_an_exercise_src() {
-        assert!(is_student_file(Path::new("exercises/01-lines/src/dda.rs")));
-        assert!(is_student_file(Path::new(
-            "exercises/01-lines/src/sub/x.rs"
-        )));
-        assert!(!is_student_file(Path::new(
-            "exercises/01-lines/tests/dda.rs"
-        )));
-        assert!(!is_student_file(Path::new("exercises/src/x.rs")));
-    }
-
-    #[test]
-    fn the_reference_overlay_replaces_only_solution_files() {
-        let course = scratch("course");
-        write(&course.join("Cargo.toml"), "[workspace]");
-        write(
-            &course.join("exercises/01-a/src/lib.rs"),
-            "pub mod x; pub mod given;",
-        );
-        write(&course.join("exercises/01-a/src/x.rs"), "stub");
-        write(&course.join("exercises/01-a/src/given.rs"), "given");
-        write(&course.join("reference/01-a/src/x.rs"), "solution");
-        write(&course.join("target/debug/junk"), "junk");
-        let files = plan(&course, Overlay::Reference).unwrap();
-        let staged: Vec<(String, String)> = files
-            .iter()
-            .map(|(to, from)| {
-                let text = String::from_utf8(from.read().unwrap()).unwrap();
-                // `/` between the parts on every system (Windows shows `\`).
-                let parts: Vec<_> = to.iter().map(|p| p.to_string_lossy()).collect();
-                (parts.join("/"), text)
-            })
-            .collect();
-        assert_eq!(
-            staged,
-            [
-                ("Cargo.toml", "[workspace]"),
-                ("exercises/01-a/src/given.rs", "given"),
-                ("exercises/01-a/src/lib.rs", "pub mod x; pub mod given;"),
-                ("exercises/01-a/src/x.rs", "solution"),
-            ]
-            .map(|(a, b)| (a.to_owned(), b.to_owned()))
-        );
-        assert!(plan(&course.join("exercises"), Overlay::Reference).is_err());
-        fs::remove_dir_all(&course).unwrap();
-    }
-
-    #[test]
-    fn sync_writes_changes_only_and_removes_what_is_gone() {
-        let from = scratch("from");
-        let dest = scratch("dest");
-        write(&from.join("a.rs"), "a");
-        write(&from.join("b/c.rs"), "c");
-        let files = vec![
-            (PathBuf::from("a.rs"), Source::File(from.join("a.rs"))),
-            (PathBuf::from("b/c.rs"), Source::File(from.join("b/c.rs"))),
-        ];
-        assert_eq!(sync(&files, &dest).unwrap(), (2, vec![]));
-        let before = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
-        write(&dest.join("old/gone.rs"), "gone");
-        write(&dest.join("target/kept"), "build output");
-        assert_eq!(
-            sync(&files, &dest).unwrap(),
-            (0, vec![PathBuf::from("old/gone.rs")])
-        );
-        let after = fs::metadata(dest.join("a.rs")).unwrap().modified().unwrap();
-        assert_eq!(before, after, "an unchanged file keeps its time");
-        assert!(!dest.join("old").exists(), "emptied folders are removed");
-        assert!(dest.join("target/kept").exists(), "build output is kept");
-        write(&from.join("a.rs"), "a2");
-        assert_eq!(sync(&files, &dest).unwrap(), (1, vec![]));
-        assert_eq!(fs::read_to_string(dest.join("a.rs")).unwrap(), "a2");
-        fs::remove_dir_all(&from).unwrap();
-        fs::remove_dir_all(&dest).unwrap();
-    }
-
-    #[test]
-    fn a_folder_not_written_by_xtask_is_never_claimed() {
-        let dir = scratch("claim");
-        write(&dir.join("notes.txt"), "mine");
-        let error = claim(&dir).unwrap_err().to_string();
-        assert!(
-            error.contains("was not written by `cargo xtask`"),
-            "{error}"
-        );
-        assert!(dir.join("notes.txt").exists());
-        fs::remove_file(dir.join("notes.txt")).unwrap();
-        claim(&dir).unwrap();
-        write(&dir.join("notes.txt"), "ours now");
-        claim(&dir).unwrap();
-        fs::remove_dir_all(&dir).unwrap();
-    }
 }

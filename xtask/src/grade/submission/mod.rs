@@ -1,0 +1,358 @@
+//! `cargo xtask grade --submission DIR`: grading a student's checkout, or a
+//! folder of them, with the course's official tests.
+//!
+//! Only `exercises/*/src/` belongs to the student. Everything else that
+//! takes part in grading — the course library (`crates/`), the tests and
+//! snapshots, the task sheets (they hold the points), the manifests, the
+//! tooling — is the course's. So a submission is never built where it
+//! lies: its `src/` folders are laid over a copy of the official course,
+//! the *stage* (see `stage`, which also stages the reference), and the
+//! stage is graded.
+//!
+//! ```text
+//!   official course ──(no target/, .git/, reference/)──┐
+//!                                                      ├──sync──> stage ──grade──> report
+//!   submission ──exercises/*/src/ only─────────────────┘
+//! ```
+//!
+//! The grading files of the submission are compared with the official ones
+//! first; a submission where any differ, are missing or were added is
+//! *flagged* in every report (the table, `report.html`, `report.json`,
+//! Gradescope's output). Nothing in the submission is ever written to.
+//!
+//! Each submission is graded into `<out>/<name>/`; the snapshots it
+//! failed are in `<out>/<name>/snapshots/` (insta's `.snap.new` files, at
+//! their paths in the course). One submission is graded in the course's
+//! stage. A folder whose subfolders are checkouts is a class: up to
+//! `--jobs` submissions (default: one per two CPUs) are graded side by side, each in a stage of its
+//! own (a *slot*, see `stage::class_home`), all built into the one build
+//! cache, so the dependencies are built once. The builds take turns (cargo
+//! would make them anyway); while one submission builds, the others run
+//! their tests, from hard links of their executables in their slot, with
+//! at most `--jobs` tests running at once in all. `<out>/gradebook.csv`
+//! and `gradebook.json` list the scores.
+//!
+//! A test sees its own stage and executables and nothing else of the
+//! course's build output: not the other slots (a classmate's code), the
+//! course's own stage (which may hold the solutions), the build cache or
+//! the planted shortcuts of `cargo xtask test`. Without a sandbox nothing
+//! hides them, and a class is graded one submission at a time, so that
+//! what a submission's tests change is found and blamed on it.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+use anyhow::{Context, Result, bail};
+
+use super::report::{self, Edition, Report, TaskStatus};
+use super::{GradeOptions, Permits, table};
+use crate::stage::{self, Overlay, Source};
+use crate::topics;
+
+mod class;
+mod gradebook;
+mod integrity;
+mod tampering;
+
+use class::grade_class;
+use gradebook::{GradebookRow, gradebook_csv};
+use integrity::is_grading_file;
+pub use integrity::{Integrity, check};
+use tampering::{contents_of, tampered, zero_for_tampering};
+
+/// Whether `dir` looks like a course checkout.
+fn is_checkout(dir: &Path) -> bool {
+    // A link among a class's members is no member: it could name another.
+    let linked = fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink());
+    !linked && dir.join("exercises").is_dir() && dir.join("Cargo.toml").is_file()
+}
+
+/// A class slot: where one submission of a class is staged and its tests
+/// run from.
+struct Slot<'a> {
+    /// The slot's folder (see `stage::class_home`).
+    home: PathBuf,
+    /// The one build cache of all slots.
+    target_dir: PathBuf,
+    /// Held while a slot syncs its stage and builds.
+    turn: &'a Mutex<()>,
+    /// The tests that may run at once, in all slots.
+    permits: Arc<Permits>,
+}
+
+/// Grades one submission against the official course at `official`:
+/// compare, stage (in the course's stage, or in `slot`), grade the stage
+/// into `options.out`, keep its failed snapshots. The report files carry
+/// the submission's path and its integrity.
+fn grade_one(
+    official: &Path,
+    submission: &Path,
+    options: &GradeOptions,
+    slot: Option<&Slot<'_>>,
+) -> Result<Report> {
+    let integrity = check(official, submission)?;
+    let mut options = options.clone();
+    // The assignment is the official course's topics, whatever the
+    // submission holds: a topic it lacks scores 0, with the reason.
+    let all_topics = topics::discover(official)?;
+    if options.topics.is_empty() {
+        options.topics = all_topics.iter().map(|t| t.name.clone()).collect();
+    }
+    let options = &options;
+    // A task file that reaches other files at compile time is not
+    // compiled: its stub is staged instead, and its topic scores 0. (The
+    // sandbox shows the build nothing but the stage; this says why
+    // early, and in words.)
+    let mut files = stage::plan(official, Overlay::Submission(submission))?;
+    let mut refused: Vec<(String, Vec<String>)> = Vec::new();
+    let mut unreadable: Vec<(String, String)> = Vec::new();
+    let topic_of = |task_file: &Path| {
+        task_file
+            .components()
+            .nth(1)
+            .map(|c| c.as_os_str().to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    for task_file in stage::task_files(official)? {
+        match crate::files::plain_file(submission, &task_file) {
+            Ok(()) => {}
+            Err(why)
+                if fs::symlink_metadata(submission.join(&task_file)).is_err()
+                    && !why.contains("symbolic link") =>
+            {
+                continue;
+            }
+            Err(why) => {
+                unreadable.push((
+                    topic_of(&task_file),
+                    format!(
+                        "{}: not graded ({why}); the stub was used",
+                        slashed(&task_file)
+                    ),
+                ));
+                continue;
+            }
+        }
+        let Some(text) = crate::files::read_plain(submission, &task_file)
+            .and_then(|bytes| String::from_utf8(bytes).ok())
+        else {
+            continue;
+        };
+        // WGSL reaches no files; Rust may, by macros.
+        let uses = if crate::files::is_wgsl(&task_file) {
+            Vec::new()
+        } else {
+            super::forbidden::uses(&text)
+        };
+        if uses.is_empty() {
+            continue;
+        }
+        let shown = task_file.display().to_string();
+        refused.push((
+            topic_of(&task_file),
+            uses.iter().map(|u| format!("{shown}:{u}")).collect(),
+        ));
+        files.retain(|(to, _)| *to != task_file);
+        files.push((task_file.clone(), Source::File(official.join(&task_file))));
+    }
+    files.sort();
+    let course_before = contents_of(official)?;
+    let planned: Vec<(PathBuf, Vec<u8>)> = files
+        .iter()
+        .map(|(to, from)| Ok((to.clone(), from.read()?)))
+        .collect::<Result<_>>()?;
+    let mut in_stage = options.clone();
+    let (staged, prepared) = match slot {
+        None => {
+            let target_dir = options
+                .target_dir
+                .clone()
+                .unwrap_or_else(|| submissions_build(official));
+            let staged = stage::stage_plan(official, &files, Some(&target_dir))?;
+            in_stage.root.clone_from(&staged.root);
+            in_stage.target_dir = Some(staged.target_dir.clone());
+            let prepared = super::prepare(&in_stage, Edition::Student)?;
+            (staged, prepared)
+        }
+        Some(slot) => {
+            let _turn = slot.turn.lock().expect("no slot panics while building");
+            let staged = stage::stage_slot(&slot.home, &files, &slot.target_dir)?;
+            in_stage.keep_binaries = Some(slot.home.join("bin"));
+            in_stage.permits = Some(Arc::clone(&slot.permits));
+            in_stage.progress = false;
+            in_stage.root.clone_from(&staged.root);
+            in_stage.target_dir = Some(slot.target_dir.clone());
+            let prepared = super::prepare(&in_stage, Edition::Student)?;
+            (staged, prepared)
+        }
+    };
+    let mut report = prepared.finish()?;
+    for (topic, uses) in refused {
+        refuse(&mut report, &topic, &uses);
+    }
+    for topic in &mut report.topics {
+        if !submission.join("exercises").join(&topic.name).is_dir() {
+            topic.errors.push(format!(
+                "the submission has no exercises/{}: its tasks score 0",
+                topic.name
+            ));
+            report.complete = false;
+        }
+        for (_, why) in unreadable.iter().filter(|(t, _)| *t == topic.name) {
+            topic.errors.push(why.clone());
+            report.complete = false;
+        }
+    }
+    let mut integrity = integrity;
+    integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
+    if !integrity.tampered.is_empty() {
+        zero_for_tampering(&mut report, &integrity.tampered);
+        let in_course: Vec<String> = integrity
+            .tampered
+            .iter()
+            .filter(|f| !f.starts_with("stage"))
+            .map(|f| table::shown(&slashed(f)))
+            .collect();
+        if !in_course.is_empty() {
+            eprintln!(
+                "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
+                table::shown(&submission.display().to_string()),
+                in_course.join(", ")
+            );
+        }
+    }
+    report.root = submission.to_path_buf();
+    report.integrity = Some(integrity);
+    super::export::write_all(&report, &options.out)?;
+    Ok(report)
+}
+
+/// The table of a graded submission, as `cargo xtask grade` prints it.
+fn table_of(report: &Report, out: &Path) -> String {
+    table::render(
+        report,
+        out,
+        table::Style::detect(),
+        table::Details::EveryTask,
+    )
+}
+
+/// The build cache of submissions: never the one the solutions are built
+/// in, so that nothing a submission's build can read was compiled from
+/// them.
+fn submissions_build(official: &Path) -> PathBuf {
+    stage::home(official).join("submissions-build")
+}
+
+/// Scores the topic `name` 0 as not compiled, for the forbidden `uses` of
+/// its task files.
+fn refuse(report: &mut Report, name: &str, uses: &[String]) {
+    let Some(topic) = report.topics.iter_mut().find(|t| t.name == name) else {
+        return;
+    };
+    let reason = format!(
+        "not compiled: task code may not reach other files at compile time\n{}",
+        uses.join("\n")
+    );
+    topic.compile_error = Some(match topic.compile_error.take() {
+        Some(more) => format!("{reason}\n\n{more}"),
+        None => reason,
+    });
+    for task in &mut topic.tasks {
+        task.status = TaskStatus::CompileError;
+        task.score = 0.0;
+        task.error = None;
+        task.tests.clear();
+        (task.passed, task.failed, task.ignored) = (0, 0, 0);
+    }
+    topic.score = 0.0;
+    report.score = report::round2(report.topics.iter().map(|t| t.score).sum());
+    report.complete = false;
+}
+
+/// `--submission DIR`: one checkout, or a folder of checkouts (a class).
+pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
+    let dir = dir
+        .canonicalize()
+        .with_context(|| format!("cannot find the submission {}", dir.display()))?;
+    let out_for = |submission: &Path| {
+        let name = submission.file_name().map_or_else(
+            || "submission".to_owned(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        let mut one = options.clone();
+        one.out = options.out.join(&name);
+        (name, one)
+    };
+    if is_checkout(&dir) {
+        let (_, one) = out_for(&dir);
+        let report = grade_one(official, &dir, &one, None)?;
+        print!("{}", table_of(&report, &one.out));
+        return Ok(());
+    }
+    let mut submissions: Vec<PathBuf> = fs::read_dir(&dir)
+        .with_context(|| format!("cannot read {}", dir.display()))?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|path| is_checkout(path))
+        .collect();
+    submissions.sort();
+    if submissions.is_empty() {
+        bail!(
+            "{} is neither a course checkout (with exercises/ and Cargo.toml) nor a folder of them",
+            dir.display()
+        );
+    }
+    let graded = grade_class(official, &submissions, options, out_for)?;
+    let mut rows = Vec::new();
+    let mut not_graded = Vec::new();
+    for (name, out, result) in graded {
+        let report = match result {
+            Ok(report) => report,
+            Err(error) => {
+                not_graded.push(format!("{}: {error:#}", table::shown(&name)));
+                continue;
+            }
+        };
+        rows.push(GradebookRow::new(name, &report, &out));
+    }
+    let csv = gradebook_csv(&rows);
+    let json = serde_json::to_string_pretty(&rows).context("cannot serialise the gradebook")?;
+    for (file, contents) in [("gradebook.csv", csv), ("gradebook.json", json)] {
+        let path = options.out.join(file);
+        fs::write(&path, contents).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    println!();
+    println!(
+        "gradebook of {} submission(s): {} (also gradebook.json)",
+        rows.len(),
+        options.out.join("gradebook.csv").display()
+    );
+    let flagged: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.flagged)
+        .map(|r| r.submission.as_str())
+        .collect();
+    if !flagged.is_empty() {
+        println!(
+            "flagged (grading files changed): {}",
+            table::shown(&flagged.join(", "))
+        );
+    }
+    if !not_graded.is_empty() {
+        bail!(
+            "{} submission(s) could not be graded and are not in the gradebook:\n{}",
+            not_graded.len(),
+            not_graded.join("\n")
+        );
+    }
+    Ok(())
+}
+
+/// A relative path with `/` separators, for messages.
+fn slashed(path: &Path) -> String {
+    path.components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect::<Vec<_>>()
+        .join("/")
+}

@@ -1,0 +1,392 @@
+//! The one runner of student code: every process that compiles or runs
+//! it — the build of a stage, each test, the listing of a test
+//! executable, the report's pipeline pictures — starts here, with the
+//! same file system, environment, limits and cleanup.
+//!
+//! **An allowlist, not a blocklist.** Inside the bubblewrap sandbox a
+//! process sees only what is bound for it:
+//!
+//! ```text
+//! /usr /bin /lib* /etc/{ld.so.*,alternatives,vulkan,...}  read-only   the system's programs and libraries
+//! <toolchain sysroot>, <CARGO_HOME>/{registry,git}        read-only   builds only: rustc, cargo, the sources of the dependencies
+//! the course's files (no target/, .git/, reference/)      read-only   the stage, or the checkout graded in place
+//! the test executable                                     read-only   tests only
+//! the build folder | the scratch, pictures, snapshots     writable    builds | tests
+//! /tmp                                                    writable    a tmpfs of its own, size-limited
+//! /dev (null, zero, random ...; the GPU's for GPU topics), /proc of its own for builds, none for tests
+//! ```
+//!
+//! Not `/`, not `$HOME`, not the course checkout's history or solutions,
+//! not another checkout. The environment is an allowlist too
+//! ([`Environment`]): nothing of the grader's reaches student code unless
+//! named here. Every process runs under a seccomp filter (built with
+//! [`seccompiler`]) that denies the system calls with which one process
+//! reads or changes another's memory (`ptrace`, `process_vm_readv`,
+//! `process_vm_writev` and their kin): the test that holds a verdict
+//! token cannot be read by the processes it starts. The sandbox has its
+//! own process, network, IPC and user namespaces, no capabilities and no
+//! terminal.
+//!
+//! **Limits.** Each process has the wall-clock limit, an address-space
+//! limit per process, a file-size limit, no core files; where the machine
+//! lets the grader make a memory and a pids cgroup (Linux, as root: CI,
+//! Gradescope), the memory of all its processes together and their count
+//! are limited as well. What the processes write into their writable
+//! folders is measured while they run and stops them past
+//! [`Limits::written_mib`]; `/tmp` is a tmpfs of that size.
+//!
+//! **Cleanup.** The process leads a process group of its own; when it ends
+//! or is stopped, the group, the sandbox's process namespace and the
+//! cgroup are killed, so nothing it started outlives it. Ctrl-C reaches
+//! the grader alone, whose handler ([`stop_all_on_interrupt`]) kills every
+//! running job before it exits.
+//!
+//! Where bubblewrap cannot run (macOS, Windows, a container that forbids
+//! namespaces) the same runner runs the process unsandboxed, with the
+//! scrubbed environment, the limits the platform has, and the process
+//! group killed at the end; every report then says `unsandboxed`.
+
+use std::collections::BTreeSet;
+use std::ffi::OsString;
+use std::fs::{self, File};
+use std::path::{Path, PathBuf};
+use std::process::Stdio;
+use std::sync::{Mutex, Once, OnceLock};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result};
+
+use crate::files::bytes_under;
+use crate::grade::report::Exit;
+
+mod cgroup;
+mod command;
+mod environment;
+mod platform;
+
+use cgroup::Cgroup;
+pub use environment::{Environment, Toolchain};
+use platform::{contain, kill, kill_group, seccomp_filter, signal};
+
+/// How often a running job is checked on.
+const POLL_INTERVAL: Duration = Duration::from_millis(10);
+/// The signal that ends a process writing a file past `ulimit -f`
+/// (Linux's and macOS's number).
+const SIGXFSZ: i32 = 25;
+/// How often the bytes in a job's writable folders are counted.
+const WRITTEN_INTERVAL: Duration = Duration::from_millis(250);
+/// Shells and bwrap report death by signal `n` as exit code `128 + n`.
+const SIGNAL_EXIT_BASE: i32 = 128;
+/// The exit code after an interrupt (128 + SIGINT, as shells report it).
+const INTERRUPTED_EXIT_CODE: i32 = SIGNAL_EXIT_BASE + 2;
+
+/// The process groups of the jobs running now.
+static RUNNING: Mutex<BTreeSet<u32>> = Mutex::new(BTreeSet::new());
+
+/// Makes Ctrl-C (and SIGTERM) kill every running job's process group
+/// before the grader exits; once per process, later calls do nothing.
+pub fn stop_all_on_interrupt() {
+    static INSTALL: Once = Once::new();
+    INSTALL.call_once(|| {
+        let installed = ctrlc::set_handler(|| {
+            let groups = RUNNING.lock().map(|g| g.clone()).unwrap_or_default();
+            for pgid in groups {
+                kill_group(pgid);
+            }
+            eprintln!("\ninterrupted: the running tests were stopped");
+            std::process::exit(INTERRUPTED_EXIT_CODE);
+        });
+        if let Err(error) = installed {
+            eprintln!("warning: Ctrl-C will not stop running tests: {error}");
+        }
+    });
+}
+
+/// What a job may use.
+#[derive(Debug, Clone)]
+pub struct Limits {
+    /// Wall-clock time.
+    pub time: Duration,
+    /// Memory of all the job's processes together, in MiB (a cgroup, where
+    /// the machine allows one); also each process's address space.
+    pub memory_mib: u64,
+    /// Processes (and threads) at once (a cgroup, where the machine allows one).
+    pub processes: u64,
+    /// Bytes in all its writable folders and its `/tmp` together, in MiB.
+    pub written_mib: u64,
+    /// Bytes of output (stdout and stderr) before it is stopped.
+    pub output: u64,
+    /// CPU seconds each process may take; 0: no limit but the time.
+    pub cpu_s: u64,
+}
+
+impl Limits {
+    /// The limits of one test: `time`, `memory_mib` (0: the default of
+    /// 4 GiB), 256 processes, 1 GiB written, 64 MiB printed.
+    #[must_use]
+    pub fn test(time: Duration, memory_mib: u64) -> Self {
+        Self {
+            time,
+            memory_mib: if memory_mib == 0 { 4096 } else { memory_mib },
+            processes: 256,
+            written_mib: 1024,
+            output: 64 << 20,
+            cpu_s: 0,
+        }
+    }
+
+    /// The limits of a build of student code: `time`, 8 GiB of memory
+    /// (rustc on the whole course needs about 2), as many processes as a
+    /// parallel build starts, its build folder's growth unmeasured (it is
+    /// the dependencies' too) and 64 MiB of compiler messages.
+    #[must_use]
+    pub fn build(time: Duration) -> Self {
+        Self {
+            time,
+            memory_mib: 8192,
+            processes: 1024,
+            written_mib: 0,
+            output: 64 << 20,
+            cpu_s: 0,
+        }
+    }
+}
+
+/// What a job is: it decides what of the toolchain and `/proc` it sees.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Purpose {
+    /// cargo compiling student code: the toolchain and the registry, its
+    /// own `/proc` (rustc finds itself through it).
+    Build,
+    /// A test executable or the viewer: no toolchain, no `/proc`.
+    Run,
+}
+
+/// One process to run, and everything it may see.
+#[derive(Debug, Clone)]
+pub struct Job {
+    /// Build or run.
+    pub purpose: Purpose,
+    /// The program (an absolute path; for a build, cargo is found by the
+    /// runner).
+    pub program: PathBuf,
+    /// Its arguments.
+    pub args: Vec<OsString>,
+    /// The folder it starts in (shown read-only unless under a writable one).
+    pub cwd: PathBuf,
+    /// The course it works on: its files are shown read-only (see
+    /// [`course_entries`](command::course_entries)).
+    pub course: PathBuf,
+    /// Further files and folders shown read-only (the test executable).
+    pub read_only: Vec<PathBuf>,
+    /// Folders it may write (created first).
+    pub writable: Vec<PathBuf>,
+    /// Folders shown empty although they lie under a writable one (a
+    /// checkout's reports and stage under its build folder).
+    pub emptied: Vec<PathBuf>,
+    /// Its environment, beyond [`Environment::base`].
+    pub env: Vec<(OsString, OsString)>,
+    /// The GPU's device files are shown (GPU topics).
+    pub gpu: bool,
+    /// Its limits.
+    pub limits: Limits,
+    /// Where stdout goes.
+    pub stdout: PathBuf,
+    /// Where stderr goes; `None`: into the same file as stdout, in order.
+    pub stderr: Option<PathBuf>,
+}
+
+/// How a job ended.
+#[derive(Debug, Clone)]
+pub struct Ended {
+    /// Its exit, and which limit stopped it.
+    pub exit: Exit,
+    /// Wall-clock time it ran.
+    pub duration: Duration,
+}
+
+impl Ended {
+    /// It exited with status 0, stopped by no limit.
+    #[must_use]
+    pub fn success(&self) -> bool {
+        self.exit.code == Some(0) && !self.exit.stopped()
+    }
+}
+
+/// What held in a grading run beyond the sandbox itself.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Containment {
+    /// Every sandboxed process ran under the seccomp filter (wherever the
+    /// sandbox runs on x86-64 or AArch64).
+    pub seccomp: bool,
+    /// The memory and the processes of all of a test's processes together
+    /// were limited (a cgroup: Linux, as root).
+    pub aggregate_limits: bool,
+}
+
+/// The sandbox of a grading run: bubblewrap where it runs, the seccomp
+/// filter, the toolchain. Made once ([`Jail::get`]).
+#[derive(Debug)]
+pub struct Jail {
+    /// `bwrap`, where it runs.
+    pub bwrap: Option<PathBuf>,
+    /// The compiled seccomp filter (raw `struct sock_filter`s), where one
+    /// can be built for this machine's architecture.
+    seccomp: Option<PathBuf>,
+    /// cgroups can be made here (see [`Cgroup`]).
+    cgroups: bool,
+    /// The toolchain, where one was found (builds need it).
+    toolchain: Option<Toolchain>,
+}
+
+impl Jail {
+    /// The sandbox of this run: found (and bubblewrap installed, see
+    /// `setup::sandbox`) on first use.
+    pub fn get() -> &'static Jail {
+        static JAIL: OnceLock<Jail> = OnceLock::new();
+        JAIL.get_or_init(|| {
+            let bwrap = crate::setup::sandbox();
+            let seccomp = bwrap.as_ref().and_then(|_| match seccomp_filter() {
+                Ok(path) => Some(path),
+                Err(error) => {
+                    eprintln!(
+                        "warning: no seccomp filter ({error:#}): a test's child could read its memory"
+                    );
+                    None
+                }
+            });
+            Jail {
+                bwrap,
+                seccomp,
+                cgroups: Cgroup::available(),
+                toolchain: Toolchain::find().ok(),
+            }
+        })
+    }
+
+    /// Whether jobs run in bubblewrap.
+    #[must_use]
+    pub fn sandboxed(&self) -> bool {
+        self.bwrap.is_some()
+    }
+
+    /// What held beyond the sandbox itself, for the reports.
+    #[must_use]
+    pub fn containment(&self) -> Containment {
+        Containment {
+            seccomp: self.seccomp.is_some() && self.sandboxed(),
+            aggregate_limits: self.cgroups,
+        }
+    }
+
+    /// The toolchain builds use.
+    pub fn toolchain(&self) -> Result<&Toolchain> {
+        self.toolchain
+            .as_ref()
+            .context("cannot find the Rust toolchain (rustc --print sysroot)")
+    }
+
+    /// Runs `job` to its end or its limit.
+    pub fn run(&self, job: &Job) -> Result<Ended> {
+        for dir in &job.writable {
+            fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        }
+        let stdout = create_log(&job.stdout)?;
+        let stderr = match &job.stderr {
+            Some(path) => create_log(path)?,
+            // Both streams share one file description, so they interleave in order.
+            None => stdout.try_clone().context("cannot share the log file")?,
+        };
+        let cgroup = if self.cgroups {
+            Cgroup::new(&job.limits).ok()
+        } else {
+            None
+        };
+        let mut command = self.command(job, cgroup.as_ref())?;
+        command.stdin(Stdio::null()).stdout(stdout).stderr(stderr);
+        let started = Instant::now();
+        let mut child = command
+            .spawn()
+            .with_context(|| format!("cannot start {}", job.program.display()))?;
+        // Windows: the process and all it starts are one job object,
+        // killed when the job is dropped below.
+        let _job_object = contain(&child);
+        if let Ok(mut running) = RUNNING.lock() {
+            running.insert(child.id());
+        }
+        let mut exit = Exit::default();
+        let mut counted = Instant::now();
+        let logs: Vec<&Path> = std::iter::once(job.stdout.as_path())
+            .chain(job.stderr.as_deref())
+            .collect();
+        let status = loop {
+            if let Some(status) = child.try_wait().context("cannot wait for a job")? {
+                break status;
+            }
+            if started.elapsed() >= job.limits.time {
+                exit.timed_out = true;
+                break kill(&mut child)?;
+            }
+            let printed: u64 = logs
+                .iter()
+                .map(|log| fs::metadata(log).map_or(0, |m| m.len()))
+                .sum();
+            if printed > job.limits.output {
+                exit.output_limit = Some(job.limits.output);
+                break kill(&mut child)?;
+            }
+            if job.limits.written_mib > 0 && counted.elapsed() >= WRITTEN_INTERVAL {
+                counted = Instant::now();
+                let written = job
+                    .writable
+                    .iter()
+                    .map(|d| bytes_under(d))
+                    .sum::<Option<u64>>();
+                if written.is_none_or(|bytes| bytes > job.limits.written_mib << 20) {
+                    exit.written_limit = Some(job.limits.written_mib);
+                    break kill(&mut child)?;
+                }
+            }
+            std::thread::sleep(POLL_INTERVAL);
+        };
+        let duration = started.elapsed();
+        kill_group(child.id());
+        #[cfg(windows)]
+        drop(_job_object);
+        if let Some(cgroup) = &cgroup {
+            if cgroup.out_of_memory() {
+                exit.memory_limit = Some(job.limits.memory_mib);
+            }
+            cgroup.kill_all();
+        }
+        drop(cgroup);
+        if let Ok(mut running) = RUNNING.lock() {
+            running.remove(&child.id());
+        }
+        exit.code = status.code();
+        exit.signal = signal(&status);
+        if let Some(code) = exit
+            .code
+            .filter(|c| (SIGNAL_EXIT_BASE + 1..SIGNAL_EXIT_BASE + 65).contains(c))
+            .filter(|_| self.sandboxed())
+        {
+            // bwrap reports a process killed by signal n as exit code 128 + n.
+            exit.code = None;
+            exit.signal = Some(code - SIGNAL_EXIT_BASE);
+        }
+        // A file past the size limit (`ulimit -f`) ends its writer with
+        // SIGXFSZ before the count of the written bytes sees it.
+        if exit.signal == Some(SIGXFSZ) && job.limits.written_mib > 0 {
+            exit.written_limit = Some(job.limits.written_mib);
+        }
+        Ok(Ended { exit, duration })
+    }
+}
+
+fn create_log(path: &Path) -> Result<File> {
+    if let Some(parent) = path.parent() {
+        fs::create_dir_all(parent)
+            .with_context(|| format!("cannot create {}", parent.display()))?;
+    }
+    File::create(path).with_context(|| format!("cannot create the log {}", path.display()))
+}
