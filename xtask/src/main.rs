@@ -45,6 +45,11 @@ struct Cli {
 enum Command {
     /// Grade the exercises: points per task, the first failing case, a diff.
     Grade(GradeArgs),
+    /// A class's gradebook: `merge` joins the --out folders of a class graded in shards.
+    Gradebook {
+        #[command(subcommand)]
+        action: GradebookAction,
+    },
     /// Grade a topic, and again whenever one of its files changes: one screen each time.
     Watch {
         /// The topic (as for `grade`) [default: the first with a `todo!()` left].
@@ -164,6 +169,20 @@ enum Command {
     },
 }
 
+#[derive(Subcommand)]
+enum GradebookAction {
+    /// Join the --out folders of a class graded in shards (`grade --submission CLASS --shard
+    /// I/N`) into one: the members' report folders, the gradebook and the class's report.
+    Merge {
+        /// The --out folders of the shards.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        /// Where the class's grade goes.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
+}
+
 #[derive(Args)]
 struct GradeArgs {
     /// Topics to grade: folder (`01-lines`), its name (`lines`), package or number; default all.
@@ -189,6 +208,10 @@ struct GradeArgs {
     /// that submission, and a class goes on with the next [default: 2700].
     #[arg(long, value_name = "SECONDS")]
     build_time_limit: Option<u64>,
+    /// Of a class, grade only the I-th of N parts (a member is always in the same part),
+    /// e.g. on N machines; `cargo xtask gradebook merge` joins their --out folders.
+    #[arg(long, value_name = "I/N", value_parser = grade::submission::Shard::parse)]
+    shard: Option<grade::submission::Shard>,
 }
 
 fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
@@ -210,7 +233,10 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
         Some(_) if args.reference => {
             anyhow::bail!("--reference grades this course's solutions; a submission has none")
         }
-        Some(dir) => grade::submission::run(&root, &dir, &options),
+        Some(dir) => grade::submission::run(&root, &dir, &options, args.shard),
+        None if args.shard.is_some() => {
+            anyhow::bail!("--shard splits a class: give the class's folder with --submission")
+        }
         None => grade::run(&options).map(drop),
     }
 }
@@ -244,6 +270,9 @@ fn main() -> ExitCode {
             list,
         } => review::run(&root, out.as_deref(), submission.as_deref(), list),
         Command::Hint { task, all, reset } => hint::run(&root, &task, all, reset),
+        Command::Gradebook {
+            action: GradebookAction::Merge { parts, out },
+        } => grade::submission::merge(&parts, &out),
         Command::Gradescope { dir, topics } => gradescope::run(&root, &dir, &topics),
         Command::Release {
             dir,

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::{Context, Result};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::build::Builder;
 use crate::sandbox::{Jail, Job, Limits, Purpose};
@@ -134,7 +134,7 @@ const SIZE: &str = "200";
 pub const EXPECTED_DIR: &str = "xtask/viewer/expected";
 
 /// One picture of the section.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PipelinePicture {
     /// Its file name (`star-wireframe.png`).
     pub file: String,

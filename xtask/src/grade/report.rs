@@ -18,7 +18,7 @@ use std::path::PathBuf;
 
 use std::fmt::Write as _;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 pub use super::outcome::Exit;
 pub use super::submission::Integrity;
@@ -28,7 +28,7 @@ pub use crate::sandbox::Containment;
 pub const SCHEMA: u32 = 1;
 
 /// Which edition of the code was graded.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Edition {
     /// `exercises/*/src`: the student's code.
@@ -38,7 +38,7 @@ pub enum Edition {
 }
 
 /// Everything one `cargo xtask grade` found.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
     /// [`SCHEMA`].
     pub schema: u32,
@@ -69,7 +69,7 @@ pub struct Report {
     pub topics: Vec<TopicReport>,
     /// The shipped meshes drawn by the graded stages (see `pipeline`);
     /// empty when no topic of the viewer was graded.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub pipeline: Vec<super::pipeline::PipelinePicture>,
 }
 
@@ -86,7 +86,7 @@ impl Report {
 }
 
 /// One topic (exercise crate).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct TopicReport {
     /// Folder name, e.g. `01-lines`.
     pub name: String,
@@ -137,7 +137,7 @@ impl TopicReport {
 }
 
 /// How a task did.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TaskStatus {
     /// Every test passed.
@@ -151,7 +151,7 @@ pub enum TaskStatus {
 }
 
 /// One task of a topic.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct TaskReport {
     /// Task id (= test binary name).
     pub id: String,
@@ -180,7 +180,7 @@ pub struct TaskReport {
 }
 
 /// How a test did.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TestStatus {
     /// Exit status 0 and the run's token (see [`super::outcome::judge`]).
@@ -192,7 +192,7 @@ pub enum TestStatus {
 }
 
 /// One test, run in its own process.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct TestReport {
     /// Full test name (`octants::steep_line`).
     pub name: String,

@@ -214,7 +214,7 @@ impl Ended {
 }
 
 /// What held in a grading run beyond the sandbox itself.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Containment {
     /// Every sandboxed process ran under the seccomp filter (wherever the
     /// sandbox runs on x86-64 or AArch64).

@@ -11,7 +11,7 @@ use anyhow::{Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::report::Report;
-use super::{GradeOptions, Permits, Slot, grade_one, submissions_build, table, table_of};
+use super::{GradeOptions, Permits, Slot, grade_one, one_line, submissions_build, table};
 use crate::stage;
 
 /// A graded member of a class: its name, its report folder and its report
@@ -19,8 +19,8 @@ use crate::stage;
 type Graded = (String, PathBuf, Result<Report>);
 
 /// Grades the `submissions` of a class, up to `options.jobs` side by side
-/// in class slots (one at a time without a sandbox), printing each one's
-/// table as it is done; (name, report folder, report) of each, in the
+/// in class slots (one at a time without a sandbox), printing one line for
+/// each as it is done (the details are in its report); (name, report folder, report) of each, in the
 /// order given.
 pub(super) fn grade_class(
     official: &Path,
@@ -28,6 +28,9 @@ pub(super) fn grade_class(
     options: &GradeOptions,
     out_for: impl Fn(&Path) -> (String, GradeOptions) + Sync,
 ) -> Result<Vec<Graded>> {
+    if submissions.is_empty() {
+        return Ok(Vec::new());
+    }
     let sandboxed = crate::sandbox::Jail::get().sandboxed();
     // Side by side, a submission's tests run while another builds. A grade
     // keeps two CPUs busy on its own (cargo's build, `--jobs` tests): on a
@@ -105,12 +108,20 @@ pub(super) fn grade_class(
                     let result = grade_one(official, submission, &one, Some(&slot));
                     let n = done.fetch_add(1, Ordering::Relaxed) + 1;
                     let shown = match &result {
-                        Ok(report) => table_of(report, &one.out),
-                        Err(error) => format!("error: {error:#}\n"),
+                        Ok(report) => one_line(report, &one.out),
+                        Err(error) => {
+                            format!(
+                                "not graded: {}",
+                                format!("{error:#}").lines().next().unwrap_or_default()
+                            )
+                        }
                     };
                     bar.suspend(|| {
-                        println!("==> [{n}/{}] {}", submissions.len(), table::shown(&name));
-                        print!("{shown}");
+                        println!(
+                            "[{n}/{}] {}: {shown}",
+                            submissions.len(),
+                            table::shown(&name)
+                        );
                     });
                     bar.inc(1);
                     results.lock().expect("no slot panics")[i] = Some((name, one.out, result));

@@ -1,15 +1,30 @@
 //! The gradebook of a class: one row per submission, as CSV and JSON.
+//!
+//! Each member's row is kept in its report folder (`<out>/<member>/`
+//! [`ROW_FILE`], or [`NOT_GRADED_FILE`] with why it could not be graded),
+//! and the gradebook is made from the folders that `<out>` holds. So a
+//! member graded again updates the class's gradebook, a class graded in
+//! shards on several machines is joined by copying the members' folders
+//! into one (`cargo xtask gradebook merge`), and either gives the
+//! gradebook a single run gives.
 
 use std::fmt::Write as _;
+use std::fs;
 use std::path::{Path, PathBuf};
 
-use serde::Serialize;
+use anyhow::{Context, Result, bail};
+use serde::{Deserialize, Serialize};
 
 use super::Integrity;
 use super::report::{self, Report};
 
+/// A member's row, in its report folder.
+pub const ROW_FILE: &str = "gradebook-row.json";
+/// Why a member could not be graded, in its report folder.
+pub const NOT_GRADED_FILE: &str = "not-graded.txt";
+
 /// One row of the gradebook.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub(super) struct GradebookRow {
     pub(super) submission: String,
     /// Points of the tasks that are not bonuses.
@@ -26,14 +41,14 @@ pub(super) struct GradebookRow {
     tasks: Vec<(String, f64)>,
     /// The topics that could not be graded, each with why.
     not_graded: Vec<String>,
-    report: PathBuf,
+    /// The member's report, relative to the class's folder.
+    report: String,
 }
 
 impl GradebookRow {
-    pub(super) fn new(submission: String, report: &Report, out: &Path) -> Self {
+    pub(super) fn new(submission: String, report: &Report) -> Self {
         let integrity = report.integrity.as_ref();
         Self {
-            submission,
             score: report::round2(report.topics.iter().map(|t| t.base_score()).sum()),
             max_score: report.max_score,
             bonus: report::round2(report.topics.iter().map(|t| t.bonus().0).sum()),
@@ -66,9 +81,148 @@ impl GradebookRow {
                     Some(format!("{}: {why}", t.name))
                 })
                 .collect(),
-            report: out.join("report.html"),
+            report: format!("{submission}/report.html"),
+            submission,
         }
     }
+
+    /// Keeps the row in the member's report folder `out`.
+    pub(super) fn save(&self, out: &Path) -> Result<()> {
+        let _ = fs::remove_file(out.join(NOT_GRADED_FILE));
+        let path = out.join(ROW_FILE);
+        let json =
+            serde_json::to_string_pretty(self).context("cannot serialise a gradebook row")?;
+        fs::write(&path, json).with_context(|| format!("cannot write {}", path.display()))
+    }
+}
+
+/// Keeps why the member of report folder `out` could not be graded.
+pub(super) fn save_not_graded(out: &Path, why: &str) -> Result<()> {
+    fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    let _ = fs::remove_file(out.join(ROW_FILE));
+    let path = out.join(NOT_GRADED_FILE);
+    fs::write(&path, why).with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// The members a class folder holds: their rows, and (name, why) of those
+/// that could not be graded, both by name.
+pub(super) struct Class {
+    pub(super) rows: Vec<GradebookRow>,
+    pub(super) not_graded: Vec<(String, String)>,
+}
+
+impl Class {
+    /// Reads the members' folders of the class folder `out`.
+    pub(super) fn read(out: &Path) -> Result<Self> {
+        let mut class = Self {
+            rows: Vec::new(),
+            not_graded: Vec::new(),
+        };
+        for member in member_folders(out)? {
+            let name = member
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            let row_path = member.join(ROW_FILE);
+            if row_path.is_file() {
+                let text = fs::read_to_string(&row_path)
+                    .with_context(|| format!("cannot read {}", row_path.display()))?;
+                let row: GradebookRow = serde_json::from_str(&text)
+                    .with_context(|| format!("cannot read {}", row_path.display()))?;
+                class.rows.push(row);
+            } else if let Ok(why) = fs::read_to_string(member.join(NOT_GRADED_FILE)) {
+                class.not_graded.push((name, why));
+            }
+        }
+        Ok(class)
+    }
+
+    /// Writes `gradebook.csv` and `gradebook.json` into `out`.
+    pub(super) fn write(&self, out: &Path) -> Result<()> {
+        let csv = gradebook_csv(&self.rows);
+        let json =
+            serde_json::to_string_pretty(&self.rows).context("cannot serialise the gradebook")?;
+        for (file, contents) in [("gradebook.csv", csv), ("gradebook.json", json)] {
+            let path = out.join(file);
+            fs::write(&path, contents)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+        }
+        Ok(())
+    }
+}
+
+/// The folders of `out` that hold a member (a row or why it has none),
+/// sorted by name.
+fn member_folders(out: &Path) -> Result<Vec<PathBuf>> {
+    let mut found = Vec::new();
+    for entry in fs::read_dir(out).with_context(|| format!("cannot read {}", out.display()))? {
+        let path = entry
+            .with_context(|| format!("cannot read {}", out.display()))?
+            .path();
+        if path.join(ROW_FILE).is_file() || path.join(NOT_GRADED_FILE).is_file() {
+            found.push(path);
+        }
+    }
+    found.sort();
+    Ok(found)
+}
+
+/// `cargo xtask gradebook merge PARTS... --out DIR`: the members' folders
+/// of the parts (the `--out` folders of a class graded in shards) copied
+/// into `out`, and the class's gradebook made from them.
+pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
+    fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    let mut seen: Vec<(String, PathBuf)> = Vec::new();
+    for part in parts {
+        let members = member_folders(part)?;
+        if members.is_empty() {
+            bail!(
+                "{} holds no graded member (a folder with {ROW_FILE} or {NOT_GRADED_FILE}): is it the --out of a class's grade?",
+                part.display()
+            );
+        }
+        for member in members {
+            let name = member
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            if let Some((_, other)) = seen.iter().find(|(n, _)| *n == name) {
+                bail!(
+                    "{name} is in two parts, {} and {}: each member belongs to one shard",
+                    other.display(),
+                    part.display()
+                );
+            }
+            let to = out.join(&name);
+            if to != member {
+                if to.exists() {
+                    fs::remove_dir_all(&to)
+                        .with_context(|| format!("cannot replace {}", to.display()))?;
+                }
+                copy_tree(&member, &to)?;
+            }
+            seen.push((name, part.clone()));
+        }
+    }
+    let class = Class::read(out)?;
+    class.write(out)?;
+    Ok(class)
+}
+
+/// Copies the folder `from` to `to`, files and folders (links are not
+/// followed: a report folder holds none).
+fn copy_tree(from: &Path, to: &Path) -> Result<()> {
+    fs::create_dir_all(to).with_context(|| format!("cannot create {}", to.display()))?;
+    for file in crate::files::files_under(from)? {
+        let target = to.join(&file);
+        if let Some(parent) = target.parent() {
+            fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        fs::copy(from.join(&file), &target)
+            .with_context(|| format!("cannot copy {}", from.join(&file).display()))?;
+    }
+    Ok(())
 }
 
 /// The gradebook as CSV: one row per submission; columns by name (a
@@ -151,7 +305,7 @@ mod tests {
             topics: topics.iter().map(|(n, s)| ((*n).to_owned(), *s)).collect(),
             tasks: tasks.iter().map(|(n, s)| ((*n).to_owned(), *s)).collect(),
             not_graded: Vec::new(),
-            report: PathBuf::new(),
+            report: format!("{name}/report.html"),
         };
         let mut lacking = row("ben", &[("02-b", 1.0)], &[("02-b/y", 1.0)]);
         lacking.not_graded = vec!["01-a: the submission has no exercises/01-a".to_owned()];

@@ -7,7 +7,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::Result;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::slashed;
 use crate::files::files_under;
@@ -17,7 +17,7 @@ use crate::topics::{self, Topic};
 
 /// What differs between a submission and the official course, in the
 /// files that take part in grading (paths relative to the course root).
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Integrity {
     /// The official course the submission was compared with.
     pub official: PathBuf,

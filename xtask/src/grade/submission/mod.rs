@@ -30,7 +30,11 @@
 //! would make them anyway); while one submission builds, the others run
 //! their tests, from hard links of their executables in their slot, with
 //! at most `--jobs` tests running at once in all. `<out>/gradebook.csv`
-//! and `gradebook.json` list the scores.
+//! and `gradebook.json` list the scores (see `gradebook`: each member's row
+//! is kept in its folder, so a member graded again updates them, and
+//! shards of a class graded on several machines merge). A class graded
+//! again keeps the members whose grade was made from the same files (see
+//! `resume`), so an interrupted class goes on where it stopped.
 //!
 //! A test sees its own stage and executables and nothing else of the
 //! course's build output: not the other slots (a classmate's code), the
@@ -53,12 +57,14 @@ use crate::topics;
 mod class;
 mod gradebook;
 mod integrity;
+mod resume;
 mod tampering;
 
 use class::grade_class;
-use gradebook::{GradebookRow, gradebook_csv};
+use gradebook::{Class, GradebookRow};
 use integrity::is_grading_file;
 pub use integrity::{Integrity, check};
+pub use resume::Shard;
 use tampering::{contents_of, tampered, zero_for_tampering};
 
 /// Whether `dir` looks like a course checkout.
@@ -238,6 +244,38 @@ fn table_of(report: &Report, out: &Path) -> String {
     )
 }
 
+/// A graded member in one line: its points, bonus, flag, the topics that
+/// did not compile, and where its report is.
+fn one_line(report: &Report, out: &Path) -> String {
+    let base: f64 = report.topics.iter().map(|t| t.base_score()).sum();
+    let bonus: f64 = report.topics.iter().map(|t| t.bonus().0).sum();
+    let mut line = format!(
+        "{} / {} points",
+        report::points(report::round2(base)),
+        report::points(report.max_score)
+    );
+    if bonus > 0.0 {
+        line.push_str(&format!(
+            " (+{} bonus)",
+            report::points(report::round2(bonus))
+        ));
+    }
+    let broken: Vec<&str> = report
+        .topics
+        .iter()
+        .filter(|t| t.compile_error.is_some())
+        .map(|t| t.name.as_str())
+        .collect();
+    if !broken.is_empty() {
+        line.push_str(&format!(" · does not compile: {}", broken.join(", ")));
+    }
+    if report.integrity.as_ref().is_some_and(Integrity::flagged) {
+        line.push_str(" · FLAGGED: grading files changed");
+    }
+    line.push_str(&format!(" · {}", out.join("report.html").display()));
+    line
+}
+
 /// The build cache of submissions: never the one the solutions are built
 /// in, so that nothing a submission's build can read was compiled from
 /// them.
@@ -271,24 +309,42 @@ fn refuse(report: &mut Report, name: &str, uses: &[String]) {
     report.complete = false;
 }
 
-/// `--submission DIR`: one checkout, or a folder of checkouts (a class).
-pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
+/// `--submission DIR`: one checkout, or a folder of checkouts (a class);
+/// of a class only the members of `shard`, where one is given.
+pub fn run(
+    official: &Path,
+    dir: &Path,
+    options: &GradeOptions,
+    shard: Option<Shard>,
+) -> Result<()> {
     let dir = dir
         .canonicalize()
         .with_context(|| format!("cannot find the submission {}", dir.display()))?;
     let out_for = |submission: &Path| {
-        let name = submission.file_name().map_or_else(
-            || "submission".to_owned(),
-            |n| n.to_string_lossy().into_owned(),
-        );
         let mut one = options.clone();
-        one.out = options.out.join(&name);
-        (name, one)
+        one.out = options.out.join(member_name(submission));
+        (member_name(submission), one)
     };
     if is_checkout(&dir) {
-        let (_, one) = out_for(&dir);
+        let (name, one) = out_for(&dir);
         let report = grade_one(official, &dir, &one, None)?;
         print!("{}", table_of(&report, &one.out));
+        // A member graded again into its class's folder: its row there,
+        // and the class's gradebook, follow.
+        if options.out.join("gradebook.json").is_file() {
+            GradebookRow::new(name, &report).save(&one.out)?;
+            resume::save(
+                &one.out,
+                &resume::fingerprint(resume::tree_hash(official)?, &dir)?,
+            )?;
+            let class = Class::read(&options.out)?;
+            class.write(&options.out)?;
+            println!(
+                "the gradebook of {} member(s) in {} now holds this grade",
+                class.rows.len(),
+                options.out.display()
+            );
+        }
         return Ok(());
     }
     let mut submissions: Vec<PathBuf> = fs::read_dir(&dir)
@@ -303,32 +359,69 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
             dir.display()
         );
     }
-    let graded = grade_class(official, &submissions, options, out_for)?;
-    let mut rows = Vec::new();
-    let mut not_graded = Vec::new();
-    for (name, out, result) in graded {
-        let report = match result {
-            Ok(report) => report,
-            Err(error) => {
-                not_graded.push(format!("{}: {error:#}", table::shown(&name)));
-                continue;
+    let whole = submissions.len();
+    if let Some(shard) = shard {
+        submissions.retain(|s| shard.holds(&member_name(s)));
+        println!(
+            "shard {}/{}: {} of the class's {whole} member(s)",
+            shard.index,
+            shard.count,
+            submissions.len()
+        );
+    }
+    // Members graded before from the same files keep their grade.
+    let course = resume::tree_hash(official)?;
+    let mut to_grade = Vec::new();
+    let mut fingerprints = Vec::new();
+    for submission in &submissions {
+        let fingerprint = resume::fingerprint(course, submission)?;
+        if !resume::is_current(&out_for(submission).1.out, &fingerprint) {
+            to_grade.push(submission.clone());
+            fingerprints.push(fingerprint);
+        }
+    }
+    if to_grade.len() < submissions.len() {
+        println!(
+            "{} of {} member(s) were graded before from the same files: kept (their report folders in {})",
+            submissions.len() - to_grade.len(),
+            submissions.len(),
+            options.out.display()
+        );
+    }
+    fs::create_dir_all(&options.out)
+        .with_context(|| format!("cannot create {}", options.out.display()))?;
+    let graded = grade_class(official, &to_grade, options, out_for)?;
+    for ((name, out, result), fingerprint) in graded.into_iter().zip(&fingerprints) {
+        match result {
+            Ok(report) => {
+                GradebookRow::new(name, &report).save(&out)?;
+                resume::save(&out, fingerprint)?;
             }
-        };
-        rows.push(GradebookRow::new(name, &report, &out));
+            Err(error) => gradebook::save_not_graded(&out, &format!("{error:#}"))?,
+        }
     }
-    let csv = gradebook_csv(&rows);
-    let json = serde_json::to_string_pretty(&rows).context("cannot serialise the gradebook")?;
-    for (file, contents) in [("gradebook.csv", csv), ("gradebook.json", json)] {
-        let path = options.out.join(file);
-        fs::write(&path, contents).with_context(|| format!("cannot write {}", path.display()))?;
-    }
+    let class = Class::read(&options.out)?;
+    class.write(&options.out)?;
+    report_class(&class, &options.out)
+}
+
+/// `cargo xtask gradebook merge PARTS... --out DIR`.
+pub fn merge(parts: &[PathBuf], out: &Path) -> Result<()> {
+    let class = gradebook::merge(parts, out)?;
+    report_class(&class, out)
+}
+
+/// Prints where the gradebook of `class` is, who is flagged, and fails
+/// when a member could not be graded.
+fn report_class(class: &Class, out: &Path) -> Result<()> {
     println!();
     println!(
         "gradebook of {} submission(s): {} (also gradebook.json)",
-        rows.len(),
-        options.out.join("gradebook.csv").display()
+        class.rows.len(),
+        out.join("gradebook.csv").display()
     );
-    let flagged: Vec<&str> = rows
+    let flagged: Vec<&str> = class
+        .rows
         .iter()
         .filter(|r| r.flagged)
         .map(|r| r.submission.as_str())
@@ -339,14 +432,27 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<()> {
             table::shown(&flagged.join(", "))
         );
     }
-    if !not_graded.is_empty() {
+    if !class.not_graded.is_empty() {
+        let lines: Vec<String> = class
+            .not_graded
+            .iter()
+            .map(|(name, why)| format!("{}: {why}", table::shown(name)))
+            .collect();
         bail!(
             "{} submission(s) could not be graded and are not in the gradebook:\n{}",
-            not_graded.len(),
-            not_graded.join("\n")
+            lines.len(),
+            lines.join("\n")
         );
     }
     Ok(())
+}
+
+/// A member's name: its checkout's folder name.
+fn member_name(submission: &Path) -> String {
+    submission.file_name().map_or_else(
+        || "submission".to_owned(),
+        |n| n.to_string_lossy().into_owned(),
+    )
 }
 
 /// A relative path with `/` separators, for messages.
