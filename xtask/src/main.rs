@@ -6,6 +6,7 @@
 mod bench;
 mod cargo;
 mod class;
+mod class_workflow;
 mod classroom;
 mod figures;
 mod files;

@@ -28,6 +28,7 @@ use anyhow::{Context, Result, bail, ensure};
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
+use crate::class_workflow;
 use crate::classroom::{self, CourseRepo};
 use crate::stage::{self, Files, Source};
 use crate::topics::{self, Topic};
@@ -399,10 +400,16 @@ pub fn write(
         ));
     }
     if let Some(course) = classroom {
-        files.retain(|(to, _)| to != Path::new(classroom::WORKFLOW));
+        files.retain(|(to, _)| {
+            to != Path::new(classroom::WORKFLOW) && to != Path::new(class_workflow::WORKFLOW)
+        });
         files.push((
             PathBuf::from(classroom::WORKFLOW),
             Source::Text(classroom::workflow(course, &topics).into_bytes()),
+        ));
+        files.push((
+            PathBuf::from(class_workflow::WORKFLOW),
+            Source::Text(class_workflow::workflow(course).into_bytes()),
         ));
     }
     files.sort();

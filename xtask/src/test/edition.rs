@@ -171,21 +171,28 @@ pub(super) fn classroom_workflow(home: &Path, edition: &Path, results: &Path) ->
     let file = edition.join(classroom::WORKFLOW);
     let text = fs::read_to_string(&file)
         .with_context(|| format!("the edition has no {}", classroom::WORKFLOW))?;
-    let linted = match setup::actionlint(&home.join("tools"), &file) {
-        Ok(findings) => {
-            ensure!(
+    let mut linted = "actionlint finds nothing";
+    for (file, what) in [
+        (file.clone(), "the Classroom workflow"),
+        (
+            edition.join(crate::class_workflow::WORKFLOW),
+            "the class-grading workflow",
+        ),
+    ] {
+        ensure!(file.is_file(), "the edition has no {}", file.display());
+        match setup::actionlint(&home.join("tools"), &file) {
+            Ok(findings) => ensure!(
                 findings.is_empty(),
-                "actionlint finds fault with the Classroom workflow:\n{}",
+                "actionlint finds fault with {what}:\n{}",
                 findings.join("\n")
-            );
-            "actionlint finds nothing"
+            ),
+            Err(error) if std::env::var_os("CI").is_none() => {
+                println!("note: {what} is not linted: {error:#}");
+                linted = "not linted (no actionlint)";
+            }
+            Err(error) => return Err(error.context(format!("cannot lint {what}"))),
         }
-        Err(error) if std::env::var_os("CI").is_none() => {
-            println!("note: the Classroom workflow is not linted: {error:#}");
-            "not linted (no actionlint)"
-        }
-        Err(error) => return Err(error.context("cannot lint the Classroom workflow")),
-    };
+    }
     let names_step = |id: &str| text.contains(&format!("id: {id}\n"));
     let mut tasks = 0;
     for topic in topics::discover(edition)? {
@@ -213,7 +220,7 @@ pub(super) fn classroom_workflow(home: &Path, edition: &Path, results: &Path) ->
         );
     }
     Ok(format!(
-        "the Classroom workflow reports {tasks} tasks, {} of them written by the grade, {linted}",
+        "the Classroom workflow reports {tasks} tasks, {} of them written by the grade; it and the class-grading workflow: {linted}",
         written.len()
     ))
 }
