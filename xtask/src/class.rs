@@ -100,10 +100,12 @@ fn make(
     let solve = |topic: &str| -> Result<()> {
         let solutions = root.join("reference").join(topic);
         for file in files_under(&solutions)? {
+            let text = fs::read_to_string(solutions.join(&file))
+                .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?;
+            // As a student hands it in: no marker lines.
             crate::files::write_file(
                 &member.join("exercises").join(topic).join(&file),
-                fs::read(solutions.join(&file))
-                    .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?,
+                crate::stubs::without_markers(&text),
             )?;
         }
         Ok(())

@@ -32,6 +32,16 @@ pub(super) fn marker(line: &str) -> Option<Marker<'_>> {
     }
 }
 
+/// A reference file as a student would hand it in: the solutions without
+/// their marker lines.
+#[must_use]
+pub fn without_markers(reference: &str) -> String {
+    reference
+        .split_inclusive('\n')
+        .filter(|line| marker(line).is_none())
+        .collect()
+}
+
 /// rustfmt's default line width.
 pub const RUSTFMT_MAX_WIDTH: usize = 100;
 
@@ -303,6 +313,15 @@ fn helper() {}
         assert_eq!(
             stub(source),
             "pub fn f() {\n        todo!(\"wu: use Wu's algorithm\")\n}\n"
+        );
+    }
+
+    #[test]
+    fn a_handed_in_solution_has_no_markers() {
+        let source = "/// F.\npub fn f() -> u8 {\n    // BEGIN SOLUTION f: one\n    1\n    // END SOLUTION\n}\n// BEGIN SOLUTIONS is text\n";
+        assert_eq!(
+            without_markers(source),
+            "/// F.\npub fn f() -> u8 {\n    1\n}\n// BEGIN SOLUTIONS is text\n"
         );
     }
 

@@ -37,7 +37,7 @@ pub mod stand_ins;
 
 pub use do_nothing::do_nothing;
 use generate::marker;
-pub use generate::{generate, rustfmt_max_width};
+pub use generate::{generate, rustfmt_max_width, without_markers};
 
 /// Opens a solution region; may be followed by `<task>: <instruction>`.
 pub const BEGIN_MARKER: &str = "// BEGIN SOLUTION";
