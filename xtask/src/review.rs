@@ -8,7 +8,9 @@
 //! (`<report>/review/`) and runs `cargo insta review` there: stepping
 //! through the diffs, the tutor accepts (the student's snapshot is right),
 //! rejects (it is wrong) or skips each, and the verdicts are written to
-//! `<report>/review.json`. Accepting changes only that copy: the course's
+//! `<report>/review.json`. A test that failed only on a snapshot the tutor
+//! accepted gets its points back, marked as reviewed, in the member's
+//! reports and in the class's gradebook (see `grade::reviewed`). Accepting changes only that copy: the course's
 //! official snapshots are never touched from a submission. Without a
 //! terminal (or with `--list`) the snapshots and their diffs are printed
 //! instead.
@@ -21,8 +23,12 @@ use std::process::Command;
 use anyhow::{Context, Result, bail, ensure};
 use serde::Serialize;
 
-use crate::grade::PENDING_SNAPSHOTS;
+use crate::grade::report::Report;
+use crate::grade::{self, PENDING_SNAPSHOTS};
 use crate::{setup, stage};
+
+/// The verdict of a snapshot the tutor found right.
+const ACCEPTED: &str = "accepted";
 
 /// The manifest of the review folder: a package of no code, so that
 /// cargo-insta finds the snapshots in it.
@@ -139,7 +145,7 @@ impl Review {
                     official.display(),
                     String::from_utf8_lossy(&output.stderr).trim()
                 );
-                Ok((official, text))
+                Ok((official, plain_diff(&text)))
             })
             .collect()
     }
@@ -172,8 +178,41 @@ impl Review {
             println!("  {:<12} {}", v.verdict, v.snapshot);
         }
         println!("verdicts: {}", path.display());
+        println!("{}", apply_verdicts(&self.graded, &verdicts)?);
         Ok(())
     }
+}
+
+/// Gives the tests whose snapshots were accepted their points back in the
+/// grade in `graded` (see `grade::reviewed`): its reports written again,
+/// and its row in its class's gradebook. What changed, in a line.
+fn apply_verdicts(graded: &Path, verdicts: &[Verdict]) -> Result<String> {
+    let path = graded.join("report.json");
+    let text =
+        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut report: Report =
+        serde_json::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+    let accepted: Vec<String> = verdicts
+        .iter()
+        .filter(|v| v.verdict == ACCEPTED)
+        .map(|v| v.snapshot.clone())
+        .collect();
+    let before = report.score;
+    let passing = grade::reviewed::apply(&mut report, &accepted);
+    grade::export::write_all(&report, graded)?;
+    let class = grade::submission::update_class_row(graded, &report)?;
+    Ok(format!(
+        "{passing} test(s) pass by review: {} → {} of {} points in {}{}",
+        grade::report::points(before),
+        grade::report::points(report.score),
+        grade::report::points(report.max_score),
+        graded.join("report.html").display(),
+        if class {
+            ", and in the class's gradebook"
+        } else {
+            ""
+        }
+    ))
 }
 
 /// `cargo xtask review`.
@@ -206,10 +245,56 @@ pub fn run(root: &Path, out: Option<&Path>, submission: Option<&str>, list: bool
         print!("{diff}");
     }
     println!(
-        "\nin a terminal, `cargo xtask review{}` steps through them: a accepts (the student's is right), r rejects, s skips",
-        submission.map_or(String::new(), |n| format!(" --submission {n}"))
+        "\nin a terminal, `cargo xtask review{}{}` steps through them: a accepts (the student's is right, its tests get their points back), r rejects, s skips",
+        submission.map_or(String::new(), |n| format!(" --submission {n}")),
+        out.map_or(String::new(), |o| format!(" --out {}", o.display()))
     );
     Ok(())
+}
+
+/// cargo-insta's page for one snapshot, as a diff to read in a log: no
+/// terminal control sequences (its closing screen clears the terminal),
+/// none of its own hints (which name its commands and the review folder,
+/// not this one's), only the snapshot, its expression and the diff.
+fn plain_diff(page: &str) -> String {
+    let page = page.split("\x1b[2J").next().unwrap_or(page);
+    let mut plain = String::with_capacity(page.len());
+    let mut chars = page.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\x1b' => {
+                // A CSI sequence: ESC [ parameters final-letter.
+                if chars.peek() == Some(&'[') {
+                    chars.next();
+                    for c in chars.by_ref() {
+                        if c.is_ascii_alphabetic() {
+                            break;
+                        }
+                    }
+                }
+            }
+            '\r' => {}
+            c => plain.push(c),
+        }
+    }
+    let hint = |line: &str| {
+        let line = line.trim_start();
+        [
+            "insta not found",
+            "Package:",
+            "Source:",
+            "To accept:",
+            "To reject:",
+            "To skip:",
+        ]
+        .iter()
+        .any(|prefix| line.starts_with(prefix))
+    };
+    let lines: Vec<&str> = plain.lines().filter(|line| !hint(line)).collect();
+    let mut text = lines.join("\n");
+    text.truncate(text.trim_end().len());
+    text.push('\n');
+    text
 }
 
 /// What the review did with each snapshot, read off the review folder:
@@ -223,7 +308,7 @@ fn verdicts(review: &Path, graded: &Path, pending: &[PathBuf]) -> Result<Vec<Ver
             let verdict = if review.join(file).exists() {
                 "not reviewed"
             } else if snapshot_body(&review.join(&official)) == snapshot_body(&graded.join(file)) {
-                "accepted"
+                ACCEPTED
             } else {
                 "rejected"
             };
@@ -251,6 +336,33 @@ fn snapshot_body(path: &Path) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_listed_diff_holds_no_control_sequences_and_no_hints_of_insta() {
+        let page = "insta not found in cargo metadata; defaulting to 1.0.0\nSnapshot: tests/a.rs (x.snap):\n  Package: snapshot-review@0.0.0\n\nSnapshot file: tests/snapshots/a__x.snap\nSnapshot: x.snap\nSource: /tmp/rv\n────\nExpression: x\n────\n-old snapshot\n+new results\n────┬────\n    1     1 │ ##..\n    2       │-.##.\n          2 │+..##\n────┴────\n\nTo accept: cargo insta accept --snapshot 'tests/snapshots/a__x.snap'\nTo reject: cargo insta reject --snapshot 'tests/snapshots/a__x.snap'\n\n\r\x1b[2J\r\x1b[Hinsta review finished\nskipped:\n  tests/a.rs (x.snap)\n";
+        let plain = plain_diff(page);
+        for gone in [
+            "insta not found",
+            "Package:",
+            "/tmp/rv",
+            "To accept",
+            "finished",
+            "\x1b",
+            "\r",
+        ] {
+            assert!(!plain.contains(gone), "{gone:?} in {plain}");
+        }
+        assert!(
+            plain.contains("Snapshot file: tests/snapshots/a__x.snap\n"),
+            "{plain}"
+        );
+        assert!(
+            plain.contains("    2       │-.##.\n          2 │+..##\n"),
+            "{plain}"
+        );
+        assert!(plain.ends_with("────┴────\n"), "{plain}");
+        assert_eq!(plain_diff("a\x1b[31mred\x1b[0m\n"), "ared\n");
+    }
 
     #[test]
     fn verdicts_are_read_off_the_review_folder() {

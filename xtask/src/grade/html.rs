@@ -108,6 +108,25 @@ pub fn page(report: &Report) -> String {
             escape(&integrity.summary())
         );
     }
+    let reviewed: Vec<String> = report
+        .topics
+        .iter()
+        .flat_map(|topic| topic.tasks.iter().map(move |task| (topic, task)))
+        .flat_map(|(topic, task)| {
+            task.tests
+                .iter()
+                .filter(|t| t.reviewed.is_some())
+                .map(move |test| format!("{} / {}: {}", topic.name, task.id, test.name))
+        })
+        .collect();
+    if !reviewed.is_empty() {
+        let _ = writeln!(
+            html,
+            "<p><strong>Reviewed:</strong> {} test(s) pass because a tutor accepted their snapshot in review: {}</p>",
+            reviewed.len(),
+            escape(&reviewed.join(", "))
+        );
+    }
     summary(&mut html, report);
     for topic in &report.topics {
         let _ = writeln!(

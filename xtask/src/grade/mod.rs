@@ -35,6 +35,7 @@ mod plan;
 mod pool;
 pub mod report;
 mod results_json;
+pub mod reviewed;
 mod run;
 pub mod submission;
 mod table;

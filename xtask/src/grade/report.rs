@@ -208,6 +208,10 @@ pub struct TestReport {
     pub raster_diff: Option<String>,
     /// insta's diff of a mismatching snapshot (`-` stored, `+` yours).
     pub snapshot_diff: Option<String>,
+    /// The snapshot a tutor accepted in review (`cargo xtask review`): the
+    /// test failed only on it, and passes by that verdict.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reviewed: Option<String>,
     /// Wall-clock seconds.
     pub duration_s: f64,
     /// How the process ended.
@@ -328,10 +332,11 @@ impl TaskReport {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn test(name: &str, status: TestStatus) -> TestReport {
+    /// A test of `status`, its reason naming it.
+    pub(crate) fn test(name: &str, status: TestStatus) -> TestReport {
         TestReport {
             name: name.to_owned(),
             status,
@@ -340,12 +345,55 @@ mod tests {
             minimal_input: None,
             raster_diff: None,
             snapshot_diff: None,
+            reviewed: None,
             duration_s: 0.0,
             exit: Exit::default(),
             output: None,
             log: None,
             images_dir: None,
             images: Vec::new(),
+        }
+    }
+
+    /// The report of one topic with one task of `points` and `tests`,
+    /// scored as the grader scores them.
+    pub(crate) fn report_of(points: f64, tests: Vec<TestReport>) -> Report {
+        let passed = tests
+            .iter()
+            .filter(|t| t.status == TestStatus::Passed)
+            .count();
+        let failed = tests
+            .iter()
+            .filter(|t| t.status == TestStatus::Failed)
+            .count();
+        let score = round2(points * passed as f64 / (passed + failed) as f64);
+        let mut task = task("t", points, false, score);
+        (task.passed, task.failed, task.tests) = (passed, failed, tests);
+        let topic = TopicReport {
+            name: "01-x".to_owned(),
+            package: "x".to_owned(),
+            dir: PathBuf::from("exercises/01-x"),
+            time_limit_s: 10.0,
+            memory_limit_mib: 4096,
+            compile_error: None,
+            errors: Vec::new(),
+            score,
+            max_score: points,
+            tasks: vec![task],
+        };
+        Report {
+            schema: SCHEMA,
+            root: PathBuf::from("anna"),
+            edition: Edition::Student,
+            score,
+            max_score: points,
+            duration_s: 1.0,
+            complete: true,
+            integrity: None,
+            sandboxed: true,
+            containment: Containment::default(),
+            topics: vec![topic],
+            pipeline: Vec::new(),
         }
     }
 

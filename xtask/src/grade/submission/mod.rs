@@ -405,6 +405,23 @@ pub fn run(
     report_class(&class, &options.out)
 }
 
+/// After a member's report changed (a review's verdicts): its row in the
+/// gradebook of its class, where its report folder `member_out` is in a
+/// class's folder. Whether there was a class to update.
+pub fn update_class_row(member_out: &Path, report: &Report) -> Result<bool> {
+    let Some(class_out) = member_out.parent() else {
+        return Ok(false);
+    };
+    if !class_out.join("gradebook.json").is_file()
+        || !member_out.join(gradebook::ROW_FILE).is_file()
+    {
+        return Ok(false);
+    }
+    GradebookRow::new(member_name(member_out), report).save(member_out)?;
+    Class::read(class_out)?.write(class_out)?;
+    Ok(true)
+}
+
 /// `cargo xtask gradebook merge PARTS... --out DIR`.
 pub fn merge(parts: &[PathBuf], out: &Path) -> Result<()> {
     let class = gradebook::merge(parts, out)?;
