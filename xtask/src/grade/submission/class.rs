@@ -5,7 +5,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -65,12 +65,15 @@ pub(super) fn grade_class(
         .expect("a valid progress template"),
     );
     bar.enable_steady_tick(Duration::from_millis(100));
-    if slots > 1 {
-        bar.println(format!(
-            "grading {} submissions, {slots} at a time",
+    // Printed, not shown on the bar: also without a terminal, where the
+    // bar is hidden, the log says what the first minutes are spent on.
+    bar.suspend(|| {
+        println!(
+            "grading {} submission(s), {slots} at a time; the first build compiles the course's dependencies too (a few minutes), each later one its member's topics",
             submissions.len()
-        ));
-    }
+        );
+    });
+    let started = Instant::now();
     let busy: Mutex<Vec<String>> = Mutex::new(vec![String::new(); slots]);
     let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
@@ -116,9 +119,20 @@ pub(super) fn grade_class(
                             )
                         }
                     };
+                    let left = submissions.len() - n;
+                    let estimate = if left == 0 {
+                        String::new()
+                    } else {
+                        // The first members paid for the dependencies: the
+                        // estimate is on the safe side.
+                        // Members done so far per second of the class,
+                        // all slots together.
+                        let each = started.elapsed().as_secs_f64() / n as f64;
+                        format!(" (about {} left)", minutes(each * left as f64))
+                    };
                     bar.suspend(|| {
                         println!(
-                            "[{n}/{}] {}: {shown}",
+                            "[{n}/{}] {}: {shown}{estimate}",
                             submissions.len(),
                             table::shown(&name)
                         );
@@ -137,4 +151,27 @@ pub(super) fn grade_class(
         .into_iter()
         .map(|result| result.expect("every submission was graded"))
         .collect())
+}
+
+/// `seconds` for people: `40 s`, `3 min`, `1 h 5 min`.
+fn minutes(seconds: f64) -> String {
+    let seconds = seconds.max(0.0).round() as u64;
+    match seconds {
+        0..60 => format!("{seconds} s"),
+        60..3600 => format!("{} min", seconds.div_ceil(60)),
+        _ => format!("{} h {} min", seconds / 3600, (seconds % 3600) / 60),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::minutes;
+
+    #[test]
+    fn times_are_said_in_the_largest_unit_that_fits() {
+        assert_eq!(minutes(40.2), "40 s");
+        assert_eq!(minutes(61.0), "2 min");
+        assert_eq!(minutes(3900.0), "1 h 5 min");
+        assert_eq!(minutes(-3.0), "0 s");
+    }
 }
