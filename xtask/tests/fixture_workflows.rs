@@ -340,7 +340,7 @@ fn hints_come_one_more_each_time_and_failing_tasks_point_at_them() {
     let (_, restarted, _) = hint(&["negate"]);
     assert!(restarted.contains("(hint 1 of 2)"), "{restarted}");
     let (_, none, _) = hint(&["double"]);
-    assert!(none.contains("has no hints in its sheet"), "{none}");
+    assert!(none.contains("has no hints in its tasks.toml"), "{none}");
     let (ok, _, error) = hint(&["triple"]);
     assert!(
         !ok && error.contains("no task `triple`; the tasks are: 01-tiny/double, 01-tiny/negate"),
