@@ -358,7 +358,18 @@ fn install(tools: &Path) -> Result<PathBuf> {
         venv.join("bin").join("python")
     };
     let marker = venv.join(format!("installed-copydetect-{COPYDETECT_VERSION}"));
-    if marker.is_file() && python.is_file() {
+    let installed = || marker.is_file() && python.is_file();
+    if installed() {
+        return Ok(python);
+    }
+    // One installation at a time; a run that waited finds it done.
+    fs::create_dir_all(tools).with_context(|| format!("cannot create {}", tools.display()))?;
+    let lock_path = tools.join("copydetect.lock");
+    let lock = fs::File::create(&lock_path)
+        .with_context(|| format!("cannot create {}", lock_path.display()))?;
+    lock.lock()
+        .with_context(|| format!("cannot lock {}", lock_path.display()))?;
+    if installed() {
         return Ok(python);
     }
     let system = if cfg!(windows) { "python" } else { "python3" };
@@ -391,7 +402,6 @@ fn install(tools: &Path) -> Result<PathBuf> {
     if venv.exists() {
         fs::remove_dir_all(&venv).with_context(|| format!("cannot remove {}", venv.display()))?;
     }
-    fs::create_dir_all(tools).with_context(|| format!("cannot create {}", tools.display()))?;
     let make_venv = || {
         Command::new(system)
             .args(["-m", "venv"])
