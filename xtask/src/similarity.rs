@@ -867,7 +867,7 @@ mod tests {
         let text = "fn a() {\n    b();\n}\n";
         let html = passages(text, &[[3, 15]]);
         assert!(html.contains("fn <mark>a() {</mark>"), "{html}");
-        assert!(html.contains("<mark>    b()</mark>;"), "{html}");
+        assert!(html.contains("<mark>    b(</mark>);"), "{html}");
     }
 
     #[test]
