@@ -25,6 +25,12 @@
 //! occurs twice in a file, so the script removes them from the
 //! fingerprint's table itself.)
 //!
+//! The page highlights each match on whole tokens, read from the
+//! engine's tokens (copydetect's own offsets place a match before the
+//! comments and spaces that precede it), and leaves out of a highlight
+//! the characters a fingerprint of the stub covers: a match that reaches
+//! into a given signature or doc comment is shown without it.
+//!
 //! The score of a pair: for each member, the share of its own code (the
 //! tokens its fingerprints cover, summed over the files both changed)
 //! that matches the other's; the pair's score is the larger share, so a
@@ -64,9 +70,13 @@ const NOISE: usize = 25;
 /// always found (the winnowing window is `GUARANTEE - NOISE + 1`).
 const GUARANTEE: usize = 30;
 
-/// How many pairs (besides the flagged ones) the page and the console
-/// show in detail.
-const SHOWN: usize = 10;
+/// How many pairs (besides the flagged ones) the console lists.
+const LISTED: usize = 10;
+
+/// How many pairs, from the first, the page shows passages of (the page
+/// of a class of copies would otherwise hold every file many times over;
+/// `similarity.json` holds every pair's matches).
+const DETAILED: usize = 20;
 
 /// Lines of context kept around a highlighted passage on the page.
 const CONTEXT_LINES: usize = 2;
@@ -77,7 +87,9 @@ const CONTEXT_LINES: usize = 2;
 const ENGINE_SCRIPT: &str = r#"
 import io, itertools, json, sys
 from copydetect import CodeFingerprint, compare_files
-from copydetect.utils import get_token_coverage
+from copydetect.utils import (
+    find_fingerprint_overlap, get_copied_slices, get_token_coverage, hashed_kgrams)
+from pygments import lexers, token
 
 request = json.load(sys.stdin)
 k = request["noise"]
@@ -94,23 +106,72 @@ def fingerprint(name, text, window, boilerplate):
     return fp
 
 
-def byte_ranges(text, slices):
-    return [
-        [len(text[: int(s)].encode()), len(text[: int(e)].encode())]
-        for s, e in zip(slices[0], slices[1])
-    ]
+def spans(name, text, filtered):
+    """For each character of the filtered code, the characters of `text`
+    it stands for, as copydetect's filter_code makes it (its own offsets
+    place a match before the comments and spaces that precede it)."""
+    out = []
+    at = len(text) - len(text.lstrip("\n"))  # Pygments drops leading newlines
+    variables = {token.Name, token.Name.Variable, token.Name.Attribute}
+    for kind, value in lexers.get_lexer_for_filename(name).get_tokens(text):
+        end = at + len(value)
+        if (kind in variables or kind in token.Name.Function or kind in token.Name.Class
+                or kind == token.Comment.Preproc or kind == token.Comment.Hashbang):
+            out.append((at, end))
+        elif kind in token.Text or kind in token.Comment:
+            pass
+        elif kind in token.Literal.String:
+            out.append((at, end))
+        else:
+            out.extend([(at, end)] * len(value))  # a match covers whole tokens
+        at = end
+    return out if len(out) == len(filtered) else None
+
+
+def given(filtered, boilerplate):
+    """Which characters of the filtered code a k-gram of the stub covers."""
+    mask = [False] * len(filtered)
+    for i, h in enumerate(hashed_kgrams(filtered, k)):
+        if h in boilerplate:
+            mask[i : i + k] = [True] * k
+    return mask
+
+
+def byte_ranges(text, places, mask, slices, fallback):
+    if places is None:
+        chars = list(zip(fallback[0], fallback[1]))
+    else:
+        # A match that reaches into given code is shown without it.
+        chars = []
+        for s, e in zip(slices[0], slices[1]):
+            run = None
+            for i in range(int(s), int(e)):
+                if mask[i]:
+                    run = None
+                elif run is None:
+                    run = [places[i][0], places[i][1]]
+                    chars.append(run)
+                else:
+                    run[1] = places[i][1]
+    return [[len(text[: int(s)].encode()), len(text[: int(e)].encode())] for s, e in chars]
 
 
 files = []
 for file in request["files"]:
     name = file["path"]
     boilerplate = set(fingerprint(name, file["stub"], 1, None).hashes)
-    prints = [(m, t, fingerprint(name, t, window, boilerplate)) for m, t in file["members"]]
+    prints = []
+    for m, t in file["members"]:
+        fp = fingerprint(name, t, window, boilerplate)
+        places = spans(name, t, fp.filtered_code)
+        prints.append((m, t, fp, places, given(fp.filtered_code, boilerplate)))
     pairs = []
-    for (a, ta, fa), (b, tb, fb) in itertools.combinations(prints, 2):
-        overlap, (share_a, share_b), (slices_a, slices_b) = compare_files(fa, fb)
+    for (a, ta, fa, pa, ga), (b, tb, fb, pb, gb) in itertools.combinations(prints, 2):
+        overlap, (share_a, share_b), (raw_a, raw_b) = compare_files(fa, fb)
         if overlap == 0:
             continue
+        idx_a, idx_b = find_fingerprint_overlap(fa.hashes, fb.hashes, fa.hash_idx, fb.hash_idx)
+        slices_a, slices_b = get_copied_slices(idx_a, k), get_copied_slices(idx_b, k)
         pairs.append({
             "a": a,
             "b": b,
@@ -118,11 +179,14 @@ for file in request["files"]:
                 round(float(share_a) * float(fa.token_coverage)),
                 round(float(share_b) * float(fb.token_coverage)),
             ],
-            "ranges": [byte_ranges(ta, slices_a), byte_ranges(tb, slices_b)],
+            "ranges": [
+                byte_ranges(ta, pa, ga, slices_a, raw_a),
+                byte_ranges(tb, pb, gb, slices_b, raw_b),
+            ],
         })
     files.append({
         "path": name,
-        "tokens": [[m, int(fp.token_coverage)] for m, _, fp in prints],
+        "tokens": [[m, int(fp.token_coverage)] for m, _, fp, _, _ in prints],
         "pairs": pairs,
     })
 json.dump({"files": files}, sys.stdout)
@@ -582,15 +646,21 @@ fn rank(
     }
 }
 
-/// The pairs shown in detail: every flagged one, and the first
-/// [`SHOWN`] with any match.
-fn shown(report: &Report) -> impl Iterator<Item = &Pair> {
+/// The pairs the console lists: every flagged one, and the first
+/// [`LISTED`] with any match.
+fn listed(report: &Report) -> impl Iterator<Item = &Pair> {
     report
         .pairs
         .iter()
         .enumerate()
-        .filter(|(i, p)| p.flagged || (*i < SHOWN && p.score > 0.0))
+        .filter(|(i, p)| p.flagged || (*i < LISTED && p.score > 0.0))
         .map(|(_, p)| p)
+}
+
+/// The pairs whose passages the page shows: the first [`DETAILED`] with
+/// any match.
+fn detailed(report: &Report) -> impl Iterator<Item = &Pair> {
+    report.pairs.iter().take(DETAILED).filter(|p| p.score > 0.0)
 }
 
 /// `n thing` or `n things`.
@@ -611,7 +681,7 @@ fn table(report: &Report) -> String {
         report.members.len(),
         percent(report.threshold)
     );
-    let width = |f: &dyn Fn(&Pair) -> usize| shown(report).map(f).max().unwrap_or(0);
+    let width = |f: &dyn Fn(&Pair) -> usize| listed(report).map(f).max().unwrap_or(0);
     let wa = width(&|p| p.a.chars().count()).max(1);
     let wb = width(&|p| p.b.chars().count()).max(1);
     let _ = writeln!(
@@ -619,7 +689,7 @@ fn table(report: &Report) -> String {
         "  {:>4}  {:>5}  {:<wa$}  {:<wb$}  shares     files",
         "rank", "score", "a", "b"
     );
-    for pair in shown(report) {
+    for pair in listed(report) {
         let _ = writeln!(
             out,
             "  {:>4}  {:>5}  {:<wa$}  {:<wb$}  {:>4} {:>4}  {:>5}{}",
@@ -633,7 +703,7 @@ fn table(report: &Report) -> String {
             if pair.flagged { "  FLAGGED" } else { "" }
         );
     }
-    let rest = report.pairs.len() - shown(report).count();
+    let rest = report.pairs.len() - listed(report).count();
     if rest > 0 {
         let _ = writeln!(out, "  ({rest} more pairs with lower scores)");
     }
@@ -699,10 +769,10 @@ fn page(report: &Report, texts: &[Texts]) -> String {
         "<table><tr><th>rank</th><th>members</th><th>score</th><th>shares</th>\
          <th>files alike</th><th></th></tr>\n",
     );
-    let detailed: Vec<usize> = shown(report).map(|p| p.rank).collect();
+    let ranks: Vec<usize> = detailed(report).map(|p| p.rank).collect();
     for pair in &report.pairs {
         let names = format!("{} ↔ {}", escape(&pair.a), escape(&pair.b));
-        let names = if detailed.contains(&pair.rank) {
+        let names = if ranks.contains(&pair.rank) {
             format!("<a href=\"#pair-{}\">{names}</a>", pair.rank)
         } else {
             names
@@ -724,8 +794,15 @@ fn page(report: &Report, texts: &[Texts]) -> String {
         );
     }
     html.push_str("</table>\n");
+    if report.pairs.iter().filter(|p| p.score > 0.0).count() > ranks.len() {
+        let _ = writeln!(
+            html,
+            "<p>The passages of the first {DETAILED} pairs follow; <code>similarity.json</code> \
+             holds every pair's matches.</p>"
+        );
+    }
     let index = |name: &str| report.members.iter().position(|m| m == name);
-    for pair in shown(report) {
+    for pair in detailed(report) {
         let _ = writeln!(
             html,
             "<h2 id=\"pair-{rank}\">{rank}. {a} ↔ {b}: {score}{flag}</h2>\n\
