@@ -113,7 +113,11 @@ def spans(name, text, filtered):
     out = []
     at = len(text) - len(text.lstrip("\n"))  # Pygments drops leading newlines
     variables = {token.Name, token.Name.Variable, token.Name.Attribute}
-    for kind, value in lexers.get_lexer_for_filename(name).get_tokens(text):
+    try:
+        tokens = lexers.get_lexer_for_filename(name).get_tokens(text)
+    except Exception:  # no lexer: copydetect compares the text as it is
+        return None
+    for kind, value in tokens:
         end = at + len(value)
         if (kind in variables or kind in token.Name.Function or kind in token.Name.Class
                 or kind == token.Comment.Preproc or kind == token.Comment.Hashbang):
