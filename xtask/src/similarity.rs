@@ -12,7 +12,10 @@
 //! the text, which the page shows as highlighted passages; its Python API
 //! (`CodeFingerprint`, `compare_files`) works on one pair of files at a
 //! time, which lets each file be compared only with the same file of
-//! another member, with that file's own stub as the boilerplate.
+//! another member, with that file's own stub as the boilerplate. It
+//! needs nothing but Python 3 (its dependencies come as wheels from
+//! PyPI), and it is pinned, so the scores of a class do not move between
+//! machines or terms.
 //!
 //! What is compared: the course's task files ([`stage::task_files`]: the
 //! files of `exercises/*/src` that hold a task) that a member changed;
