@@ -17,6 +17,7 @@ mod release;
 mod review;
 mod sandbox;
 mod setup;
+mod similarity;
 mod stage;
 mod stubs;
 mod test;
@@ -146,6 +147,23 @@ enum Command {
         #[arg(long, value_delimiter = ',', num_args = 1..)]
         topics: Vec<String>,
     },
+    /// Rank the pairs of members of a class whose task files are unusually alike (the
+    /// course's stubs excluded), with copydetect (installed when missing): writes
+    /// similarity.html, the matching passages side by side, and similarity.json.
+    Similarity {
+        /// The class: a folder of checkouts (as for `grade --submission`).
+        class: PathBuf,
+        /// Where similarity.html and similarity.json go [default: <root>/target/similarity].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// The score from which a pair is flagged: the share of one member's own code that
+        /// matches the other's, from 0 to 1.
+        #[arg(long, value_name = "T", default_value_t = similarity::DEFAULT_THRESHOLD)]
+        threshold: f64,
+        /// Topics to compare: names as for `grade`; default all.
+        #[arg(long, value_delimiter = ',', num_args = 1..)]
+        topics: Vec<String>,
+    },
     /// Run the benchmarks of the reference solutions (`cargo bench -p course-bench` in the
     /// stage), passing ARGS through.
     Bench {
@@ -262,6 +280,20 @@ fn main() -> ExitCode {
         Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),
         Command::Class { dir, size, topics } => class::run(&root, &dir, size, &topics),
+        Command::Similarity {
+            class,
+            out,
+            threshold,
+            topics,
+        } => similarity::run(
+            &root,
+            &similarity::Options {
+                out: out.unwrap_or_else(|| root.join("target").join("similarity")),
+                class,
+                threshold,
+                topics,
+            },
+        ),
         Command::View { reference, args } => view::run(&root, reference, &args),
         Command::Stage { reference: _, dir } => stage::write_reference(&root, &dir),
         Command::Figures { mine, topics } => figures::run(&root, mine, &topics),
