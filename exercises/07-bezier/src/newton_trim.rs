@@ -27,10 +27,18 @@
 //! both end points lie on one horizontal line (equal v). Otherwise the
 //! region near the end points comes out wrong (the seed's Fig. 28);
 //! [`crate::ray_parity`] lifts that limit.
+//!
+//! The file is in two parts: what is given first, then your part of the
+//! `trim` task: [`newton`], [`between_crossings`] and the two trims'
+//! `contains`.
 
 use glam::DVec2;
 
 use crate::basics::{BezierError, Trim};
+
+// ─── Given ───────────────────────────────────────────────────────────────
+// The seed's settings, what Newton's method returns, and the two trims
+// with their constructors: you use them, you do not edit them.
 
 /// The seed's iteration limit (Listing 10: `for (i = 0; i < 10; i++)`).
 pub const NEWTON_MAX_ITERATIONS: u32 = 10;
@@ -68,56 +76,6 @@ pub struct NewtonRoot {
     pub iterations: u32,
     /// Whether a step `|h| < epsilon` was reached.
     pub converged: bool,
-}
-
-/// Newton's method `x_{k+1} = x_k − f(x_k) / f'(x_k)` (seed eq. 15,
-/// Listing 10) from `start`. (The seed's legend calls `x_{n+1}` "the
-/// previous approximation"; it is the next one.)
-///
-/// Each step computes `h = f(x)/f'(x)` and `x ← x − h`; the method returns
-/// right after the first step with `|h| < epsilon` (`converged`), or after
-/// `max_iterations` steps with the last `x` and `converged = false`. (The
-/// seed's GLSL function falls off its end without a `return` in that case,
-/// which is undefined behaviour; here the caller learns that no root was
-/// found.) Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is
-/// not applicable", §3.2) it stops at `x` without converging. Never panics.
-#[must_use]
-pub fn newton(
-    f: impl Fn(f64) -> f64,
-    df: impl Fn(f64) -> f64,
-    start: f64,
-    settings: NewtonSettings,
-) -> NewtonRoot {
-    // Unused until you write the body:
-    let _ = (&f, &df, &start, &settings);
-    todo!(
-        "trim: up to max_iterations steps h = f/f', x −= h; return once |h| < epsilon; stop if h is not finite"
-    )
-}
-
-/// Whether `uv` lies between the two crossings of the ray `uv + x · (1, 0)`
-/// with the quadratic or cubic curve `curve` that Newton finds from `t = 1`
-/// and from `t = 0` (steps 1–3 above).
-///
-/// Inside means: both Newton runs converged, both roots in `[0, 1]`, and
-/// `x₁ = C_u(t₁) − u`, `x₂ = C_u(t₂) − u` of opposite signs. A run that
-/// does not converge finds no crossing: in the seed's shader it returns
-/// nothing (undefined in GLSL); above the apex of an arch, where the
-/// v-equation has no real root, its wandering `t` would otherwise often
-/// land in `[0, 1]` and trim points far outside the region. Too few
-/// iterations therefore leave points near the apex untrimmed — the
-/// notches of the seed's Fig. 30. The seed's §3.2.1 lists both sign
-/// cases (3 and 4); its shader (Listing 11) tests only `x₁ > 0 ∧ x₂ < 0`.
-/// The seed uses quadratic and cubic curves (3 or 4 points, as the trims
-/// below check); any other length is evaluated the same way. An empty
-/// curve, a non-finite point or a non-finite `uv` is never inside.
-#[must_use]
-pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
-    // Unused until you write the body:
-    let _ = (&curve, &uv, &settings);
-    todo!(
-        "trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs"
-    )
 }
 
 /// A region bounded by an upper and a lower Bézier curve (quadratic or
@@ -211,15 +169,6 @@ impl NewtonTrim {
     }
 }
 
-impl Trim for NewtonTrim {
-    /// Inside the upper half or inside the lower half (Listing 11).
-    fn trims(&self, uv: DVec2) -> bool {
-        // Unused until you write the body:
-        let _ = &uv;
-        todo!("trim: between the crossings of the upper curve, or of the lower curve")
-    }
-}
-
 /// A ring: the region of `outer` without the region of `inner` (seed
 /// Fig. 12, Listing 12). What lies inside `inner` is drawn again.
 ///
@@ -236,6 +185,67 @@ impl NestedNewtonTrim {
     #[must_use]
     pub fn new(outer: NewtonTrim, inner: NewtonTrim) -> Self {
         Self { outer, inner }
+    }
+}
+
+// ─── Your tasks (the `trim` task) ─────────────────────────────────────────
+
+/// Newton's method `x_{k+1} = x_k − f(x_k) / f'(x_k)` (seed eq. 15,
+/// Listing 10) from `start`. (The seed's legend calls `x_{n+1}` "the
+/// previous approximation"; it is the next one.)
+///
+/// Each step computes `h = f(x)/f'(x)` and `x ← x − h`; the method returns
+/// right after the first step with `|h| < epsilon` (`converged`), or after
+/// `max_iterations` steps with the last `x` and `converged = false`. (The
+/// seed's GLSL function falls off its end without a `return` in that case,
+/// which is undefined behaviour; here the caller learns that no root was
+/// found.) Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is
+/// not applicable", §3.2) it stops at `x` without converging. Never panics.
+#[must_use]
+pub fn newton(
+    f: impl Fn(f64) -> f64,
+    df: impl Fn(f64) -> f64,
+    start: f64,
+    settings: NewtonSettings,
+) -> NewtonRoot {
+    // Unused until you write the body:
+    let _ = (&f, &df, &start, &settings);
+    todo!(
+        "trim: up to max_iterations steps h = f/f', x −= h; return once |h| < epsilon; stop if h is not finite"
+    )
+}
+
+/// Whether `uv` lies between the two crossings of the ray `uv + x · (1, 0)`
+/// with the quadratic or cubic curve `curve` that Newton finds from `t = 1`
+/// and from `t = 0` (steps 1–3 above).
+///
+/// Inside means: both Newton runs converged, both roots in `[0, 1]`, and
+/// `x₁ = C_u(t₁) − u`, `x₂ = C_u(t₂) − u` of opposite signs. A run that
+/// does not converge finds no crossing: in the seed's shader it returns
+/// nothing (undefined in GLSL); above the apex of an arch, where the
+/// v-equation has no real root, its wandering `t` would otherwise often
+/// land in `[0, 1]` and trim points far outside the region. Too few
+/// iterations therefore leave points near the apex untrimmed — the
+/// notches of the seed's Fig. 30. The seed's §3.2.1 lists both sign
+/// cases (3 and 4); its shader (Listing 11) tests only `x₁ > 0 ∧ x₂ < 0`.
+/// The seed uses quadratic and cubic curves (3 or 4 points, as the trims
+/// below check); any other length is evaluated the same way. An empty
+/// curve, a non-finite point or a non-finite `uv` is never inside.
+#[must_use]
+pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
+    // Unused until you write the body:
+    let _ = (&curve, &uv, &settings);
+    todo!(
+        "trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs"
+    )
+}
+
+impl Trim for NewtonTrim {
+    /// Inside the upper half or inside the lower half (Listing 11).
+    fn trims(&self, uv: DVec2) -> bool {
+        // Unused until you write the body:
+        let _ = &uv;
+        todo!("trim: between the crossings of the upper curve, or of the lower curve")
     }
 }
 
