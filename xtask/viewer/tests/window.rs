@@ -217,7 +217,8 @@ fn a_wrong_circle_is_marked_pixel_by_pixel() {
     ));
     let mut harness = harness(stages);
     harness.state_mut().set_scene(course_viewer::Scene::Pixels);
-    harness.state_mut().playground_mut().primitive = course_viewer::playground::Primitive::Circle;
+    harness.state_mut().playground_mut().primitive =
+        course_viewer::scenes::pixels::Primitive::Circle;
     settle_pixels(&mut harness);
     let summary = harness.state().drawing().unwrap().summary();
     assert!(summary.contains("only yours (+)"), "{summary}");
@@ -332,7 +333,10 @@ fn the_curve_scene_draws_your_de_casteljau_and_its_construction() {
     settle_curves(&mut harness);
     harness.get_by_label("de Casteljau: ok");
     let drawing = harness.state().curve_drawing().unwrap().clone();
-    assert_eq!(drawing.yours.len(), course_viewer::curves::SAMPLES + 1);
+    assert_eq!(
+        drawing.yours.len(),
+        course_viewer::scenes::curves::SAMPLES + 1
+    );
     assert!(
         drawing.deviation.unwrap() < 1e-12,
         "the solutions' curve is the definition's: {:?}",
@@ -343,7 +347,7 @@ fn the_curve_scene_draws_your_de_casteljau_and_its_construction() {
     let sizes: Vec<usize> = drawing.levels.iter().map(Vec::len).collect();
     assert_eq!(sizes, [4, 3, 2, 1]);
     let point = drawing.levels[3][0];
-    let on_curve = course_viewer::curves::definition(&drawing.setup.points, 0.5);
+    let on_curve = course_viewer::scenes::curves::definition(&drawing.setup.points, 0.5);
     assert!(
         point.distance(on_curve) < 1e-12,
         "{point} is not C(½) = {on_curve}"
@@ -443,7 +447,8 @@ fn a_de_casteljau_at_todo_is_named_in_the_curve_scene() {
 fn wus_line_shows_each_pixels_intensity_beside_the_definitions() {
     let mut harness = harness(Stages::yours());
     harness.state_mut().set_scene(course_viewer::Scene::Pixels);
-    harness.state_mut().playground_mut().primitive = course_viewer::playground::Primitive::WuLine;
+    harness.state_mut().playground_mut().primitive =
+        course_viewer::scenes::pixels::Primitive::WuLine;
     harness.run_steps(2);
     settle_pixels(&mut harness);
     harness.get_by_label("Wu line: ok");
@@ -501,7 +506,7 @@ fn the_surface_scene_draws_your_trimmed_hill() {
     let nested = harness.state().surface_drawing().unwrap();
     assert_eq!(
         nested.setup.trim.shape,
-        course_viewer::surfaces::TrimShape::Nested
+        course_viewer::scenes::surfaces::TrimShape::Nested
     );
     assert_ne!(
         nested.cut, circle.cut,
@@ -540,7 +545,7 @@ fn an_unwritten_render_is_named_in_the_surface_scene() {
         drawing
             .canvas
             .pixels_not(canvas::Rgba::from_rgba8(
-                course_viewer::surfaces::BACKGROUND.to_rgba8()
+                course_viewer::scenes::surfaces::BACKGROUND.to_rgba8()
             ))
             .is_empty(),
         "nothing is drawn in its place"
@@ -576,7 +581,7 @@ fn the_tessellation_scene_draws_your_triangles() {
     let drawing = harness.state().tessellation_drawing().unwrap();
     assert_eq!(
         drawing.setup.method,
-        course_viewer::tessellation::Method::FullyAdaptive
+        course_viewer::scenes::tessellation::Method::FullyAdaptive
     );
     let triangles = drawing.result.as_ref().unwrap().triangles;
     assert!(triangles > 512, "{triangles} triangles");
