@@ -51,39 +51,13 @@ fn gpu_trim(setup: &TrimSetup) -> Option<gpu_tessellation::render::TrimShape> {
 }
 
 /// `patch` raised to degree 3 in both directions (the GPU stages take
-/// bicubic patches): degree elevation, exact, `h'_j = j/(q+1) · h_(j−1) +
-/// (1 − j/(q+1)) · h_j` along a direction of degree `q`, repeated.
+/// bicubic patches): freeform's degree elevation, exact, `h'_j = j/(q+1) ·
+/// h_(j−1) + (1 − j/(q+1)) · h_j` along a direction of degree `q`,
+/// repeated (`RationalPatch::elevated_to`, every weight 1).
 fn bicubic(patch: &freeform::BezierPatch) -> freeform::BezierPatch {
-    fn elevate(points: &[glam::DVec3]) -> Vec<glam::DVec3> {
-        let n = points.len();
-        (0..=n)
-            .map(|j| {
-                let a = j as f64 / n as f64;
-                let before = if j == 0 { points[0] } else { points[j - 1] };
-                let here = if j == n { points[n - 1] } else { points[j] };
-                a * before + (1.0 - a) * here
-            })
-            .collect()
-    }
-    let rows: Vec<Vec<glam::DVec3>> = (0..=patch.degree_u())
-        .map(|i| {
-            let mut row = patch.row(i).to_vec();
-            while row.len() < 4 {
-                row = elevate(&row);
-            }
-            row
-        })
-        .collect();
-    let columns: Vec<Vec<glam::DVec3>> = (0..4)
-        .map(|j| {
-            let mut column: Vec<glam::DVec3> = rows.iter().map(|row| row[j]).collect();
-            while column.len() < 4 {
-                column = elevate(&column);
-            }
-            column
-        })
-        .collect();
-    freeform::BezierPatch::from_fn(3, 3, |i, j| columns[j][i]).unwrap_or_else(|_| patch.clone())
+    freeform::RationalPatch::polynomial(patch.clone())
+        .elevated_to(3, 3)
+        .map_or_else(|_| patch.clone(), |raised| raised.points().clone())
 }
 
 /// The WGSL of topic 10's four tasks that the GPU scene runs.
