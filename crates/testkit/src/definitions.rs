@@ -114,6 +114,49 @@ pub fn line_ties(from: Pixel, to: Pixel) -> Vec<[Pixel; 2]> {
         .collect()
 }
 
+/// The pixels of Wu's antialiased line from `from` to `to` by definition
+/// (task 5c of `01-lines`), each with its intensity: the first and
+/// last pixels full; in each column of the major axis between them, the
+/// ideal line crosses the minor axis at `j + f` (counted from `from`
+/// towards `to`), and pixel `j` gets `1 − f`, pixel `j + 1` gets `f`.
+/// Axis-parallel and diagonal lines are one pixel per column, full.
+#[must_use]
+pub fn wu_pixels(from: Pixel, to: Pixel) -> Vec<(Pixel, f32)> {
+    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
+    let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
+    let x_major = dx.abs() >= dy.abs();
+    let (long, short) = if x_major {
+        (dx.abs(), dy.abs())
+    } else {
+        (dy.abs(), dx.abs())
+    };
+    #[allow(clippy::cast_possible_truncation)] // within the grid
+    let pixel = |i: i64, j: i64| {
+        if x_major {
+            Pixel::new(from.x + (sx * i) as i32, from.y + (sy * j) as i32)
+        } else {
+            Pixel::new(from.x + (sx * j) as i32, from.y + (sy * i) as i32)
+        }
+    };
+    let mut pixels = vec![(from, 1.0)];
+    if long == 0 {
+        return pixels;
+    }
+    for i in 1..long {
+        if short == 0 || short == long {
+            pixels.push((pixel(i, if short == 0 { 0 } else { i }), 1.0));
+        } else {
+            let (j, rest) = ((i * short) / long, (i * short) % long);
+            #[allow(clippy::cast_precision_loss)] // small
+            let f = rest as f32 / long as f32;
+            pixels.push((pixel(i, j), 1.0 - f));
+            pixels.push((pixel(i, j + 1), f));
+        }
+    }
+    pixels.push((to, 1.0));
+    pixels
+}
+
 // ---------------------------------------------------------------------------
 // Circles (topic 02).
 

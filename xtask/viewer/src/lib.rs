@@ -16,17 +16,17 @@
 
 #[cfg(feature = "window")]
 pub mod app;
-pub mod curves;
-pub mod gpu_scene;
+pub mod camera;
+#[cfg(feature = "window")]
+mod live;
 pub mod meshes;
-pub mod playground;
-pub mod render;
+pub mod scenes;
 pub mod stages;
-pub mod surfaces;
-pub mod tessellation;
+#[cfg(feature = "window")]
+mod widgets;
 pub mod worker;
 
 #[cfg(feature = "window")]
 pub use app::{Scene, ViewerApp};
-pub use render::{Frame, Settings, render};
+pub use scenes::mesh::{Frame, Settings, render};
 pub use stages::{Stages, Status};

@@ -7,9 +7,9 @@ use std::time::Duration;
 use anyhow::{Context, Result, bail};
 use clap::{Parser, ValueEnum};
 use course_viewer::meshes::{self, MeshEntry, shipped_meshes};
-use course_viewer::render::Settings;
+use course_viewer::scenes::mesh::Settings;
+use course_viewer::scenes::surfaces::{SurfaceSetup, TrimShape};
 use course_viewer::stages::{self, Stages};
-use course_viewer::surfaces::{SurfaceSetup, TrimShape};
 
 /// How polygons are drawn.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -170,8 +170,8 @@ fn main() -> Result<()> {
     let limit = Duration::from_secs_f64(args.time_limit.max(0.1));
     if let (Some(chain), Some(path)) = (args.chain, &args.screenshot) {
         let surface = match chain {
-            Chain::Vase => course_viewer::tessellation::Surface::Vase,
-            Chain::Torus => course_viewer::tessellation::Surface::NurbsTorus,
+            Chain::Vase => course_viewer::scenes::tessellation::Surface::Vase,
+            Chain::Torus => course_viewer::scenes::tessellation::Surface::NurbsTorus,
         };
         return chain_screenshot(surface, args.size, limit, path);
     }
@@ -208,7 +208,7 @@ fn main() -> Result<()> {
 
 /// Draws one picture with your stages and writes it to `path`.
 fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path) -> Result<()> {
-    let mut worker = course_viewer::render::frame_worker(Stages::yours());
+    let mut worker = course_viewer::scenes::mesh::frame_worker(Stages::yours());
     worker.request((std::sync::Arc::clone(&mesh.mesh), settings));
     let Some(frame) = worker.wait(limit) else {
         bail!(
@@ -238,12 +238,12 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
 /// Draws the NURBS chain of `surface` with your stages and writes it to
 /// `path`: one line a stage, as [`screenshot`] prints them.
 fn chain_screenshot(
-    surface: course_viewer::tessellation::Surface,
+    surface: course_viewer::scenes::tessellation::Surface,
     size: u32,
     limit: Duration,
     path: &Path,
 ) -> Result<()> {
-    use course_viewer::tessellation::{self as tess, chain_setup};
+    use course_viewer::scenes::tessellation::{self as tess, chain_setup};
     let mut worker = tess::worker(Stages::yours());
     worker.request(chain_setup(surface, size));
     let Some(drawing) = worker.wait(limit) else {

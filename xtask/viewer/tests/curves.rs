@@ -3,16 +3,16 @@
 
 use std::sync::Arc;
 
-use course_viewer::curves::{CurveSetup, SAMPLES, definition, draw};
+use course_viewer::scenes::curves::{CurveSetup, SAMPLES, definition, draw};
 use course_viewer::{Stages, Status};
 use glam::DVec2;
 
 #[test]
 fn the_solutions_curve_is_the_definitions() {
     course_viewer::stages::quiet_panics();
-    for n in 2..=course_viewer::curves::MAX_POINTS {
+    for n in 2..=course_viewer::scenes::curves::MAX_POINTS {
         let setup = CurveSetup {
-            points: course_viewer::curves::first_points(n),
+            points: course_viewer::scenes::curves::first_points(n),
             t: 0.3,
             ..CurveSetup::default()
         };
@@ -92,15 +92,18 @@ fn a_set_up_is_kept_drawable() {
     );
     assert_eq!(setup.t, 0.5);
     setup.set_count(20);
-    assert_eq!(setup.points.len(), course_viewer::curves::MAX_POINTS);
+    assert_eq!(
+        setup.points.len(),
+        course_viewer::scenes::curves::MAX_POINTS
+    );
     setup.set_count(3);
     assert_eq!(setup.points.len(), 3);
 }
 
 fn nurbs(n: usize, degree: usize, weights: Vec<f64>) -> CurveSetup {
     CurveSetup {
-        points: course_viewer::curves::first_points(n),
-        kind: course_viewer::curves::CurveKind::Nurbs,
+        points: course_viewer::scenes::curves::first_points(n),
+        kind: course_viewer::scenes::curves::CurveKind::Nurbs,
         degree,
         weights,
         ..CurveSetup::default()
@@ -110,7 +113,7 @@ fn nurbs(n: usize, degree: usize, weights: Vec<f64>) -> CurveSetup {
 #[test]
 fn the_solutions_nurbs_curve_is_the_definitions() {
     course_viewer::stages::quiet_panics();
-    for n in 2..=course_viewer::curves::MAX_POINTS {
+    for n in 2..=course_viewer::scenes::curves::MAX_POINTS {
         for degree in 1..n {
             let weights = (0..n).map(|k| 0.5 + (k % 3) as f64).collect();
             let drawing = draw(&nurbs(n, degree, weights), &Stages::yours());
@@ -144,7 +147,7 @@ fn a_heavier_weight_pulls_the_curve_to_its_point() {
     let light = draw(&nurbs(4, 2, vec![1.0; 4]), &Stages::yours());
     let heavy = draw(&nurbs(4, 2, vec![1.0, 6.0, 1.0, 1.0]), &Stages::yours());
     let p1 = light.setup.points[1];
-    let nearest = |d: &course_viewer::curves::CurveDrawing| {
+    let nearest = |d: &course_viewer::scenes::curves::CurveDrawing| {
         d.yours
             .iter()
             .map(|p| p.distance(p1))

@@ -2,9 +2,9 @@
 //! where there is none), with the solutions, with a piece not written yet
 //! and with WGSL that does not compile.
 
-use course_viewer::gpu_scene::{GpuDrawing, GpuSetup, GpuSurface, Levels, Spacing, draw};
+use course_viewer::scenes::gpu::{GpuDrawing, GpuSetup, GpuSurface, Levels, Spacing, draw};
+use course_viewer::stages::trim::TrimShape;
 use course_viewer::stages::{GpuPieces, decompose, gpu_frame};
-use course_viewer::surfaces::TrimShape;
 use course_viewer::{Stages, Status};
 use gpu_tessellation::wgsl;
 

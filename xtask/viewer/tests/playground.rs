@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use canvas::{Pixel, Vec2};
 use course_viewer::Stages;
-use course_viewer::playground::{Cell, MAX_PLOTS, Primitive, Setup, draw};
+use course_viewer::scenes::pixels::{Cell, MAX_PLOTS, Primitive, Setup, draw};
 use course_viewer::stages::Status;
 
 /// Handle positions that reach every octant, the axes, a single pixel,

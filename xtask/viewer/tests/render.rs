@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use canvas::{Canvas, Rgba};
-use course_viewer::render::{Settings, render};
+use course_viewer::scenes::mesh::{Settings, render};
 use course_viewer::stages::{Stages, Status};
 use scene::{Mesh, Mode};
 
@@ -13,7 +13,7 @@ fn mesh(name: &str) -> Mesh {
     scene::ply::load(scene::data::path(name)).expect("a shipped mesh")
 }
 
-fn statuses(stages: &[course_viewer::render::StageReport]) -> Vec<(&str, Status)> {
+fn statuses(stages: &[course_viewer::scenes::mesh::StageReport]) -> Vec<(&str, Status)> {
     stages.iter().map(|s| (s.name, s.status.clone())).collect()
 }
 
@@ -196,7 +196,7 @@ fn a_panicking_depth_test_is_named_and_a_missing_topic_too() {
 /// when the pipeline changes, and look at them.
 #[test]
 fn the_reports_expected_pictures_are_what_the_solutions_draw() {
-    use course_viewer::render::{REPORT_SCENES, REPORT_SIZE};
+    use course_viewer::scenes::mesh::{REPORT_SCENES, REPORT_SIZE};
     for (file, mesh_name, mode, clip) in REPORT_SCENES {
         let settings = Settings {
             mode,

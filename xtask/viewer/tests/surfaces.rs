@@ -4,10 +4,10 @@
 use std::sync::Arc;
 
 use canvas::Canvas;
-use course_viewer::stages::{SurfaceView, TrimFn};
-use course_viewer::surfaces::{
+use course_viewer::scenes::surfaces::{
     BACKGROUND, SurfaceDrawing, SurfaceSetup, TrimSetup, TrimShape, UV_SAMPLES, draw,
 };
+use course_viewer::stages::{SurfaceView, TrimFn};
 use course_viewer::{Stages, Status};
 use glam::{DVec2, DVec3};
 

@@ -3,8 +3,10 @@
 
 use std::sync::Arc;
 
+use course_viewer::scenes::tessellation::{
+    Look, Method, Surface, TessSetup, Tessellated, Test, draw,
+};
 use course_viewer::stages::Decomposed;
-use course_viewer::tessellation::{Look, Method, Surface, TessSetup, Tessellated, Test, draw};
 use course_viewer::{Stages, Status};
 
 fn setup(surface: Surface, method: Method) -> TessSetup {
@@ -188,7 +190,7 @@ fn a_set_up_is_kept_drawable() {
     assert_eq!(setup.level, 1);
     assert!(setup.tolerance > 0.0);
     assert!(setup.thresholds.iter().all(|t| *t > 0.0 && t.is_finite()));
-    assert_eq!(setup.depth, course_viewer::tessellation::MAX_DEPTH);
+    assert_eq!(setup.depth, course_viewer::scenes::tessellation::MAX_DEPTH);
     assert!(setup.yaw.is_finite());
     assert_eq!(setup.size, 16);
     assert_eq!(draw(&setup, &Stages::yours()).status, Status::Ok);
@@ -256,8 +258,8 @@ fn an_unwritten_decomposition_is_named_and_stops_the_chain() {
 /// --size 200` when the chain changes, and look at it.
 #[test]
 fn the_reports_chain_picture_is_what_the_solutions_draw() {
-    use course_viewer::render::REPORT_SIZE;
-    use course_viewer::tessellation::{REPORT_CHAIN, chain_setup};
+    use course_viewer::scenes::mesh::REPORT_SIZE;
+    use course_viewer::scenes::tessellation::{REPORT_CHAIN, chain_setup};
     let (file, surface) = REPORT_CHAIN;
     let drawing = draw(&chain_setup(surface, REPORT_SIZE), &Stages::yours());
     let picture = drawing.result.expect("the solutions draw the chain").canvas;

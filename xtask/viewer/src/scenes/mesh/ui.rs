@@ -6,15 +6,21 @@ use eframe::egui;
 use egui::{Color32, RichText};
 use scene::Mode;
 
-use crate::render::Settings;
+use super::draw::Settings;
+use super::state::MeshScene;
 use crate::stages::Status;
+use crate::widgets::{magnified, orbit, slow_notice, stage_label, texture};
 
-use super::ViewerApp;
-use super::widgets::{magnified, orbit, slow_notice, stage_label, texture};
-
-impl ViewerApp {
-    pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
-        self.scene_switch(ui);
+impl MeshScene {
+    /// The panel: the mesh, the switches, the camera, saving, your stages.
+    /// `not_compiling` names the topics left out of the build;
+    /// `show_timing` says whether the frame's time shows.
+    pub(crate) fn controls(
+        &mut self,
+        ui: &mut egui::Ui,
+        not_compiling: &[String],
+        show_timing: bool,
+    ) {
         ui.heading("Your pipeline");
         ui.label(
             "The mesh, transformed by the course; clipped, drawn and depth-tested by your code.",
@@ -91,21 +97,21 @@ impl ViewerApp {
             ui.label(message);
         }
         ui.separator();
-        self.stage_list(ui);
+        self.stage_list(ui, not_compiling, show_timing);
     }
 
-    pub(super) fn stage_list(&self, ui: &mut egui::Ui) {
+    fn stage_list(&self, ui: &mut egui::Ui, not_compiling: &[String], show_timing: bool) {
         ui.heading("Your stages");
-        if !self.not_compiling.is_empty() {
+        if !not_compiling.is_empty() {
             ui.label(
                 RichText::new(format!(
                     "Not compiling, so left out: {}",
-                    self.not_compiling.join(", ")
+                    not_compiling.join(", ")
                 ))
                 .color(Color32::LIGHT_RED),
             );
         }
-        let Some(frame) = &self.frame else {
+        let Some(frame) = &self.live.drawing else {
             ui.label("drawing the first frame …");
             return;
         };
@@ -114,26 +120,28 @@ impl ViewerApp {
         }
         let (total, drawn) = frame.polygons;
         let timing = self
+            .live
             .worker
             .last_frame_time()
-            .filter(|_| self.show_timing)
+            .filter(|_| show_timing)
             .map_or_else(String::new, |t| {
                 format!(" in {:.0} ms", t.as_secs_f64() * 1e3)
             });
         ui.label(format!("{drawn} of {total} polygons drawn{timing}"));
     }
 
-    pub(super) fn picture(&mut self, ui: &mut egui::Ui) {
-        let slow = self.worker.slow_for();
-        let Some(frame) = &self.frame else {
+    /// The picture, your clipped polygons outlined where asked for.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
+        let Some(frame) = &self.live.drawing else {
             ui.label("drawing …");
             slow_notice(ui, "Your stages have been drawing this frame", slow);
             return;
         };
-        let texture = self
-            .texture
-            .get_or_insert_with(|| texture(ui, "picture", &frame.canvas))
-            .clone();
+        if self.live.textures.is_empty() {
+            self.live.textures = vec![texture(ui, "picture", &frame.canvas)];
+        }
+        let texture = self.live.textures[0].clone();
         let response = magnified(ui, &texture, 0.0);
         // Topic 04 without topics 01 and 03: your clipped polygons as
         // outlines, when asked for or when nothing else draws them.

@@ -1,23 +1,12 @@
-//! The pixel playground (topics 01–03): one primitive on a magnified
-//! grid, drawn by your code, beside the pixels of the course's definition
-//! (`testkit::definitions`, what the tests compare with), in the grader's
-//! legend: `#` in both, `+` only yours, `-` only expected. Drag its
-//! handles; step through your pixels one at a time, in the order you
-//! plotted them, each with what decided it.
-//!
-//! | primitive | your code | its definition |
-//! |---|---|---|
-//! | DDA line | `01-lines` `dda::dda_line` | the pixel nearest the ideal line in each column of the major axis (at a tie either) |
-//! | midpoint line | `01-lines` `midpoint::midpoint_line` | the same pixels |
-//! | Wu line | `01-lines` `wu::wu_line` | in each column of the major axis the two pixels that straddle the ideal line, weighted by nearness (one pixel at the ends) |
-//! | midpoint circle | `02-circles` `midpoint_circle::midpoint_circle` | the second octant's nearest rows, mirrored |
-//! | triangle | `03-fill` `edge_function::fill_triangle` | centres inside, by the top-left rule on the 1/256-pixel grid |
+//! What the playground draws: your pixels, the definition's, and how they
+//! compare.
 
 use std::collections::{BTreeMap, BTreeSet};
 
 use canvas::{Fragment, Pixel, Rgba, Vec2, Vertex, Viewport};
 use testkit::definitions;
 
+use super::notes::{circle_note, line_note, triangle_note, wu_note};
 use crate::stages::{Stage, Stages, Status, guarded};
 use crate::worker::Worker;
 
@@ -405,7 +394,7 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
             let (status, plotted) = collect(&stages.wu, size, |run, plot| {
                 run(from, to, &mut |p: Pixel, c: f32| plot((p, c)));
             });
-            expected_intensity = wu_definition(from, to).into_iter().collect();
+            expected_intensity = definitions::wu_pixels(from, to).into_iter().collect();
             let steps = plotted
                 .into_iter()
                 .map(|(pixel, c)| Step {
@@ -467,61 +456,6 @@ pub fn draw(setup: &Setup, stages: &Stages) -> Drawing {
     }
 }
 
-/// Wu's line by its definition (task 5c of `01-lines`): the first and
-/// last pixels full; in each column of the major axis between them, the
-/// ideal line crosses the minor axis at `j + f` (counted from `from`
-/// towards `to`), and pixel `j` gets `1 − f`, pixel `j + 1` gets `f`.
-/// Axis-parallel and diagonal lines are one pixel per column, full.
-#[must_use]
-pub fn wu_definition(from: Pixel, to: Pixel) -> Vec<(Pixel, f32)> {
-    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
-    let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
-    let x_major = dx.abs() >= dy.abs();
-    let (long, short) = if x_major {
-        (dx.abs(), dy.abs())
-    } else {
-        (dy.abs(), dx.abs())
-    };
-    #[allow(clippy::cast_possible_truncation)] // within the grid
-    let pixel = |i: i64, j: i64| {
-        if x_major {
-            Pixel::new(from.x + (sx * i) as i32, from.y + (sy * j) as i32)
-        } else {
-            Pixel::new(from.x + (sx * j) as i32, from.y + (sy * i) as i32)
-        }
-    };
-    let mut pixels = vec![(from, 1.0)];
-    if long == 0 {
-        return pixels;
-    }
-    for i in 1..long {
-        if short == 0 || short == long {
-            pixels.push((pixel(i, if short == 0 { 0 } else { i }), 1.0));
-        } else {
-            let (j, rest) = ((i * short) / long, (i * short) % long);
-            #[allow(clippy::cast_precision_loss)] // small
-            let f = rest as f32 / long as f32;
-            pixels.push((pixel(i, j), 1.0 - f));
-            pixels.push((pixel(i, j + 1), f));
-        }
-    }
-    pixels.push((to, 1.0));
-    pixels
-}
-
-/// What decides a pixel of Wu's line: the intensity you gave it, and the
-/// definition's.
-fn wu_note(from: Pixel, to: Pixel, p: Pixel, yours: f32, expected: Option<&f32>) -> String {
-    let definition = expected.map_or_else(
-        || "not a pixel of the definition".to_owned(),
-        |e| format!("the definition's {e:.3}"),
-    );
-    format!(
-        "intensity {yours:.3}, {definition}; {}",
-        line_note(from, to, p)
-    )
-}
-
 /// The steps of code that plots pixels without a colour, each with its
 /// note.
 fn uncoloured(pixels: Vec<Pixel>, note: impl Fn(Pixel) -> String) -> Vec<Step> {
@@ -546,63 +480,6 @@ pub const TRIANGLE_COLOURS: [Rgba; 3] = [
     Rgba::rgb(0.3, 0.9, 0.3),
     Rgba::rgb(0.3, 0.4, 1.0),
 ];
-
-/// What decides a line's pixel: where the ideal line crosses its column
-/// (or row, for a steep line), and how far from the pixel's centre.
-fn line_note(from: Pixel, to: Pixel, p: Pixel) -> String {
-    let (dx, dy) = (f64::from(to.x - from.x), f64::from(to.y - from.y));
-    if dx == 0.0 && dy == 0.0 {
-        return format!("({}, {}): a line of one pixel", p.x, p.y);
-    }
-    if dx.abs() >= dy.abs() {
-        let ideal = f64::from(from.y) + (f64::from(p.x - from.x)) * dy / dx;
-        format!(
-            "({}, {}): the ideal line crosses column x = {} at y = {ideal:.3}, {:.3} from this centre",
-            p.x,
-            p.y,
-            p.x,
-            (f64::from(p.y) - ideal).abs()
-        )
-    } else {
-        let ideal = f64::from(from.x) + (f64::from(p.y - from.y)) * dx / dy;
-        format!(
-            "({}, {}): the ideal line crosses row y = {} at x = {ideal:.3}, {:.3} from this centre",
-            p.x,
-            p.y,
-            p.y,
-            (f64::from(p.x) - ideal).abs()
-        )
-    }
-}
-
-/// What decides a circle's pixel: the implicit function at its centre.
-fn circle_note(centre: Pixel, radius: i32, p: Pixel) -> String {
-    let (x, y) = (i64::from(p.x - centre.x), i64::from(p.y - centre.y));
-    let f = x * x + y * y - i64::from(radius) * i64::from(radius);
-    #[allow(clippy::cast_precision_loss)] // small offsets
-    let off = ((x * x + y * y) as f64).sqrt() - f64::from(radius);
-    format!(
-        "({}, {}): offset ({x}, {y}) from the centre, x² + y² − R² = {f}, {off:+.3} pixels from the circle",
-        p.x, p.y
-    )
-}
-
-/// What decides a triangle's pixel: your exact edge functions there, and
-/// the barycentric weights they give.
-fn triangle_note(p: Pixel, w: [i128; 3]) -> String {
-    let sum: i128 = w.iter().sum();
-    #[allow(clippy::cast_precision_loss)] // shown to three decimals
-    let weights = if sum == 0 {
-        "no area".to_owned()
-    } else {
-        let l = w.map(|wi| wi as f64 / sum as f64);
-        format!("barycentric ({:.3}, {:.3}, {:.3})", l[0], l[1], l[2])
-    };
-    format!(
-        "({}, {}): your edge functions ({}, {}, {}) in 1/65536 px², {weights}",
-        p.x, p.y, w[0], w[1], w[2]
-    )
-}
 
 #[cfg(test)]
 mod tests {
@@ -632,15 +509,5 @@ mod tests {
             "{}",
             drawing.summary()
         );
-    }
-
-    #[test]
-    fn notes_say_where_the_ideal_primitive_is() {
-        let note = line_note(Pixel::new(0, 0), Pixel::new(3, 1), Pixel::new(1, 0));
-        assert!(note.contains("y = 0.333, 0.333 from this centre"), "{note}");
-        let note = circle_note(Pixel::new(5, 5), 3, Pixel::new(7, 7));
-        assert!(note.contains("x² + y² − R² = -1"), "{note}");
-        let note = triangle_note(Pixel::new(1, 1), [1, 1, 2]);
-        assert!(note.contains("(0.250, 0.250, 0.500)"), "{note}");
     }
 }

@@ -2,28 +2,21 @@
 
 use eframe::egui;
 
+use super::draw::{self as surfaces, SurfaceSetup};
+use super::state::SurfacesScene;
 use crate::stages::Stages;
-use crate::surfaces::{self, SurfaceSetup};
+use crate::widgets::{magnified, orbit, slow_notice, stage_label, texture, trim_controls};
 
-use super::ViewerApp;
-use super::widgets::{magnified, orbit, slow_notice, stage_label, texture, trim_controls};
-
-impl ViewerApp {
-    /// The surface scene: its controls on the right, the picture and the
-    /// parameter square on the left.
-    pub(super) fn show_surfaces(&mut self, ui: &mut egui::Ui) {
-        self.surfaces.ask();
-        self.surfaces.poll(ui);
-        self.two_panels(ui, Self::surface_controls, Self::surface_picture);
-    }
-
-    pub(super) fn surface_controls(&mut self, ui: &mut egui::Ui) {
+impl SurfacesScene {
+    /// The panel: the control points' heights, the trim, the level, the
+    /// camera and your stages.
+    pub(crate) fn controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Your trimmed surface");
         ui.label(
             "The seed's hill, a bicubic Bézier patch whose control points you raise and lower: evaluated by your surface code, trimmed by your trim and tessellated, rasterized and lit by your render_surface.",
         );
         ui.separator();
-        let setup = &mut self.surfaces.setup;
+        let setup = &mut self.setup;
         ui.label("Control points: their heights (u to the right, v up)");
         egui::Grid::new("control net").show(ui, |ui| {
             for j in (0..4).rev() {
@@ -54,7 +47,7 @@ impl ViewerApp {
         }
         ui.separator();
         ui.heading("Your stages");
-        let Some(drawing) = &self.surfaces.drawing else {
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing …");
             return;
         };
@@ -73,29 +66,29 @@ impl ViewerApp {
         }
     }
 
-    pub(super) fn surface_picture(&mut self, ui: &mut egui::Ui) {
-        let slow = self.surfaces.worker.slow_for();
-        let surfaces = &mut self.surfaces;
-        let Some(drawing) = &surfaces.drawing else {
+    /// The picture, and the parameter square as your trim sees it.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing …");
             slow_notice(ui, "Your surface code has been drawing", slow);
             return;
         };
-        if surfaces.textures.is_empty() {
-            surfaces.textures = vec![
+        if self.live.textures.is_empty() {
+            self.live.textures = vec![
                 texture(ui, "surface", &drawing.canvas),
                 texture(ui, "parameter square", &drawing.uv_map),
             ];
         }
-        let response = magnified(ui, &surfaces.textures[0], 140.0);
+        let response = magnified(ui, &self.live.textures[0], 140.0);
         let (around, above, zoom) = orbit(ui, &response);
-        let setup = &mut surfaces.setup;
+        let setup = &mut self.setup;
         setup.yaw = (setup.yaw + f64::from(around)).clamp(-180.0, 180.0);
         setup.pitch = (setup.pitch + f64::from(above)).clamp(-89.0, 89.0);
         setup.distance = (setup.distance * f64::from(zoom)).clamp(0.8, 8.0);
         ui.horizontal(|ui| {
             ui.add(egui::Image::from_texture(egui::load::SizedTexture::new(
-                surfaces.textures[1].id(),
+                self.live.textures[1].id(),
                 egui::vec2(128.0, 128.0),
             )));
             ui.label(

@@ -6,19 +6,19 @@ use eframe::egui;
 use egui::{Color32, RichText, TextureHandle, TextureOptions};
 
 use crate::stages::Status;
-use crate::surfaces::{self, TrimShape};
+use crate::stages::trim::{TrimSetup, TrimShape};
 
 /// The room kept below a picture or the pixel grid for [`slow_notice`]:
 /// the picture is laid out the same whether the notice shows or not, so
 /// that it never moves under the pointer (a handle being dragged stays
 /// where it was grabbed).
-pub(super) fn notice_room(ui: &egui::Ui) -> f32 {
+pub(crate) fn notice_room(ui: &egui::Ui) -> f32 {
     3.0 * ui.text_style_height(&egui::TextStyle::Body)
 }
 
 /// Below the picture: that the student's code has been drawing for long,
 /// perhaps in an endless loop, and that the window still answers.
-pub(super) fn slow_notice(ui: &mut egui::Ui, what: &str, busy: Option<std::time::Duration>) {
+pub(crate) fn slow_notice(ui: &mut egui::Ui, what: &str, busy: Option<std::time::Duration>) {
     if let Some(busy) = busy {
         ui.label(
             RichText::new(format!(
@@ -34,7 +34,7 @@ pub(super) fn slow_notice(ui: &mut egui::Ui, what: &str, busy: Option<std::time:
 /// A picture at the largest whole-pixel magnification that fits (every
 /// pixel a sharp square), `reserve` points kept free below it, sensing
 /// drags (to orbit the camera).
-pub(super) fn magnified(
+pub(crate) fn magnified(
     ui: &mut egui::Ui,
     texture: &TextureHandle,
     reserve: f32,
@@ -55,7 +55,7 @@ pub(super) fn magnified(
 /// How a drag over a picture and the scroll wheel move an orbiting
 /// camera: degrees around and above (half a degree a point, the picture
 /// following the pointer), and the factor for its distance.
-pub(super) fn orbit(ui: &egui::Ui, response: &egui::Response) -> (f32, f32, f32) {
+pub(crate) fn orbit(ui: &egui::Ui, response: &egui::Response) -> (f32, f32, f32) {
     let delta = if response.dragged() {
         response.drag_delta()
     } else {
@@ -70,20 +70,20 @@ pub(super) fn orbit(ui: &egui::Ui, response: &egui::Response) -> (f32, f32, f32)
 }
 
 /// A canvas as a texture, drawn without smoothing.
-pub(super) fn texture(ui: &egui::Ui, name: &str, canvas: &Canvas) -> TextureHandle {
+pub(crate) fn texture(ui: &egui::Ui, name: &str, canvas: &Canvas) -> TextureHandle {
     ui.ctx()
         .load_texture(name, colour_image(canvas), TextureOptions::NEAREST)
 }
 
 /// One stage in a panel: `name: status` in the status's colour, its
 /// source below.
-pub(super) fn stage_label(ui: &mut egui::Ui, name: &str, source: &str, status: &Status) {
+pub(crate) fn stage_label(ui: &mut egui::Ui, name: &str, source: &str, status: &Status) {
     ui.label(RichText::new(format!("{name}: {}", status.describe())).color(status_colour(status)));
     ui.label(RichText::new(source).small().weak());
 }
 
 /// The trim's shape and parameters (the surface and GPU scenes).
-pub(super) fn trim_controls(ui: &mut egui::Ui, trim: &mut surfaces::TrimSetup) {
+pub(crate) fn trim_controls(ui: &mut egui::Ui, trim: &mut TrimSetup) {
     egui::ComboBox::from_label("Trim")
         .selected_text(trim.shape.label())
         .show_ui(ui, |ui| {
@@ -122,7 +122,7 @@ pub(super) fn trim_controls(ui: &mut egui::Ui, trim: &mut surfaces::TrimSetup) {
 
 /// The handle a drag picks up: the nearest of those at `distances` from
 /// the pointer, if it is nearer than `reach`.
-pub(super) fn nearest(distances: impl Iterator<Item = f64>, reach: f64) -> Option<usize> {
+pub(crate) fn nearest(distances: impl Iterator<Item = f64>, reach: f64) -> Option<usize> {
     distances
         .enumerate()
         .filter(|(_, d)| *d < reach)
@@ -131,7 +131,7 @@ pub(super) fn nearest(distances: impl Iterator<Item = f64>, reach: f64) -> Optio
 }
 
 /// A point of the unit square on screen, in `area` (y up).
-pub(super) fn unit_to_screen(area: egui::Rect, p: glam::DVec2) -> egui::Pos2 {
+pub(crate) fn unit_to_screen(area: egui::Rect, p: glam::DVec2) -> egui::Pos2 {
     egui::pos2(
         area.left() + p.x as f32 * area.width(),
         area.bottom() - p.y as f32 * area.height(),
@@ -139,7 +139,7 @@ pub(super) fn unit_to_screen(area: egui::Rect, p: glam::DVec2) -> egui::Pos2 {
 }
 
 /// A stage's status in its colour.
-pub(super) fn status_colour(status: &Status) -> Color32 {
+pub(crate) fn status_colour(status: &Status) -> Color32 {
     match status {
         Status::Ok => Color32::LIGHT_GREEN,
         Status::Unused | Status::NotReached => Color32::GRAY,
@@ -149,9 +149,9 @@ pub(super) fn status_colour(status: &Status) -> Color32 {
 }
 
 /// The definition's curve, under yours.
-pub(super) const DEFINITION: Color32 = Color32::from_rgb(70, 110, 70);
+pub(crate) const DEFINITION: Color32 = Color32::from_rgb(70, 110, 70);
 /// The levels of the construction, one colour each.
-pub(super) const LEVELS: [Color32; 4] = [
+pub(crate) const LEVELS: [Color32; 4] = [
     Color32::from_rgb(90, 170, 255),
     Color32::from_rgb(255, 170, 60),
     Color32::from_rgb(190, 120, 255),
@@ -159,32 +159,26 @@ pub(super) const LEVELS: [Color32; 4] = [
 ];
 
 /// A pixel you plotted (where your code gives it no colour).
-pub(super) const INK: Color32 = Color32::from_rgb(200, 200, 210);
+pub(crate) const INK: Color32 = Color32::from_rgb(200, 200, 210);
 /// A pixel of the grid nothing covers.
-pub(super) const EMPTY: Color32 = Color32::from_rgb(38, 38, 44);
+pub(crate) const EMPTY: Color32 = Color32::from_rgb(38, 38, 44);
 /// The mark of a pixel only you plotted.
-pub(super) const ONLY_YOURS: Color32 = Color32::from_rgb(255, 60, 60);
+pub(crate) const ONLY_YOURS: Color32 = Color32::from_rgb(255, 60, 60);
 /// The mark of a pixel only the definition has.
-pub(super) const ONLY_EXPECTED: Color32 = Color32::from_rgb(90, 170, 255);
+pub(crate) const ONLY_EXPECTED: Color32 = Color32::from_rgb(90, 170, 255);
 /// The ideal primitive.
-pub(super) const IDEAL: Color32 = Color32::from_rgb(255, 220, 90);
+pub(crate) const IDEAL: Color32 = Color32::from_rgb(255, 220, 90);
 /// The handles.
-pub(super) const HANDLE: Color32 = Color32::from_rgb(255, 255, 255);
+pub(crate) const HANDLE: Color32 = Color32::from_rgb(255, 255, 255);
 
 /// A canvas colour on screen.
-pub(super) fn colour32(c: canvas::Rgba) -> Color32 {
+pub(crate) fn colour32(c: canvas::Rgba) -> Color32 {
     let [r, g, b, _] = c.to_rgba8();
     Color32::from_rgb(r, g, b)
 }
 
-/// A `w × h` RGBA image, top row first, as a canvas (for saving as PNG).
-pub(super) fn canvas_image(w: usize, h: usize, bytes: Vec<u8>) -> Option<Canvas> {
-    let image = image::RgbaImage::from_raw(u32::try_from(w).ok()?, u32::try_from(h).ok()?, bytes)?;
-    Some(Canvas::from_image(&image))
-}
-
 /// The canvas as an egui image (y up on the canvas, y down on screen).
-pub(super) fn colour_image(canvas: &Canvas) -> egui::ColorImage {
+pub(crate) fn colour_image(canvas: &Canvas) -> egui::ColorImage {
     let image = canvas.to_image();
     egui::ColorImage::from_rgba_unmultiplied(
         [image.width() as usize, image.height() as usize],

@@ -2,28 +2,21 @@
 
 use eframe::egui;
 
+use super::state::TessellationScene;
+use crate::stages::tessellate::{self as tess, TessSetup};
 use crate::stages::{Stages, Status};
-use crate::tessellation::{self as tess, TessSetup};
+use crate::widgets::{magnified, orbit, slow_notice, stage_label, texture};
 
-use super::ViewerApp;
-use super::widgets::{magnified, orbit, slow_notice, stage_label, texture};
-
-impl ViewerApp {
-    /// The tessellation scene: its controls on the right, the triangles
-    /// on the left.
-    pub(super) fn show_tessellation(&mut self, ui: &mut egui::Ui) {
-        self.tessellation.ask();
-        self.tessellation.poll(ui);
-        self.two_panels(ui, Self::tessellation_controls, Self::tessellation_picture);
-    }
-
-    pub(super) fn tessellation_controls(&mut self, ui: &mut egui::Ui) {
+impl TessellationScene {
+    /// The panel: the surface, the method and its parameters, the look,
+    /// the view and your stage.
+    pub(crate) fn controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Your tessellation");
         ui.label(
             "A surface of Bézier or rational patches cut into triangles by your topic 09 code, drawn by the topic's given renderer.",
         );
         ui.separator();
-        let setup = &mut self.tessellation.setup;
+        let setup = &mut self.setup;
         egui::ComboBox::from_label("Surface")
             .selected_text(setup.surface.label())
             .show_ui(ui, |ui| {
@@ -96,7 +89,7 @@ impl ViewerApp {
         }
         ui.separator();
         ui.heading("Your stage");
-        let Some(drawing) = &self.tessellation.drawing else {
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing …");
             return;
         };
@@ -119,24 +112,24 @@ impl ViewerApp {
         }
     }
 
-    pub(super) fn tessellation_picture(&mut self, ui: &mut egui::Ui) {
-        let slow = self.tessellation.worker.slow_for();
-        let scene = &mut self.tessellation;
-        let Some(result) = scene.drawing.as_ref().and_then(|d| d.result.as_ref()) else {
-            ui.label(match &scene.drawing {
+    /// The triangles, drawn by topic 09's renderer.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
+        let Some(result) = self.live.drawing.as_ref().and_then(|d| d.result.as_ref()) else {
+            ui.label(match &self.live.drawing {
                 None => "tessellating …",
                 Some(_) => "no triangles: your stage did not make a mesh (see the panel)",
             });
             slow_notice(ui, "Your tessellation has been running", slow);
             return;
         };
-        if scene.textures.is_empty() {
-            scene.textures = vec![texture(ui, "tessellation", &result.canvas)];
+        if self.live.textures.is_empty() {
+            self.live.textures = vec![texture(ui, "tessellation", &result.canvas)];
         }
-        let response = magnified(ui, &scene.textures[0], 0.0);
+        let response = magnified(ui, &self.live.textures[0], 0.0);
         // Turn and tilt; the renderer fits the mesh, so no zoom.
         let (around, above, _) = orbit(ui, &response);
-        let setup = &mut scene.setup;
+        let setup = &mut self.setup;
         setup.yaw = (setup.yaw + f64::from(around)).clamp(-180.0, 180.0);
         setup.pitch = (setup.pitch - f64::from(above)).clamp(-180.0, 180.0);
         slow_notice(ui, "Your tessellation has been running", slow);

@@ -1,165 +1,14 @@
-//! The surface scene (topic 07): the seed's hill, a bicubic Bézier patch
-//! whose control points you raise and lower, evaluated by your surface
-//! code, trimmed by your trims and rendered by your `render_surface` — the thesis's program (seed 000 §3.1, §4), in
-//! which the user chooses the trim shape, its parameters and the
-//! tessellation level and looks at the result, lit or as a wireframe.
-//!
-//! ```text
-//!   (u, v) ──your surface──▶ position, normal ──your render_surface──▶ picture
-//!                              your trim ──▲ (per fragment: discard?)
-//! ```
-//!
-//! Beside the picture, the parameter square as your trim sees it: each
-//! sample cut away or kept.
+//! What the surface scene draws: the hill by your surface, trim and
+//! render.
 
 use std::cell::RefCell;
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec2, DVec3};
 
+use crate::stages::trim::{TrimSetup, TrimShape};
 use crate::stages::{Stages, Status, SurfaceView, TrimFn, guarded};
 use crate::worker::Worker;
-
-/// The trim shapes of seed 000 §3 (and §5's nested regions).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TrimShape {
-    /// Nothing is cut away.
-    None,
-    /// `u` and `v` both in an interval (§3.1).
-    Rectangle,
-    /// Within a radius of a centre (§3.2).
-    Circle,
-    /// Inside an axis-aligned ellipse (§3.3, eq. 14).
-    Ellipse,
-    /// Between two quadratic Bézier curves, found by Newton's method
-    /// (§3.4, Abbildung 11).
-    NewtonQuadratic,
-    /// Between two cubic Bézier curves (Abbildung 24).
-    NewtonCubic,
-    /// A quadratic region with another one inside it kept (Abbildung 12).
-    Nested,
-}
-
-impl TrimShape {
-    /// Every shape, in the order of the controls.
-    pub const ALL: [Self; 7] = [
-        Self::None,
-        Self::Rectangle,
-        Self::Circle,
-        Self::Ellipse,
-        Self::NewtonQuadratic,
-        Self::NewtonCubic,
-        Self::Nested,
-    ];
-
-    /// Its name on screen.
-    #[must_use]
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::None => "No trim",
-            Self::Rectangle => "Rectangle",
-            Self::Circle => "Circle",
-            Self::Ellipse => "Ellipse",
-            Self::NewtonQuadratic => "Newton, quadratic curves",
-            Self::NewtonCubic => "Newton, cubic curves",
-            Self::Nested => "Newton, nested",
-        }
-    }
-
-    /// Your code that decides it: topic 07's type and method.
-    #[must_use]
-    pub fn source(self) -> &'static str {
-        match self {
-            Self::None => "nothing to trim",
-            Self::Rectangle => "07-bezier · simple_trim::IntervalTrim::trims",
-            Self::Circle => "07-bezier · simple_trim::CircleTrim::trims",
-            Self::Ellipse => "07-bezier · simple_trim::EllipseTrim::trims",
-            Self::NewtonQuadratic | Self::NewtonCubic => {
-                "07-bezier · newton_trim::NewtonTrim::trims (newton, between_crossings)"
-            }
-            Self::Nested => "07-bezier · newton_trim::NestedNewtonTrim::trims",
-        }
-    }
-
-    /// Whether Newton's method decides it.
-    #[must_use]
-    pub fn newton(self) -> bool {
-        matches!(
-            self,
-            Self::NewtonQuadratic | Self::NewtonCubic | Self::Nested
-        )
-    }
-}
-
-/// The region between two quadratic curves of Abbildung 11: the upper
-/// curve `P0 P1 P2`, the lower `P0 P3 P2`.
-pub const QUADRATIC: [DVec2; 4] = [
-    DVec2::new(0.2, 0.5),
-    DVec2::new(0.5, 0.9),
-    DVec2::new(0.8, 0.5),
-    DVec2::new(0.5, 0.1),
-];
-/// The region between two cubic curves of Abbildung 24: the upper curve
-/// `P0 P1 P2 P3`, the lower `P0 P4 P5 P3`.
-pub const CUBIC: [DVec2; 6] = [
-    DVec2::new(0.1, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.95),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.75),
-    DVec2::new(0.9, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.2),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.05),
-];
-/// The region kept inside [`QUADRATIC`] in the nested trim (Abbildung 12).
-pub const INNER: [DVec2; 4] = [
-    DVec2::new(0.35, 0.5),
-    DVec2::new(0.5, 0.7),
-    DVec2::new(0.65, 0.5),
-    DVec2::new(0.5, 0.3),
-];
-
-/// A trim and its parameters, in the parameter square `[0, 1]²`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TrimSetup {
-    /// Which shape.
-    pub shape: TrimShape,
-    /// The shape's centre (Newton regions: where the middle of their
-    /// curves' square goes).
-    pub centre: DVec2,
-    /// Half the rectangle's sides; the circle's radius in `x`; the
-    /// ellipse's radii.
-    pub size: DVec2,
-    /// How much the Newton regions are scaled about their centre.
-    pub scale: f64,
-    /// Newton's most steps (seed §5.2: 6 and 7 differ).
-    pub iterations: u32,
-    /// Newton stops after a step shorter than this (seed §5.2: ε from 0.1
-    /// to 0.0001).
-    pub epsilon: f64,
-}
-
-impl Default for TrimSetup {
-    /// The circle of the seed's Abbildung 15 with Newton's default
-    /// settings (10 steps, ε = 0.001).
-    fn default() -> Self {
-        Self {
-            shape: TrimShape::Circle,
-            centre: DVec2::splat(0.5),
-            size: DVec2::new(0.2, 0.15),
-            scale: 1.0,
-            iterations: 10,
-            epsilon: 0.001,
-        }
-    }
-}
-
-impl TrimSetup {
-    /// The control points of a Newton shape's curves, moved and scaled
-    /// (the curves of the seed's figures at the defaults).
-    #[must_use]
-    pub fn curve_points<const N: usize>(&self, points: [DVec2; N]) -> [DVec2; N] {
-        points.map(|p| self.centre + (p - DVec2::splat(0.5)) * self.scale)
-    }
-}
 
 /// What to draw.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -234,19 +83,7 @@ impl SurfaceSetup {
                 *h = finite_or(*h, fallback).clamp(*HEIGHTS.start(), *HEIGHTS.end());
             }
         }
-        let trim = &mut self.trim;
-        let fallback = TrimSetup::default();
-        if !trim.centre.is_finite() {
-            trim.centre = fallback.centre;
-        }
-        trim.centre = trim.centre.clamp(DVec2::ZERO, DVec2::ONE);
-        if !trim.size.is_finite() {
-            trim.size = fallback.size;
-        }
-        trim.size = trim.size.clamp(DVec2::splat(0.01), DVec2::splat(1.0));
-        trim.scale = finite_or(trim.scale, 1.0).clamp(0.1, 2.0);
-        trim.iterations = trim.iterations.clamp(1, 30);
-        trim.epsilon = finite_or(trim.epsilon, fallback.epsilon).clamp(1e-6, 0.5);
+        self.trim.tidy();
     }
 
     /// The patch: the hill's grid of control points at the set heights.
@@ -268,7 +105,7 @@ impl SurfaceSetup {
     /// Where the camera stands.
     #[must_use]
     pub fn eye(&self) -> DVec3 {
-        TARGET + self.distance * crate::render::orbit_direction(self.yaw, self.pitch)
+        TARGET + self.distance * crate::camera::orbit_direction(self.yaw, self.pitch)
     }
 }
 

@@ -3,26 +3,20 @@
 use eframe::egui;
 use egui::RichText;
 
-use crate::gpu_scene::{self, GpuSetup};
+use super::state::GpuScene;
+use crate::stages::gpu::{self as gpu_scene, GpuSetup};
+use crate::widgets::{magnified, orbit, slow_notice, stage_label, texture, trim_controls};
 
-use super::ViewerApp;
-use super::widgets::{magnified, orbit, slow_notice, stage_label, texture, trim_controls};
-
-impl ViewerApp {
-    /// The GPU scene: its controls on the right, the picture on the left.
-    pub(super) fn show_gpu(&mut self, ui: &mut egui::Ui) {
-        self.gpu.ask();
-        self.gpu.poll(ui);
-        self.two_panels(ui, Self::gpu_controls, Self::gpu_picture);
-    }
-
-    pub(super) fn gpu_controls(&mut self, ui: &mut egui::Ui) {
+impl GpuScene {
+    /// The panel: the surface, the levels and spacing, the trim, the
+    /// camera and your stages; `show_timing` says whether the device shows.
+    pub(crate) fn controls(&mut self, ui: &mut egui::Ui, show_timing: bool) {
         ui.heading("Your GPU passes");
         ui.label(
             "Patches tessellated and drawn on the GPU by your topic 10 code: control pass, primitive generator, evaluation pass, shading, trimming and wireframe.",
         );
         ui.separator();
-        let setup = &mut self.gpu.setup;
+        let setup = &mut self.setup;
         egui::ComboBox::from_label("Surface")
             .selected_text(setup.surface.label())
             .show_ui(ui, |ui| {
@@ -75,7 +69,7 @@ impl ViewerApp {
         }
         ui.separator();
         ui.heading("Your stages");
-        let Some(drawing) = &self.gpu.drawing else {
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing on the GPU …");
             return;
         };
@@ -85,28 +79,28 @@ impl ViewerApp {
         if drawing.canvas.is_some() {
             ui.label(format!("{} triangles", drawing.triangles));
         }
-        if self.show_timing {
+        if show_timing {
             ui.label(RichText::new(format!("device: {}", drawing.device)).small());
         }
     }
 
-    pub(super) fn gpu_picture(&mut self, ui: &mut egui::Ui) {
-        let slow = self.gpu.worker.slow_for();
-        let scene = &mut self.gpu;
-        let Some(canvas) = scene.drawing.as_ref().and_then(|d| d.canvas.as_ref()) else {
-            ui.label(match &scene.drawing {
+    /// The picture your passes drew.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
+        let Some(canvas) = self.live.drawing.as_ref().and_then(|d| d.canvas.as_ref()) else {
+            ui.label(match &self.live.drawing {
                 None => "drawing on the GPU …",
                 Some(_) => "nothing drawn: a stage it needs did not run (see the panel)",
             });
             slow_notice(ui, "Your GPU passes have been running", slow);
             return;
         };
-        if scene.textures.is_empty() {
-            scene.textures = vec![texture(ui, "gpu", canvas)];
+        if self.live.textures.is_empty() {
+            self.live.textures = vec![texture(ui, "gpu", canvas)];
         }
-        let response = magnified(ui, &scene.textures[0], 0.0);
+        let response = magnified(ui, &self.live.textures[0], 0.0);
         let (around, above, zoom) = orbit(ui, &response);
-        let setup = &mut scene.setup;
+        let setup = &mut self.setup;
         setup.yaw = (setup.yaw + around).clamp(-180.0, 180.0);
         setup.pitch = (setup.pitch + above).clamp(-89.0, 89.0);
         setup.distance = (setup.distance * zoom).clamp(0.8, 10.0);

@@ -1,14 +1,8 @@
-//! The tessellation scene (topic 09): a surface of Bézier or rational
-//! patches cut into triangles by your uniform, per-patch or fully
-//! adaptive tessellation — seed 001's program, in which the user chooses
-//! the surface, the method and its level, tolerance or edge test and
-//! looks at the triangles. The picture is drawn by topic 09's given
-//! renderer (course code for looking at meshes); the triangles are yours.
+//! The tessellation scene's stage: what to tessellate and how (seed 001's
+//! surfaces, methods and edge tests), and your topic 09 cutting it into
+//! triangles, drawn by the topic's given renderer.
 
 use canvas::Canvas;
-
-use crate::stages::{Stages, Status, guarded};
-use crate::worker::Worker;
 
 /// The surfaces to tessellate (topic 09's examples).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -265,86 +259,92 @@ pub struct Tessellated {
     pub uvs: Vec<glam::DVec2>,
 }
 
-/// What the scene shows.
-#[derive(Clone, Debug, PartialEq)]
-pub struct TessDrawing {
-    /// What was drawn.
-    pub setup: TessSetup,
-    /// The mesh and its picture, when your code made one.
-    pub result: Option<Tessellated>,
-    /// How your tessellation fared.
-    pub status: Status,
-    /// How your topic 08 split the surface into patches, for a NURBS
-    /// surface ([`Status::Unused`] for the others).
-    pub decomposition: Status,
-}
+/// Your tessellation of a set-up's surface, drawn by topic 09's renderer.
+#[cfg(feature = "tessellation")]
+pub(super) fn tessellate(
+    setup: &TessSetup,
+    decomposed: Option<&super::Decomposed>,
+) -> Result<Tessellated, String> {
+    use tessellation::bezier::BezierPatch;
+    use tessellation::edge_tests::EdgeTest;
+    use tessellation::mesh::Mesh;
+    use tessellation::patch_grid::{GridPatch, PatchGrid};
+    use tessellation::render::{Style, View};
 
-/// The chain picture of the grade report's "Your pipeline" section (`cargo
-/// xtask grade` draws it with your stages, beside `xtask/viewer/expected/`):
-/// the vase split by your topic 08 and tessellated by your topic 09.
-pub const REPORT_CHAIN: (&str, Surface) = ("nurbs-chain-vase.png", Surface::Vase);
-
-/// The set-up of a chain picture: `surface` uniform at four cells a
-/// side per patch, shaded with its edges, `size` pixels square.
-#[must_use]
-pub fn chain_setup(surface: Surface, size: u32) -> TessSetup {
-    TessSetup {
-        surface,
-        method: Method::Uniform,
-        level: 4,
-        look: Look::Both,
-        size,
-        ..TessSetup::default()
-    }
-}
-
-/// The worker that tessellates.
-pub type TessWorker = Worker<TessSetup, TessDrawing>;
-
-/// A worker tessellating with `stages`.
-#[must_use]
-pub fn worker(stages: Stages) -> TessWorker {
-    Worker::start(move |setup: TessSetup| draw(&setup, &stages))
-}
-
-/// Tessellates and draws `setup` with your code.
-#[must_use]
-pub fn draw(setup: &TessSetup, stages: &Stages) -> TessDrawing {
-    let mut setup = *setup;
-    setup.tidy();
-    let (decomposed, decomposition) = match setup.surface.nurbs() {
-        Some(data) => crate::stages::decompose(stages, &data),
-        None => (None, Status::Unused),
-    };
-    let Some(run) = &stages.tessellate.run else {
-        return TessDrawing {
-            setup,
-            result: None,
-            status: Status::Missing,
-            decomposition,
-        };
-    };
-    let mut status = Status::Unused;
-    if setup.surface.nurbs().is_some() && decomposed.is_none() {
-        return TessDrawing {
-            setup,
-            result: None,
-            status: Status::NotReached,
-            decomposition,
-        };
-    }
-    let result = match guarded(&mut status, || run(&setup, decomposed.as_ref())) {
-        Some(Ok(result)) => Some(result),
-        Some(Err(error)) => {
-            status = Status::Failed(error);
-            None
+    /// Every patch of `grid` by the set-up's method, in one mesh.
+    fn patches<P: GridPatch>(
+        grid: &PatchGrid<P>,
+        setup: &TessSetup,
+        test: EdgeTest,
+    ) -> Result<Mesh, String> {
+        let error = |e: tessellation::error::TessError| e.to_string();
+        if setup.method == Method::PerPatch {
+            return tessellation::per_patch::tessellate_patch_grid(grid, setup.tolerance)
+                .map_err(error);
         }
-        None => None,
-    };
-    TessDrawing {
-        setup,
-        result,
-        status,
-        decomposition,
+        let n = setup.level as usize;
+        let mut mesh = Mesh::new();
+        for row in 0..grid.rows() {
+            for col in 0..grid.cols() {
+                let patch = grid.patch(row, col);
+                let mut part =
+                    tessellation::uniform::tessellate_uniform(patch, n, n).map_err(error)?;
+                if setup.method == Method::FullyAdaptive {
+                    part = tessellation::fully_adaptive::refine(patch, &part, test, setup.depth)
+                        .map_err(error)?;
+                }
+                let offset = u32::try_from(mesh.positions.len()).map_err(|e| e.to_string())?;
+                mesh.positions.extend(&part.positions);
+                mesh.normals.extend(&part.normals);
+                // Global parameters: patch (row, col) covers
+                // [col, col + 1] × [row, row + 1], as topic 09's grid has it.
+                let corner = glam::DVec2::new(col as f64, row as f64);
+                mesh.uvs.extend(part.uvs.iter().map(|&uv| uv + corner));
+                mesh.triangles
+                    .extend(part.triangles.iter().map(|t| t.map(|k| k + offset)));
+            }
+        }
+        Ok(mesh)
     }
+
+    let [t, t2] = setup.thresholds;
+    let test = match setup.test {
+        Test::OneEdgeNormal => EdgeTest::OneEdgeNormal { t1: t },
+        Test::OneEdgeComplementary => EdgeTest::OneEdgeComplementary { t1: t, t2 },
+        Test::TwoTriangle => EdgeTest::TwoTriangle { t3: t },
+        Test::FirstOrderNeighbour => EdgeTest::FirstOrderNeighbour { t3: t },
+        Test::VectorDeviationFlat => EdgeTest::VectorDeviationFlat { t1: t },
+        Test::LocalFlat => EdgeTest::LocalFlat { t1: t },
+        Test::UmbrellaFlat => EdgeTest::UmbrellaFlat { t1: t },
+    };
+    let single = |patch| PatchGrid::try_new(1, 1, vec![patch]).map_err(|e| e.to_string());
+    let mesh = match setup.surface {
+        Surface::SeedSurface => patches(&single(BezierPatch::seed_surface())?, setup, test)?,
+        Surface::Hill => patches(&single(BezierPatch::seed_hill())?, setup, test)?,
+        Surface::Patches => patches(&PatchGrid::example(), setup, test)?,
+        Surface::Torus => patches(&PatchGrid::torus(0.7, 0.25), setup, test)?,
+        Surface::NurbsTorus | Surface::Vase => {
+            let decomposed = decomposed.ok_or("the surface was not split into patches")?;
+            let grid =
+                PatchGrid::try_new(decomposed.rows, decomposed.cols, decomposed.patches.clone())
+                    .map_err(|e| format!("your decomposition's patches: {e}"))?;
+            patches(&grid, setup, test)?
+        }
+    };
+    let style = match setup.look {
+        Look::Shaded => Style::Shaded,
+        Look::Wireframe => Style::Wireframe,
+        Look::Both => Style::ShadedWireframe,
+    };
+    let view = View {
+        yaw: setup.yaw.to_radians(),
+        pitch: setup.pitch.to_radians(),
+    };
+    Ok(Tessellated {
+        canvas: tessellation::render::render(&mesh, view, style, setup.size, setup.size),
+        vertices: mesh.vertex_count(),
+        triangles: mesh.triangle_count(),
+        positions: mesh.positions.clone(),
+        uvs: mesh.uvs.clone(),
+    })
 }

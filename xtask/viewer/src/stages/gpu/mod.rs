@@ -1,25 +1,16 @@
-//! The GPU scene (topic 10): Bézier and rational patches tessellated and
-//! drawn on the GPU by your WGSL and Rust — the seed's OpenGL program
-//! (seed 000 §4, seed 001 §3) with wgpu's explicit passes in place of the
-//! tessellation stages:
-//!
-//! ```text
-//!   patches ──your control.wgsl──▶ levels ──your quad_domain──▶ (u, v) points
-//!     ──your evaluation.wgsl──▶ vertices ──render: your shading.wgsl,
-//!       your trimming.wgsl, your wireframe_edges──▶ picture
-//! ```
-//!
-//! Where there is no GPU, wgpu runs on a software adapter: lavapipe (Mesa's
-//! software Vulkan) on Linux, WARP (software DX12) on Windows.
-//! A piece not written yet is named; the shading and the trimming have
-//! given stand-ins (flat colour, nothing trimmed), the other stages do not:
-//! without them nothing is drawn.
+//! The GPU scene's stage: what to draw (the surface, the levels, the
+//! spacing, the trim, the camera) and your topic 10 passes drawing it.
 
 use canvas::Canvas;
 
-use crate::stages::{Stages, Status};
-use crate::surfaces::TrimSetup;
-use crate::worker::Worker;
+use super::Status;
+use super::trim::{TrimSetup, TrimShape};
+
+#[cfg(feature = "gpu-tessellation")]
+mod frame;
+
+#[cfg(feature = "gpu-tessellation")]
+pub use frame::{GpuPieces, gpu_frame};
 
 /// The surfaces of the scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -130,7 +121,7 @@ impl Default for GpuSetup {
             pixels_per_segment: 12.0,
             spacing: Spacing::Equal,
             trim: TrimSetup {
-                shape: crate::surfaces::TrimShape::None,
+                shape: TrimShape::None,
                 ..TrimSetup::default()
             },
             wireframe: true,
@@ -156,18 +147,13 @@ impl GpuSetup {
         self.distance = finite_or(self.distance, defaults.distance).clamp(0.8, 10.0);
         self.width = self.width.clamp(16, 2048);
         self.height = self.height.clamp(16, 2048);
-        let mut surface = crate::surfaces::SurfaceSetup {
-            trim: self.trim,
-            ..crate::surfaces::SurfaceSetup::default()
-        };
-        surface.tidy();
-        self.trim = surface.trim;
+        self.trim.tidy();
     }
 
     /// Where the camera stands, looking at `target` (y up).
     #[must_use]
     pub fn eye(&self, target: glam::Vec3) -> glam::Vec3 {
-        let direction = crate::render::orbit_direction(f64::from(self.yaw), f64::from(self.pitch));
+        let direction = crate::camera::orbit_direction(f64::from(self.yaw), f64::from(self.pitch));
         target + self.distance * direction.as_vec3()
     }
 }
@@ -213,58 +199,3 @@ pub const STAGES: [(&str, &str); 6] = [
         "10-gpu-tessellation · shading::wireframe_edges",
     ),
 ];
-
-/// The worker that draws on the GPU.
-pub type GpuWorker = Worker<GpuSetup, GpuDrawing>;
-
-/// A worker drawing with `stages`.
-#[must_use]
-pub fn worker(stages: Stages) -> GpuWorker {
-    Worker::start(move |setup: GpuSetup| draw(&setup, &stages))
-}
-
-/// Draws `setup` with your topic 10 code.
-#[must_use]
-pub fn draw(setup: &GpuSetup, stages: &Stages) -> GpuDrawing {
-    let mut setup = *setup;
-    setup.tidy();
-    let stopped = |status: Status, device: &str| GpuDrawing {
-        setup,
-        canvas: None,
-        stages: STAGES
-            .iter()
-            .map(|&(name, source)| GpuStageReport {
-                name,
-                source,
-                status: status.clone(),
-            })
-            .collect(),
-        triangles: 0,
-        device: device.to_owned(),
-    };
-    let Some(run) = &stages.gpu.run else {
-        return stopped(Status::Missing, "topic 10 is not in this build");
-    };
-    // A NURBS surface is split into patches by your topic 08 first; that
-    // stage is listed before the GPU's.
-    let Some(data) = setup.surface.nurbs() else {
-        return run(&setup, None);
-    };
-    let (decomposed, status) = crate::stages::decompose(stages, &data);
-    let mut drawing = match &decomposed {
-        Some(patches) => run(&setup, Some(patches)),
-        None => stopped(
-            Status::NotReached,
-            "nothing to draw: the surface was not split into patches",
-        ),
-    };
-    drawing.stages.insert(
-        0,
-        GpuStageReport {
-            name: stages.decompose.name,
-            source: stages.decompose.source,
-            status,
-        },
-    );
-    drawing
-}

@@ -1,39 +1,25 @@
 //! The curve scene's panel and drawing area.
 
-use std::time::Duration;
-
 use eframe::egui;
 use egui::Color32;
 
-use crate::curves::{self, CurveKind, CurveSetup};
-
-use super::ViewerApp;
-use super::widgets::{
+use super::draw::{self as curves, CurveKind, CurveSetup};
+use super::state::CurvesScene;
+use crate::widgets::{
     DEFINITION, EMPTY, HANDLE, LEVELS, ONLY_YOURS, nearest, notice_room, slow_notice, stage_label,
     unit_to_screen,
 };
 
-impl ViewerApp {
-    /// The curve scene: its controls on the right, the curve on the left.
-    pub(super) fn show_curves(&mut self, ui: &mut egui::Ui) {
-        self.ask_curves();
-        if let Some(drawing) = self.curves.worker.poll() {
-            self.curves.drawing = Some(drawing);
-        }
-        if self.curves.worker.busy_for().is_some() {
-            ui.ctx().request_repaint_after(Duration::from_millis(100));
-        }
-        self.two_panels(ui, Self::curve_controls, Self::curve_area);
-    }
-
-    pub(super) fn curve_controls(&mut self, ui: &mut egui::Ui) {
-        let curves = &mut self.curves;
+impl CurvesScene {
+    /// The panel: Bézier or NURBS, the points, `t` or the degree and
+    /// weights, your stage.
+    pub(crate) fn controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Your curve");
         ui.horizontal(|ui| {
-            ui.radio_value(&mut curves.setup.kind, CurveKind::Bezier, "Bézier (07)");
-            ui.radio_value(&mut curves.setup.kind, CurveKind::Nurbs, "NURBS (08)");
+            ui.radio_value(&mut self.setup.kind, CurveKind::Bezier, "Bézier (07)");
+            ui.radio_value(&mut self.setup.kind, CurveKind::Nurbs, "NURBS (08)");
         });
-        ui.label(match curves.setup.kind {
+        ui.label(match self.setup.kind {
             CurveKind::Bezier => {
                 "Your de Casteljau draws the curve and the construction of one point; drag the control points. Beside it, the curve of the definition (the Bernstein sum)."
             }
@@ -42,24 +28,24 @@ impl ViewerApp {
             }
         });
         ui.separator();
-        let mut count = curves.setup.points.len();
+        let mut count = self.setup.points.len();
         ui.add(
             egui::Slider::new(&mut count, curves::MIN_POINTS..=curves::MAX_POINTS)
                 .text("control points"),
         );
-        if count != curves.setup.points.len() {
-            curves.setup.set_count(count);
+        if count != self.setup.points.len() {
+            self.setup.set_count(count);
         }
-        match curves.setup.kind {
+        match self.setup.kind {
             CurveKind::Bezier => {
-                ui.add(egui::Slider::new(&mut curves.setup.t, 0.0..=1.0).text("t"));
-                ui.checkbox(&mut curves.construction, "Construction at t");
+                ui.add(egui::Slider::new(&mut self.setup.t, 0.0..=1.0).text("t"));
+                ui.checkbox(&mut self.construction, "Construction at t");
             }
             CurveKind::Nurbs => {
-                let highest = curves.setup.points.len() - 1;
-                ui.add(egui::Slider::new(&mut curves.setup.degree, 1..=highest).text("degree"));
-                curves.setup.weights.resize(curves.setup.points.len(), 1.0);
-                for (k, w) in curves.setup.weights.iter_mut().enumerate() {
+                let highest = self.setup.points.len() - 1;
+                ui.add(egui::Slider::new(&mut self.setup.degree, 1..=highest).text("degree"));
+                self.setup.weights.resize(self.setup.points.len(), 1.0);
+                for (k, w) in self.setup.weights.iter_mut().enumerate() {
                     ui.add(
                         egui::Slider::new(w, curves::WEIGHTS)
                             .logarithmic(true)
@@ -68,10 +54,10 @@ impl ViewerApp {
                 }
             }
         }
-        ui.checkbox(&mut curves.definition, "The definition's curve");
+        ui.checkbox(&mut self.definition, "The definition's curve");
         if ui.button("Reset").clicked() {
-            let kind = curves.setup.kind;
-            curves.setup = CurveSetup {
+            let kind = self.setup.kind;
+            self.setup = CurveSetup {
                 kind,
                 ..CurveSetup::default()
             };
@@ -79,7 +65,7 @@ impl ViewerApp {
         ui.separator();
         ui.heading("Your stage");
         let stages = crate::stages::Stages::default();
-        let Some(drawing) = &curves.drawing else {
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing …");
             return;
         };
@@ -112,14 +98,15 @@ impl ViewerApp {
         }
     }
 
-    pub(super) fn curve_area(&mut self, ui: &mut egui::Ui) {
-        let slow = self.curves.worker.slow_for();
-        let curves = &mut self.curves;
+    /// The unit square: the control polygon, your curve, the definition's
+    /// and the construction; the points to drag.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
         let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
         let side = available.x.min(available.y).max(100.0);
         let (response, painter) = ui.allocate_painter(egui::vec2(side, side), egui::Sense::drag());
         let area = response.rect.shrink(side * 0.04);
-        curves.area = Some(area);
+        self.area = Some(area);
         let to_unit = |s: egui::Pos2| {
             glam::DVec2::new(
                 f64::from((s.x - area.left()) / area.width()),
@@ -130,16 +117,16 @@ impl ViewerApp {
             && let Some(at) = response.interact_pointer_pos()
         {
             let at = to_unit(at);
-            curves.dragging = nearest(curves.setup.points.iter().map(|p| p.distance(at)), 0.05);
+            self.dragging = nearest(self.setup.points.iter().map(|p| p.distance(at)), 0.05);
         }
-        if let (Some(k), Some(at)) = (curves.dragging, response.interact_pointer_pos())
+        if let (Some(k), Some(at)) = (self.dragging, response.interact_pointer_pos())
             && response.dragged()
-            && let Some(p) = curves.setup.points.get_mut(k)
+            && let Some(p) = self.setup.points.get_mut(k)
         {
             *p = to_unit(at).clamp(glam::DVec2::ZERO, glam::DVec2::ONE);
         }
         if response.drag_stopped() {
-            curves.dragging = None;
+            self.dragging = None;
         }
         painter.rect_filled(response.rect, 0.0, EMPTY);
         let screen = |p: glam::DVec2| unit_to_screen(area, p);
@@ -153,16 +140,16 @@ impl ViewerApp {
         };
         // The control polygon, as it is now (also while a drag waits for
         // its drawing).
-        polyline(&curves.setup.points, egui::Stroke::new(1.5, Color32::GRAY));
-        if let Some(drawing) = &curves.drawing {
-            if curves.definition {
+        polyline(&self.setup.points, egui::Stroke::new(1.5, Color32::GRAY));
+        if let Some(drawing) = &self.live.drawing {
+            if self.definition {
                 polyline(&drawing.expected, egui::Stroke::new(5.0, DEFINITION));
             }
             polyline(&drawing.yours, egui::Stroke::new(2.0, Color32::WHITE));
             for &p in &drawing.knot_points {
                 painter.circle_filled(screen(p), 4.5, LEVELS[1]);
             }
-            if curves.construction && drawing.setup.kind == CurveKind::Bezier {
+            if self.construction && drawing.setup.kind == CurveKind::Bezier {
                 for (k, level) in drawing.levels.iter().enumerate().skip(1) {
                     let colour = LEVELS[(k - 1) % LEVELS.len()];
                     polyline(level, egui::Stroke::new(1.5, colour));
@@ -177,7 +164,7 @@ impl ViewerApp {
                 }
             }
         }
-        for (k, &p) in curves.setup.points.iter().enumerate() {
+        for (k, &p) in self.setup.points.iter().enumerate() {
             let centre = screen(p);
             painter.circle_filled(centre, 9.0, HANDLE);
             painter.text(

@@ -1,54 +1,33 @@
 //! The pixel playground's panel and magnified grid.
 
-use std::time::Duration;
-
 use eframe::egui;
 use egui::{Color32, RichText};
 
-use crate::playground::{Cell, Primitive, Setup};
-
-use super::ViewerApp;
-use super::widgets::{
+use super::draw::{Cell, Primitive, Setup};
+use super::state::PixelsScene;
+use crate::widgets::{
     EMPTY, HANDLE, IDEAL, INK, ONLY_EXPECTED, ONLY_YOURS, colour32, nearest, notice_room,
     slow_notice, stage_label,
 };
 
-impl ViewerApp {
-    /// The pixel playground: its controls on the right, the grid on the
-    /// left.
-    pub(super) fn show_playground(&mut self, ui: &mut egui::Ui) {
-        self.ask_playground();
-        if let Some(drawing) = self.playground.worker.poll() {
-            let count = drawing.yours.len();
-            self.playground.steps = self.playground.steps.map(|s| s.min(count));
-            self.playground.drawing = Some(drawing);
-        }
-        if self.playground.worker.busy_for().is_some() {
-            ui.ctx().request_repaint_after(Duration::from_millis(100));
-        }
-        self.two_panels(ui, Self::playground_controls, Self::pixel_grid);
-    }
-
-    pub(super) fn playground_controls(&mut self, ui: &mut egui::Ui) {
+impl PixelsScene {
+    /// The panel: the primitive, the grid's size, your stage and the
+    /// stepping through your pixels.
+    pub(crate) fn controls(&mut self, ui: &mut egui::Ui) {
         ui.heading("Your pixels");
         ui.label("Your code draws one primitive; drag its handles. Beside it, the pixels of the course's definition, which the tests compare with.");
         ui.separator();
-        let playground = &mut self.playground;
         egui::ComboBox::from_label("Primitive")
-            .selected_text(playground.setup.primitive.label())
+            .selected_text(self.setup.primitive.label())
             .show_ui(ui, |ui| {
                 for primitive in Primitive::ALL {
-                    ui.selectable_value(
-                        &mut playground.setup.primitive,
-                        primitive,
-                        primitive.label(),
-                    );
+                    ui.selectable_value(&mut self.setup.primitive, primitive, primitive.label());
                 }
             });
-        ui.add(egui::Slider::new(&mut playground.setup.size, Setup::SIZES).text("pixels across"));
+        ui.add(egui::Slider::new(&mut self.setup.size, Setup::SIZES).text("pixels across"));
         ui.separator();
         ui.label("# in both, + only yours, - only expected (the tests' legend)");
-        let Some(drawing) = &playground.drawing else {
+        let Some(drawing) = &self.live.drawing else {
             ui.label("drawing …");
             return;
         };
@@ -60,7 +39,7 @@ impl ViewerApp {
         ui.label(format!(
             "Step through your {count} pixels, in the order you plotted them"
         ));
-        let mut shown = playground.steps.unwrap_or(count);
+        let mut shown = self.steps.unwrap_or(count);
         ui.horizontal(|ui| {
             if ui.button("Back").clicked() {
                 shown = shown.saturating_sub(1);
@@ -73,17 +52,18 @@ impl ViewerApp {
             }
         });
         ui.add(egui::Slider::new(&mut shown, 0..=count).text("pixels shown"));
-        playground.steps = (shown < count).then_some(shown);
+        self.steps = (shown < count).then_some(shown);
         if let Some(step) = shown.checked_sub(1).and_then(|k| drawing.yours.get(k)) {
             ui.label(RichText::new(format!("pixel {shown} of {count}")).strong());
             ui.label(&step.note);
         }
     }
 
-    pub(super) fn pixel_grid(&mut self, ui: &mut egui::Ui) {
-        let slow = self.playground.worker.slow_for();
-        let playground = &mut self.playground;
-        let n = playground.setup.size;
+    /// The magnified grid: your pixels, the definition's, the ideal
+    /// primitive and its handles.
+    pub(crate) fn picture(&mut self, ui: &mut egui::Ui) {
+        let slow = self.live.worker.slow_for();
+        let n = self.setup.size;
         let available = ui.available_size() - egui::vec2(0.0, notice_room(ui));
         let cell = (available.x.min(available.y) / n as f32).floor().max(4.0);
         let (response, painter) = ui.allocate_painter(
@@ -91,7 +71,7 @@ impl ViewerApp {
             egui::Sense::drag(),
         );
         let origin = response.rect.left_top();
-        playground.grid = Some((origin, cell));
+        self.grid = Some((origin, cell));
         let top = n as f32 - 0.5;
         let to_screen = |p: glam::Vec2| {
             egui::pos2(origin.x + (p.x + 0.5) * cell, origin.y + (top - p.y) * cell)
@@ -99,30 +79,30 @@ impl ViewerApp {
         let to_grid = |s: egui::Pos2| {
             glam::Vec2::new((s.x - origin.x) / cell - 0.5, top - (s.y - origin.y) / cell)
         };
-        let setup = &playground.setup;
+        let setup = &self.setup;
         let handles = setup.primitive.handles();
         if response.drag_started()
             && let Some(at) = response.interact_pointer_pos()
         {
             let at = to_grid(at);
-            playground.dragging = nearest(
+            self.dragging = nearest(
                 (0..handles).map(|k| f64::from(setup.handles[k].distance(at))),
                 1.0,
             );
         }
-        if let (Some(k), Some(at)) = (playground.dragging, response.interact_pointer_pos())
+        if let (Some(k), Some(at)) = (self.dragging, response.interact_pointer_pos())
             && response.dragged()
         {
-            playground.setup.move_handle(k, to_grid(at));
+            self.setup.move_handle(k, to_grid(at));
         }
         if response.drag_stopped() {
-            playground.dragging = None;
+            self.dragging = None;
         }
-        let setup = &playground.setup;
+        let setup = &self.setup;
         let painter = &painter;
         let font = egui::FontId::monospace(cell * 0.6);
-        if let Some(drawing) = &playground.drawing {
-            let shown = playground.steps.unwrap_or(drawing.yours.len());
+        if let Some(drawing) = &self.live.drawing {
+            let shown = self.steps.unwrap_or(drawing.yours.len());
             let colours: std::collections::HashMap<canvas::Pixel, Color32> = drawing
                 .yours
                 .iter()

@@ -1,21 +1,12 @@
-//! The pipeline scene, drawn by your stages: seed 004's program (§3.1)
-//! around your code.
-//!
-//! ```text
-//!  mesh ─▶ clip space ─▶ [your clipping] ─▶ ÷ w, viewport ─▶ [your lines or fill] ─▶ [your depth test] ─▶ picture
-//!          (given)                           (given)
-//! ```
-//!
-//! The transforms and the perspective divide are the course's
-//! (`scene::Pipeline`); every stage in brackets is yours. A stage at
-//! `todo!()` or that panics draws nothing and is named in the frame's
-//! report; the other stages still run.
+//! What the pipeline scene draws: a frame of the mesh by your stages, and
+//! how each fared.
 
 use canvas::{Canvas, Fragment, Rgba, Vertex};
 use glam::Vec3;
 use glam::camera::rh::view;
 use scene::{ClipVertex, Mesh, Mode, Pipeline};
 
+use crate::camera::orbit_direction;
 use crate::stages::{Stage, Stages, Status, guarded};
 use crate::worker::Worker;
 
@@ -67,19 +58,6 @@ impl Default for Settings {
             height: 400,
         }
     }
-}
-
-/// The unit direction from an orbit's centre to a camera `yaw` degrees
-/// around the vertical (y) axis and `pitch` degrees above the horizontal
-/// plane, `+z` at yaw 0 (every scene's orbiting camera).
-#[must_use]
-pub fn orbit_direction(yaw: f64, pitch: f64) -> glam::DVec3 {
-    let (yaw, pitch) = (yaw.to_radians(), pitch.to_radians());
-    glam::DVec3::new(
-        yaw.sin() * pitch.cos(),
-        pitch.sin(),
-        yaw.cos() * pitch.cos(),
-    )
 }
 
 impl Settings {
