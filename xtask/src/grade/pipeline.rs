@@ -82,8 +82,8 @@ impl Needs {
     }
 }
 
-/// The pictures, in the report's order (as `course_viewer::render::REPORT_SCENES`
-/// and `course_viewer::tessellation::REPORT_CHAIN`, whose tests pin
+/// The pictures, in the report's order (as `course_viewer::scenes::mesh::REPORT_SCENES`
+/// and `course_viewer::scenes::tessellation::REPORT_CHAIN`, whose tests pin
 /// `xtask/viewer/expected/` to them): seed 004's figures of the star and
 /// the torus, the clipped torus with and without clipping, and the NURBS
 /// chain of seed 001 (NURBS → Bézier patches → triangles).
