@@ -98,15 +98,36 @@ fn two_shards_merged_give_the_gradebook_of_one_run() {
     );
 }
 
+/// A course's lock file also holds the packages only the course uses (its
+/// benchmarks' peers, say): staging trims it to the edition's, and that is
+/// no change a member's tests made.
+fn lock_with_a_course_only_package(official: &Path) {
+    let generated = std::process::Command::new(env!("CARGO"))
+        .args(["generate-lockfile", "--offline"])
+        .current_dir(official)
+        .status()
+        .unwrap();
+    assert!(generated.success());
+    let lock = official.join("Cargo.lock");
+    let mut text = read(&lock);
+    text.push_str("\n[[package]]\nname = \"course-only\"\nversion = \"0.1.0\"\n");
+    fs::write(lock, text).unwrap();
+}
+
 #[test]
 fn a_class_graded_again_keeps_unchanged_members_and_takes_one_member_back() {
     let official = fixture("tiny", "resume");
+    lock_with_a_course_only_package(&official);
     let class = class(&official, "tiny-resume-class");
     let out = fresh(official.join("target/resume"));
     let output = grade_submission(&official, &class, &out, &[]);
     assert!(output.status.success(), "{output:?}");
     let gradebook = read(&out.join("gradebook.csv"));
     assert!(gradebook.contains("\ns02-faulty,0,3,"), "{gradebook}");
+    assert!(
+        gradebook.contains("\ns01-correct,3,3,0,true,false,"),
+        "a correct member, not flagged: {gradebook}"
+    );
     // One line a member, the details in its report.
     let text = stdout(&output);
     let line = text

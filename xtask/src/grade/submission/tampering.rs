@@ -55,13 +55,17 @@ pub(super) fn tampered(
         let name = file.to_string_lossy();
         name.ends_with(".snap.new") || name.ends_with(".pending-snap")
     };
+    // Cargo's own files: the lock file, which staging trims to the staged
+    // packages and cargo may write, and the stage's marker.
+    let cargos =
+        |file: &Path| file == Path::new("Cargo.lock") || file == Path::new(stage::STAGE_MARKER);
     for (file, bytes) in plan {
-        if fs::read(stage_root.join(file)).ok().as_deref() != Some(bytes.as_slice()) {
+        if !cargos(file)
+            && fs::read(stage_root.join(file)).ok().as_deref() != Some(bytes.as_slice())
+        {
             changed.push(Path::new("stage").join(file));
         }
     }
-    let cargos =
-        |file: &Path| file == Path::new("Cargo.lock") || file == Path::new(stage::STAGE_MARKER);
     for file in files_under(stage_root)? {
         let planned = plan.iter().any(|(f, _)| *f == file);
         if !planned && !is_pending(&file) && !cargos(&file) {
