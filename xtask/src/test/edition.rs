@@ -157,9 +157,62 @@ pub(super) fn student_edition(root: &Path) -> Result<String> {
         &release_dir,
         &staged.root.join("target/grade/classroom"),
     )?;
+    // A class grades with this course's stage no longer held.
+    drop(staged);
+    let class = class_of_two(root, first)?;
     Ok(format!(
-        "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0; {workflow}",
+        "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0; {workflow}; {class}",
         release.topics.len()
+    ))
+}
+
+/// Grades a generated class of two members of `topic` as a tutor does
+/// (`cargo xtask class`, `grade --submission`): the member who solved
+/// everything scores full points and is not flagged, the one with a
+/// planted mistake scores less.
+fn class_of_two(root: &Path, topic: &str) -> Result<String> {
+    let home = stage::home(root);
+    let dir = super::empty_folder(home.join("class-check"))?;
+    let out = super::empty_folder(home.join("class-check-grade"))?;
+    let names = crate::class::write(root, &dir, 2, &[topic.to_owned()])?;
+    let mut options = crate::grade::GradeOptions::new(root.to_path_buf());
+    options.out = out.clone();
+    options.topics = vec![topic.to_owned()];
+    crate::grade::submission::run(root, &dir, &options, None)?;
+    let report = |name: &str| -> Result<serde_json::Value> {
+        let path = out.join(name).join("report.json");
+        serde_json::from_str(
+            &fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?,
+        )
+        .with_context(|| format!("cannot parse {}", path.display()))
+    };
+    let (correct, faulty) = (report(&names[0])?, report(&names[1])?);
+    let flagged = |r: &serde_json::Value| {
+        r["integrity"]["changed"]
+            .as_array()
+            .is_some_and(|a| !a.is_empty())
+            || r["integrity"]["tampered"]
+                .as_array()
+                .is_some_and(|a| !a.is_empty())
+    };
+    ensure!(
+        !flagged(&correct) && correct["score"] == correct["max_score"],
+        "{} (every solution) scores {} of {} in a class{}",
+        names[0],
+        correct["score"],
+        correct["max_score"],
+        if flagged(&correct) { ", flagged" } else { "" }
+    );
+    ensure!(
+        faulty["score"].as_f64() < correct["score"].as_f64(),
+        "{} (a planted mistake) scores {} like a correct member",
+        names[1],
+        faulty["score"]
+    );
+    Ok(format!(
+        "a class of two grades {} and {} of {}",
+        correct["score"], faulty["score"], correct["max_score"]
     ))
 }
 
