@@ -210,8 +210,16 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
         names[1],
         faulty["score"]
     );
+    let tasks = correct["topics"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|t| t["tasks"].as_array())
+        .map(Vec::len)
+        .sum();
+    let page = super::browser::class_report_in_chromium(root, &out, tasks, &names[1])?;
     Ok(format!(
-        "a class of two grades {} and {} of {}",
+        "a class of two grades {} and {} of {}; {page}",
         correct["score"], faulty["score"], correct["max_score"]
     ))
 }

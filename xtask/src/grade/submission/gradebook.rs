@@ -25,28 +25,28 @@ pub const NOT_GRADED_FILE: &str = "not-graded.txt";
 
 /// One row of the gradebook.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub(super) struct GradebookRow {
-    pub(super) submission: String,
+pub(crate) struct GradebookRow {
+    pub(crate) submission: String,
     /// Points of the tasks that are not bonuses.
-    score: f64,
-    max_score: f64,
+    pub(crate) score: f64,
+    pub(crate) max_score: f64,
     /// Bonus points, apart.
-    bonus: f64,
-    complete: bool,
-    pub(super) flagged: bool,
-    integrity: Option<String>,
+    pub(crate) bonus: f64,
+    pub(crate) complete: bool,
+    pub(crate) flagged: bool,
+    pub(crate) integrity: Option<String>,
     /// Per topic, its points (bonus apart).
-    topics: Vec<(String, f64)>,
+    pub(crate) topics: Vec<(String, f64)>,
     /// Per task (`topic/task`), its points.
-    tasks: Vec<(String, f64)>,
+    pub(crate) tasks: Vec<(String, f64)>,
     /// The topics that could not be graded, each with why.
-    not_graded: Vec<String>,
+    pub(crate) not_graded: Vec<String>,
     /// The member's report, relative to the class's folder.
-    report: String,
+    pub(crate) report: String,
 }
 
 impl GradebookRow {
-    pub(super) fn new(submission: String, report: &Report) -> Self {
+    pub(crate) fn new(submission: String, report: &Report) -> Self {
         let integrity = report.integrity.as_ref();
         Self {
             score: report::round2(report.topics.iter().map(|t| t.base_score()).sum()),
@@ -204,9 +204,7 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
             seen.push((name, part.clone()));
         }
     }
-    let class = Class::read(out)?;
-    class.write(out)?;
-    Ok(class)
+    Class::read(out)
 }
 
 /// Copies the folder `from` to `to`, files and folders (links are not

@@ -61,7 +61,8 @@ mod resume;
 mod tampering;
 
 use class::grade_class;
-use gradebook::{Class, GradebookRow};
+use gradebook::Class;
+pub(crate) use gradebook::GradebookRow;
 use integrity::is_grading_file;
 pub use integrity::{Integrity, check};
 pub use resume::Shard;
@@ -337,8 +338,7 @@ pub fn run(
                 &one.out,
                 &resume::fingerprint(resume::tree_hash(official)?, &dir)?,
             )?;
-            let class = Class::read(&options.out)?;
-            class.write(&options.out)?;
+            let class = write_class(&options.out)?;
             println!(
                 "the gradebook of {} member(s) in {} now holds this grade",
                 class.rows.len(),
@@ -400,8 +400,7 @@ pub fn run(
             Err(error) => gradebook::save_not_graded(&out, &format!("{error:#}"))?,
         }
     }
-    let class = Class::read(&options.out)?;
-    class.write(&options.out)?;
+    let class = write_class(&options.out)?;
     report_class(&class, &options.out)
 }
 
@@ -418,14 +417,40 @@ pub fn update_class_row(member_out: &Path, report: &Report) -> Result<bool> {
         return Ok(false);
     }
     GradebookRow::new(member_name(member_out), report).save(member_out)?;
-    Class::read(class_out)?.write(class_out)?;
+    write_class(class_out)?;
     Ok(true)
 }
 
 /// `cargo xtask gradebook merge PARTS... --out DIR`.
 pub fn merge(parts: &[PathBuf], out: &Path) -> Result<()> {
-    let class = gradebook::merge(parts, out)?;
+    gradebook::merge(parts, out)?;
+    let class = write_class(out)?;
     report_class(&class, out)
+}
+
+/// Writes the gradebook of the class whose members' folders are in `out`
+/// and the class's report (`class.html`, `class.json`, see
+/// `grade::class_report`), each member's report read from its folder.
+fn write_class(out: &Path) -> Result<Class> {
+    let class = Class::read(out)?;
+    class.write(out)?;
+    let mut graded = Vec::new();
+    for row in &class.rows {
+        let folder = out.join(&row.submission);
+        let path = folder.join("report.json");
+        let report = fs::read_to_string(&path)
+            .with_context(|| format!("cannot read {}", path.display()))
+            .and_then(|text| {
+                serde_json::from_str::<Report>(&text)
+                    .with_context(|| format!("cannot read {}", path.display()))
+            });
+        graded.push((row.submission.clone(), folder, report));
+    }
+    for (name, why) in &class.not_graded {
+        graded.push((name.clone(), out.join(name), Err(anyhow::anyhow!("{why}"))));
+    }
+    super::class_report::write(out, &graded, &class.rows)?;
+    Ok(class)
 }
 
 /// Prints where the gradebook of `class` is, who is flagged, and fails
