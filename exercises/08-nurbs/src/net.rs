@@ -54,25 +54,14 @@ pub fn check_homogeneous(points: &[DVec4]) -> Result<(), NurbsError> {
     Ok(())
 }
 
-/// A point on a curve and the first derivative there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CurvePoint {
-    /// `C(u)`.
-    pub point: DVec3,
-    /// `C′(u) = dC/du`.
-    pub tangent: DVec3,
-}
+/// A point on a curve and the first derivative there, `C(u)` and
+/// `C′(u) = dC/du` (the course library's record, `freeform::CurvePoint`).
+pub use freeform::CurvePoint;
 
-/// A point on a surface and its two partial derivatives there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfacePoint {
-    /// `S(u, v)`.
-    pub point: DVec3,
-    /// `S_u = ∂S/∂u`.
-    pub du: DVec3,
-    /// `S_v = ∂S/∂v`.
-    pub dv: DVec3,
-}
+/// A point on a surface and its two partial derivatives there, `S(u, v)`,
+/// `S_u = ∂S/∂u` and `S_v = ∂S/∂v` (the course library's record,
+/// `freeform::SurfacePoint`).
+pub use freeform::SurfacePoint;
 
 /// A grid of homogeneous control points, row `i` along `u`, column `j`
 /// along `v` (see the module documentation).
