@@ -4,8 +4,9 @@
 //! works; here it is a tool.
 //!
 //! Convention (see `canvas`): pixel centres at integer coordinates, y up.
-//! A pixel belongs to a triangle when its centre is inside or on an edge
-//! (no fill rule: a pixel on a shared edge is visited twice, and the depth
+//! The pixels of a triangle are those `scene::raster::cover` finds: a
+//! pixel belongs to a triangle when its centre is inside or on an edge (no
+//! fill rule: a pixel on a shared edge is visited twice, and the depth
 //! test keeps one). Depth test LESS; fragments outside depth `[0, 1]` are
 //! dropped (near/far clipping per fragment).
 
@@ -101,57 +102,36 @@ pub struct Fragment {
 /// called; `Some(colour)` writes colour and depth, `None` discards the
 /// fragment (the shader's `discard`: nothing is written).
 ///
+/// The covered pixels and their barycentric weights are the course's one
+/// given triangle rasterizer's, `scene::raster::cover` (centres on an edge
+/// included); this function interpolates the attributes and tests depth.
 /// Triangles with a non-finite or zero-area screen footprint draw nothing.
 pub fn rasterize_triangle(
     canvas: &mut Canvas,
     vertices: [RasterVertex; 3],
     mut shade: impl FnMut(&Fragment) -> Option<Rgba>,
 ) {
-    let [a, b, c] = vertices.map(|v| v.screen.truncate());
-    let edge = |p: DVec2, q: DVec2, x: DVec2| (q - p).perp_dot(x - p);
-    let area = edge(a, b, c);
-    if !area.is_finite() || area == 0.0 {
-        return;
-    }
-    let min = a.min(b).min(c).ceil().max(DVec2::ZERO);
-    let max = a.max(b).max(c).floor().min(DVec2::new(
-        f64::from(canvas.width()) - 1.0,
-        f64::from(canvas.height()) - 1.0,
-    ));
-    if !(min.x <= max.x && min.y <= max.y) {
-        return;
-    }
-    for y in min.y as i32..=max.y as i32 {
-        for x in min.x as i32..=max.x as i32 {
-            let p = DVec2::new(f64::from(x), f64::from(y));
-            let w = [
-                edge(b, c, p) / area,
-                edge(c, a, p) / area,
-                edge(a, b, p) / area,
-            ];
-            if w.iter().any(|&w| w < 0.0) {
-                continue;
-            }
-            let mix3 = |f: fn(&RasterVertex) -> DVec3| {
-                f(&vertices[0]) * w[0] + f(&vertices[1]) * w[1] + f(&vertices[2]) * w[2]
-            };
-            let depth = mix3(|v| v.screen).z;
-            let pixel = Pixel::new(x, y);
-            let stored = canvas.depth(pixel).map_or(f64::NEG_INFINITY, f64::from);
-            if !(0.0..=1.0).contains(&depth) || depth >= stored {
-                continue;
-            }
-            let fragment = Fragment {
-                pixel,
-                depth,
-                uv: mix3(|v| v.uv.extend(0.0)).truncate(),
-                world: mix3(|v| v.world),
-                normal: mix3(|v| v.normal),
-            };
-            if let Some(colour) = shade(&fragment) {
-                canvas.set(pixel, colour);
-                canvas.set_depth(pixel, depth as f32);
-            }
+    let corners = vertices.map(|v| v.screen.truncate());
+    let viewport = canvas.viewport();
+    scene::raster::cover(corners, viewport, |pixel, w| {
+        let mix3 = |f: fn(&RasterVertex) -> DVec3| {
+            f(&vertices[0]) * w[0] + f(&vertices[1]) * w[1] + f(&vertices[2]) * w[2]
+        };
+        let depth = mix3(|v| v.screen).z;
+        let stored = canvas.depth(pixel).map_or(f64::NEG_INFINITY, f64::from);
+        if !(0.0..=1.0).contains(&depth) || depth >= stored {
+            return;
         }
-    }
+        let fragment = Fragment {
+            pixel,
+            depth,
+            uv: mix3(|v| v.uv.extend(0.0)).truncate(),
+            world: mix3(|v| v.world),
+            normal: mix3(|v| v.normal),
+        };
+        if let Some(colour) = shade(&fragment) {
+            canvas.set(pixel, colour);
+            canvas.set_depth(pixel, depth as f32);
+        }
+    });
 }
