@@ -1,4 +1,4 @@
-//! Given code: a pinhole camera and a z-buffered triangle rasterizer with
+//! Given code: a pinhole camera (`scene`'s) and a z-buffered triangle rasterizer with
 //! interpolated attributes — the fixed-function part of the pipeline that
 //! the render task (and the test pictures) drive. Topic 03 teaches how it
 //! works; here it is a tool.
@@ -13,57 +13,9 @@
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec2, DVec3};
 
-/// A pinhole camera looking from `eye` at `target`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Camera {
-    /// Where the eye is (world space).
-    pub eye: DVec3,
-    /// The point in the centre of the picture.
-    pub target: DVec3,
-    /// Which way is up in the picture.
-    pub up: DVec3,
-    /// The vertical field of view in degrees.
-    pub fov_y_degrees: f64,
-}
-
-impl Camera {
-    /// The near plane distance: geometry closer to the eye is dropped.
-    pub const NEAR: f64 = 0.1;
-    /// The far plane distance.
-    pub const FAR: f64 = 100.0;
-
-    /// Maps a world point to the canvas: `x, y` in pixel coordinates
-    /// (the canvas spans `[−½, width − ½] × [−½, height − ½]`), `z` the depth
-    /// in `[0, 1]` (0 on the near plane, OpenGL's perspective depth).
-    /// `None` for a point nearer than [`Camera::NEAR`] (or behind the eye)
-    /// or a non-finite result.
-    ///
-    /// ```text
-    ///   f = normalize(target − eye),  r = normalize(f × up),  s = r × f
-    ///   d = p − eye:  x = r·d, y = s·d, z = f·d (distance along the view)
-    ///   ndc = (x / (z · tan(fov/2) · aspect), y / (z · tan(fov/2)))
-    ///   depth = (FAR / (FAR − NEAR)) · (1 − NEAR / z)
-    /// ```
-    #[must_use]
-    pub fn to_screen(&self, world: DVec3, width: u32, height: u32) -> Option<DVec3> {
-        let aspect = f64::from(width) / f64::from(height.max(1));
-        let f = (self.target - self.eye).normalize_or_zero();
-        let r = f.cross(self.up).normalize_or_zero();
-        let s = r.cross(f);
-        let d = world - self.eye;
-        let z = f.dot(d);
-        // NaN fails this test too.
-        if z.is_nan() || z < Self::NEAR {
-            return None;
-        }
-        let scale = (self.fov_y_degrees.to_radians() * 0.5).tan();
-        let ndc = DVec2::new(r.dot(d) / (z * scale * aspect), s.dot(d) / (z * scale));
-        // OpenGL's viewport transform: NDC ±1 on the edges of the canvas.
-        let pixel = canvas::ndc_to_window(ndc, width, height);
-        let screen = pixel.extend(Self::FAR / (Self::FAR - Self::NEAR) * (1.0 - Self::NEAR / z));
-        screen.is_finite().then_some(screen)
-    }
-}
+/// A pinhole camera looking from `eye` at `target`, projecting with the
+/// course pipeline's conventions (`scene::Camera`, the course library's).
+pub use scene::Camera;
 
 /// A triangle corner after projection, with the attributes to interpolate.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,8 +1,10 @@
 //! A small library rasterizer for the pipeline: triangles by edge
 //! functions and lines as one-pixel-wide bands of two triangles, with
 //! colour and depth interpolation and a depth test. [`cover`], the
-//! triangles' pixels with their barycentric weights, is also what the
-//! surface topics' given renderers draw with.
+//! triangles' pixels with their barycentric weights, is the one triangle
+//! rasterizer of the course's given code: topic 05's fragments (which add
+//! the top-left rule), topic 07's z-buffer, topic 09's renderer and
+//! topic 08's test pictures draw with it.
 //!
 //! This is not student work: the exercise topics write their own, and
 //! `cargo xtask view` draws the pipeline with those. It is kept small and

@@ -7,7 +7,7 @@
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec3, DVec4};
-use nurbs::{ControlNet, KnotVector, NurbsCurve, NurbsSurface, homogeneous};
+use nurbs::{ControlNet, Domain, KnotVector, NurbsCurve, NurbsSurface, RationalPatch, homogeneous};
 use proptest::prelude::*;
 
 pub use testkit::oracles::bernstein;
@@ -51,6 +51,39 @@ pub fn bezier_patch_point(net: &ControlNet, s: f64, t: f64) -> DVec3 {
         }
     }
     sum.truncate() / sum.w
+}
+
+/// The same for the course library's patch: its homogeneous points
+/// `(w·P, w)` as a net.
+pub fn rational_patch_point(patch: &RationalPatch, s: f64, t: f64) -> DVec3 {
+    let (p, q) = (patch.points().degree_u(), patch.points().degree_v());
+    let points = (0..=p)
+        .flat_map(|i| (0..=q).map(move |j| homogeneous_point(patch, i, j)))
+        .collect();
+    let net = ControlNet::try_new(p + 1, q + 1, points).expect("a patch's points are a net");
+    bezier_patch_point(&net, s, t)
+}
+
+/// `Pʷ_ij = (w·P, w)` of a patch, to compare with a net's points.
+pub fn homogeneous_point(patch: &RationalPatch, i: usize, j: usize) -> DVec4 {
+    homogeneous(patch.points().control_point(i, j), patch.weight(i, j))
+}
+
+/// The non-empty spans of a knot vector's domain, in order: the pieces
+/// `[u_a, u_{a+1}]` between its distinct knots, which the Bézier patches
+/// of a decomposition cover one by one.
+pub fn spans(knots: &KnotVector) -> Vec<Domain> {
+    let domain = knots.domain();
+    let mut values = vec![domain.start];
+    values.extend(knots.interior_breakpoints().iter().map(|b| b.value));
+    values.push(domain.end);
+    values
+        .windows(2)
+        .map(|w| Domain {
+            start: w[0],
+            end: w[1],
+        })
+        .collect()
 }
 
 /// Fails with both points and `what` if they are farther apart than
