@@ -48,7 +48,7 @@
 //! (a collapsed edge, a degenerate patch) is returned as zero.
 
 use bytemuck::{Pod, Zeroable};
-use glam::{DVec3, Vec4};
+use glam::Vec4;
 
 pub use freeform::{BezierPatch, BezierTriangle, RationalPatch};
 
