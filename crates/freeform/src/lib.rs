@@ -18,6 +18,12 @@
 //!   counter-clockwise triangles that a tessellation places on a surface
 //!   (what the primitive generator of topic 10 produces, and what topic
 //!   09's PN triangles are evaluated over).
+//! - [`CurvePoint`], [`SurfacePoint`], [`SurfaceSample`]: what evaluating
+//!   a curve or a surface returns (a point with its tangent, with its
+//!   partial derivatives, with its parameters and unit normal), and
+//!   [`NORMAL_NUDGE`], where a degenerate normal is taken instead.
+//! - [`trim`]: the seed's trim regions, two Bézier curves in the
+//!   parameter square (topic 07 trims with them).
 //! - [`stitch`]: the zipper that triangulates the strip between two
 //!   polylines (the ring between a patch's inner grid and its boundary in
 //!   topic 09, the rings of the primitive generator in topic 10).
@@ -26,13 +32,16 @@
 pub mod domain;
 pub mod nurbs;
 pub mod patch;
+pub mod point;
 pub mod rational;
 pub mod stitch;
 pub mod triangle;
+pub mod trim;
 
 pub use domain::{QuadDomain, TriangleDomain, embed};
 pub use nurbs::NurbsSurfaceData;
 pub use patch::{BezierPatch, PatchError};
+pub use point::{CurvePoint, NORMAL_NUDGE, SurfacePoint, SurfaceSample};
 pub use rational::RationalPatch;
 pub use stitch::stitch;
 pub use triangle::BezierTriangle;

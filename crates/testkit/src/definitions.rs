@@ -1,11 +1,12 @@
 //! Rasters by their definitions, computed directly and exactly: what the
 //! tests of topics 01–03 compare your pixels with, and what the viewer's
 //! pixel playground draws beside yours. Never by the incremental
-//! algorithms the tasks teach.
+//! algorithms the tasks teach. And the clip volume's planes written out
+//! (topic 04), which the tests and the benchmark clip against.
 
 use std::collections::BTreeSet;
 
-use canvas::{MAX_COORD, Pixel, Vec2, Viewport};
+use canvas::{MAX_COORD, Pixel, Vec2, Vec4, Viewport};
 
 // ---------------------------------------------------------------------------
 // Lines (topic 01).
@@ -293,6 +294,24 @@ pub fn triangle_pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {
         .filter(|&p| triangle_covers(positions, p))
         .collect()
 }
+
+// ---------------------------------------------------------------------------
+// The clip volume (topic 04).
+
+/// The six planes of the clip volume `−w ≤ x, y, z ≤ w` (OpenGL's, the
+/// sheet's cube of side 2 after the divide), each as the 4-vector
+/// `(n_x, n_y, n_z, −d)` of its unit outward normal and distance `d = 1`
+/// (sheet §5.2, equation (3)), in the order right, left, top, bottom, far,
+/// near. A clip-space point `v` is inside a plane `p` when `v · p ≤ 0`:
+/// `x − w ≤ 0` is `x / w ≤ 1` for `w > 0`.
+pub const CLIP_VOLUME_PLANES: [Vec4; 6] = [
+    Vec4::new(1.0, 0.0, 0.0, -1.0),
+    Vec4::new(-1.0, 0.0, 0.0, -1.0),
+    Vec4::new(0.0, 1.0, 0.0, -1.0),
+    Vec4::new(0.0, -1.0, 0.0, -1.0),
+    Vec4::new(0.0, 0.0, 1.0, -1.0),
+    Vec4::new(0.0, 0.0, -1.0, -1.0),
+];
 
 #[cfg(test)]
 mod tests {

@@ -13,7 +13,8 @@
 //! - [`pixels`]: collecting what a rasterizer plots, expected pixels as
 //!   literal grids ([`grid!`]), duplicates and counts;
 //! - [`definitions`]: the pixels of lines, circles and triangles by their
-//!   definitions, exactly (what topics 01–03 compare with);
+//!   definitions, exactly (what topics 01–03 compare with), and the clip
+//!   volume's planes (topic 04);
 //! - [`oracles`]: values by their definitions (binomials, Bernstein
 //!   polynomials), never by the algorithms the tasks teach;
 //! - [`domains`]: regular grids and lattices of parameters, built without

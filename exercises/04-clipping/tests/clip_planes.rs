@@ -7,11 +7,12 @@ use clipping::clip_planes::clip_planes;
 use clipping::{CLIP_NUDGE, ClipPlane};
 use proptest::prelude::*;
 
-/// The plane `x ≤ w`, written out here (not taken from `clip_planes()`),
-/// so that `inside` and `intersect` are tested on their own.
-const RIGHT: ClipPlane = ClipPlane::new(Vec4::new(1.0, 0.0, 0.0, -1.0));
+/// The plane `x ≤ w`, written out in `common` (not taken from
+/// `clip_planes()`), so that `inside` and `intersect` are tested on their
+/// own.
+const RIGHT: ClipPlane = common::VOLUME_PLANES[0];
 /// The plane `−z ≤ w` (near).
-const NEAR: ClipPlane = ClipPlane::new(Vec4::new(0.0, 0.0, -1.0, -1.0));
+const NEAR: ClipPlane = common::VOLUME_PLANES[5];
 
 fn p(x: f32, y: f32, z: f32, w: f32) -> Vec4 {
     Vec4::new(x, y, z, w)

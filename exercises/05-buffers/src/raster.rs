@@ -1,90 +1,60 @@
-//! Given code, not an exercise: a small rasterizer that turns triangles and
-//! lines into fragments with depth, so that the buffer tasks have something
-//! to test and write. (Topic 03 teaches how to write one; nothing here
-//! needs its solution.)
+//! Given code, not an exercise: triangles and lines turned into fragments
+//! with depth, so that the buffer tasks have something to test and write.
+//! The pixels are those of the course's given rasterizer (`scene::raster`);
+//! this module adds the top-left rule for triangles. (Topic 03 teaches how
+//! to write one; nothing here needs its solution.)
 //!
 //! Convention (see `canvas`): pixel centres at integers, y up. Triangles
 //! cover the pixels whose centre lies inside, with the top-left rule on
 //! edges; lines are one-pixel bands that include both endpoints.
 
-use canvas::{Fragment, MAX_COORD, Pixel, Vertex, Viewport};
-
-/// Whether both coordinates are finite and within ±[`MAX_COORD`].
-fn usable(v: &Vertex) -> bool {
-    let limit = f64::from(MAX_COORD);
-    v.position.is_finite()
-        && f64::from(v.position.x).abs() <= limit
-        && f64::from(v.position.y).abs() <= limit
-}
-
-/// Twice the signed area of `a, b, p` (positive when counter-clockwise,
-/// y up): the edge function of the edge `a → b` at `p`.
-fn edge(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
-    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-}
+use canvas::{Fragment, Vertex, Viewport};
 
 /// Emits one fragment per pixel whose centre lies inside the triangle,
 /// with depth and colour interpolated by barycentric weights (the plane
 /// through the three vertices, evaluated at the pixel centre).
 ///
-/// - **Edges:** a centre exactly on an edge belongs to the triangle when
-///   the edge is a left or a top edge (the top-left rule), so triangles
+/// - **Pixels:** those of the course's given rasterizer,
+///   `scene::raster::cover` (the centres inside or on an edge, each with
+///   its barycentric weights), less the centres on an edge that is
+///   neither a left nor a top edge (the top-left rule), so triangles
 ///   sharing an edge never both emit a pixel.
 /// - **Skipped:** zero-area triangles and vertices with a NaN, infinite or
-///   out-of-range (beyond ±[`MAX_COORD`]) position emit nothing.
+///   out-of-range (beyond ±[`MAX_COORD`](canvas::MAX_COORD)) position emit
+///   nothing.
 /// - Only pixels inside `viewport` (inclusive bounds) are emitted, row by
 ///   row from the bottom, left to right.
 ///
 /// Evaluated in `f64`; exact for vertices on a grid of 1/256 pixel and
 /// coordinates below 2¹⁶.
 pub fn fill_triangle(vertices: [Vertex; 3], viewport: Viewport, mut emit: impl FnMut(Fragment)) {
-    if !vertices.iter().all(usable) || viewport.is_empty() {
-        return;
-    }
-    let p = vertices.map(|v| [f64::from(v.position.x), f64::from(v.position.y)]);
-    let area = edge(p[0], p[1], p[2]);
-    if area == 0.0 {
-        return;
-    }
-    // Orient every edge so that the inside is where its function is ≥ 0.
-    let sign = area.signum();
-    // Edge k runs from vertex k+1 to vertex k+2 and is opposite vertex k,
-    // so its function divided by the area is vertex k's barycentric weight.
-    let ends = [(1, 2), (2, 0), (0, 1)];
-    let top_left = ends.map(|(i, j)| {
-        let (ex, ey) = ((p[j][0] - p[i][0]) * sign, (p[j][1] - p[i][1]) * sign);
-        // Counter-clockwise with y up: a left edge runs downwards, a top
-        // edge runs to the left.
-        ey < 0.0 || (ey == 0.0 && ex < 0.0)
+    let p = vertices.map(|v| v.position.as_dvec2());
+    // Twice the signed area: its sign is the winding (positive when
+    // counter-clockwise, y up).
+    let sign = (p[1] - p[0]).perp_dot(p[2] - p[0]).signum();
+    // Weight k belongs to vertex k; it is zero on the edge opposite it,
+    // which runs from vertex k+1 to vertex k+2. Oriented counter-clockwise
+    // (y up), a left edge runs downwards and a top edge runs to the left.
+    let top_left = [(1, 2), (2, 0), (0, 1)].map(|(i, j)| {
+        let e = (p[j] - p[i]) * sign;
+        e.y < 0.0 || (e.y == 0.0 && e.x < 0.0)
     });
-    let lo = |k: usize| p[0][k].min(p[1][k]).min(p[2][k]).ceil();
-    let hi = |k: usize| p[0][k].max(p[1][k]).max(p[2][k]).floor();
-    let x0 = lo(0).max(f64::from(viewport.x_min)) as i32;
-    let x1 = hi(0).min(f64::from(viewport.x_max)) as i32;
-    let y0 = lo(1).max(f64::from(viewport.y_min)) as i32;
-    let y1 = hi(1).min(f64::from(viewport.y_max)) as i32;
-    for y in y0..=y1 {
-        for x in x0..=x1 {
-            let c = [f64::from(x), f64::from(y)];
-            let w = [0, 1, 2].map(|k| edge(p[ends[k].0], p[ends[k].1], c) * sign);
-            let inside = (0..3).all(|k| w[k] > 0.0 || (w[k] == 0.0 && top_left[k]));
-            if !inside {
-                continue;
-            }
-            let l = w.map(|wk| wk / (area * sign));
-            let depth = l[0] * f64::from(vertices[0].depth)
-                + l[1] * f64::from(vertices[1].depth)
-                + l[2] * f64::from(vertices[2].depth);
-            let colour = vertices[0].colour * l[0] as f32
-                + vertices[1].colour * l[1] as f32
-                + vertices[2].colour * l[2] as f32;
-            emit(Fragment {
-                pixel: Pixel::new(x, y),
-                depth: depth as f32,
-                colour,
-            });
+    scene::raster::cover(p, viewport, |pixel, l| {
+        if (0..3).any(|k| l[k] == 0.0 && !top_left[k]) {
+            return;
         }
-    }
+        let depth = l[0] * f64::from(vertices[0].depth)
+            + l[1] * f64::from(vertices[1].depth)
+            + l[2] * f64::from(vertices[2].depth);
+        let colour = vertices[0].colour * l[0] as f32
+            + vertices[1].colour * l[1] as f32
+            + vertices[2].colour * l[2] as f32;
+        emit(Fragment {
+            pixel,
+            depth: depth as f32,
+            colour,
+        });
+    });
 }
 
 /// Emits the fragments of the line from `a` to `b`: the course's
@@ -100,7 +70,7 @@ pub fn draw_line(a: Vertex, b: Vertex, viewport: Viewport, emit: impl FnMut(Frag
 #[cfg(test)]
 mod tests {
     use super::*;
-    use canvas::{Rgba, Vec2};
+    use canvas::{Pixel, Rgba, Vec2};
 
     fn at(x: f32, y: f32, depth: f32) -> Vertex {
         Vertex::new(Vec2::new(x, y), depth, Rgba::WHITE)

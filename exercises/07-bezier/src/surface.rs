@@ -33,22 +33,16 @@ use freeform::BezierPatch;
 pub const NORMAL_EPSILON: f64 = 1e-10;
 
 /// How far [`normal`] moves towards the patch centre, in u and in v, when
-/// the normal at (u, v) is undefined (a collapsed edge or corner). The
-/// normal there is the limit of the normals nearby; `1e-6` keeps the
-/// direction error near `1e-6` while the derivatives stay well above
-/// rounding.
-pub const NORMAL_NUDGE: f64 = 1e-6;
+/// the normal at (u, v) is undefined (a collapsed edge or corner): the
+/// course library's `freeform::NORMAL_NUDGE`. The normal there is the
+/// limit of the normals nearby; `1e-6` keeps the direction error near
+/// `1e-6` while the derivatives stay well above rounding.
+pub use freeform::NORMAL_NUDGE;
 
-/// A surface point with its two partial derivatives.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfacePoint {
-    /// `P(u, v)`.
-    pub position: DVec3,
-    /// `∂P/∂u (u, v)`.
-    pub du: DVec3,
-    /// `∂P/∂v (u, v)`.
-    pub dv: DVec3,
-}
+/// A surface point with its two partial derivatives, `position = P(u, v)`,
+/// `du = ∂P/∂u`, `dv = ∂P/∂v` (the course library's record,
+/// `freeform::SurfacePoint`).
+pub use freeform::SurfacePoint;
 
 /// `P(u, v)`: reduce every column (u-curve `P_{0,j} … P_{n,j}`) at `u`,
 /// then the resulting `m + 1` points at `v` — the seed's order

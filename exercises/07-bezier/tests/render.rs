@@ -223,13 +223,18 @@ impl bezier::Trim for NestedCubics {
     }
 }
 
-/// The seed's cubic region (trim.rs's `CUBIC`) and a smaller one inside.
+/// The seed's cubic region (`freeform::trim::CUBIC_REGION`: its inner
+/// control points at thirds in `u`, so `u` is linear along both curves and
+/// the region is its `v` coefficients) and a smaller one inside.
 const NESTED_CUBICS: NestedCubics = NestedCubics {
-    outer: CubicRegion {
-        u0: 0.1,
-        u1: 0.9,
-        upper: [0.5, 0.95, 0.75, 0.5],
-        lower: [0.5, 0.2, 0.05, 0.5],
+    outer: {
+        let p = freeform::trim::CUBIC_REGION;
+        CubicRegion {
+            u0: p[0].x,
+            u1: p[3].x,
+            upper: [p[0].y, p[1].y, p[2].y, p[3].y],
+            lower: [p[0].y, p[4].y, p[5].y, p[3].y],
+        }
     },
     inner: CubicRegion {
         u0: 0.3,

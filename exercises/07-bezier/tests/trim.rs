@@ -28,12 +28,7 @@ fn uv(u: f64, v: f64) -> DVec2 {
 /// ```text
 ///   v_upper(t) = 0.5 + 0.8 t (1 − t),  v_lower(t) = 0.5 − 0.8 t (1 − t)
 /// ```
-const QUADRATIC: [DVec2; 4] = [
-    DVec2::new(0.2, 0.5),
-    DVec2::new(0.5, 0.9),
-    DVec2::new(0.8, 0.5),
-    DVec2::new(0.5, 0.1),
-];
+const QUADRATIC: [DVec2; 4] = freeform::trim::QUADRATIC_REGION;
 
 /// Inside the quadratic region, by its closed form (boundary excluded).
 fn in_quadratic(p: DVec2) -> bool {
@@ -41,16 +36,10 @@ fn in_quadratic(p: DVec2) -> bool {
     (0.0..=1.0).contains(&t) && (p.y - 0.5).abs() < 0.8 * t * (1.0 - t)
 }
 
-/// A cubic region: ends (0.1, 0.5), (0.9, 0.5); upper controls
-/// (0.3667, 0.95), (0.6333, 0.75); lower controls (0.3667, 0.2), (0.6333, 0.05).
-const CUBIC: [DVec2; 6] = [
-    DVec2::new(0.1, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.95),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.75),
-    DVec2::new(0.9, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.2),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.05),
-];
+/// The seed's cubic region (Fig. 24): ends (0.1, 0.5), (0.9, 0.5); upper
+/// controls (0.3667, 0.95), (0.6333, 0.75); lower controls (0.3667, 0.2),
+/// (0.6333, 0.05).
+const CUBIC: [DVec2; 6] = freeform::trim::CUBIC_REGION;
 
 /// Inside the cubic region, by eq. (2) in v along the linear u.
 fn in_cubic(p: DVec2) -> bool {

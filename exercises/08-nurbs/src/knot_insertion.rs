@@ -36,9 +36,12 @@
 use glam::DVec4;
 
 #[allow(unused_imports)]
-use crate::knots::{Domain, KnotVector, NurbsError};
+use freeform::{BezierPatch, RationalPatch};
+
 #[allow(unused_imports)]
-use crate::net::{BezierPatch, ControlNet, NurbsCurve, NurbsSurface};
+use crate::knots::{KnotVector, NurbsError};
+#[allow(unused_imports)]
+use crate::net::{ControlNet, NurbsCurve, NurbsSurface, project};
 
 impl NurbsCurve {
     /// The same curve with `u` inserted `times` times into its knot vector
@@ -82,17 +85,24 @@ impl NurbsSurface {
     }
 
     /// The rational Bézier patches of a surface with clamped knot vectors,
-    /// one per non-empty span pair, ordered by `u` span, then `v` span
-    /// (row-major); patch `(a, b)` has `(p + 1) × (q + 1)` control points and
-    /// covers `[u_a, u_{a+1}] × [v_b, v_{b+1}]` of the distinct knots.
+    /// as the course library's [`RationalPatch`] (the type topics 09 and 10
+    /// take), one per non-empty span pair, ordered by `u` span, then `v`
+    /// span (row-major); patch `(a, b)` has `(p + 1) × (q + 1)` control
+    /// points and weights and reproduces the piece
+    /// `[u_a, u_{a+1}] × [v_b, v_{b+1}]` of the surface (between the
+    /// distinct knots) over `[0, 1]²`: `patch(s, t) = S(u_a + s·(u_{a+1} −
+    /// u_a), v_b + t·(v_{b+1} − v_b))`.
     ///
     /// Every interior knot is raised to multiplicity `p` (along `u`) and `q`
     /// (along `v`) by insertion; then the patches are the overlapping
     /// `(p + 1) × (q + 1)` blocks of the refined net, starting at rows
-    /// `a·p` and columns `b·q`.
+    /// `a·p` and columns `b·q`, each homogeneous point `Pʷ = (w·P, w)`
+    /// handed over as its point `P` and weight `w`.
     ///
-    /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]).
-    pub fn decompose(&self) -> Result<Vec<BezierPatch>, NurbsError> {
+    /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]); a
+    /// degree above the library's `freeform::patch::MAX_DEGREE`
+    /// ([`NurbsError::Patch`]).
+    pub fn decompose(&self) -> Result<Vec<RationalPatch>, NurbsError> {
         todo!(
             "knot_insertion: raise every interior knot to multiplicity p (q), then cut the net into blocks"
         )

@@ -133,6 +133,11 @@ pub enum NurbsError {
     /// An operation for clamped knot vectors got an unclamped one.
     #[error("the knot vector must be clamped (both ends repeated degree + 1 times)")]
     NotClamped,
+    /// A Bézier patch the course library refuses (a degree above
+    /// `freeform::patch::MAX_DEGREE`): what a decomposition hands over must
+    /// be a `freeform::RationalPatch`.
+    #[error(transparent)]
+    Patch(#[from] freeform::PatchError),
     /// A grid with fewer than 2 samples along a side, or more than
     /// [`MAX_GRID_POINTS`] in all.
     #[error("a grid of {samples_u} × {samples_v} samples is not supported")]

@@ -13,7 +13,7 @@
 /// Given: knot vectors, their domain, and the errors of this crate.
 pub mod knots;
 
-/// Given: homogeneous points, control nets, curve, surface and patch types.
+/// Given: homogeneous points, control nets, curve and surface types.
 pub mod net;
 
 /// Task 1: Bernstein polynomials, rational Bézier curves and surfaces.
@@ -28,8 +28,8 @@ pub mod nurbs;
 /// Task 4: knot insertion (Boehm) and Bézier decomposition of surfaces.
 pub mod knot_insertion;
 
+pub use freeform::RationalPatch;
 pub use knots::{Breakpoint, Domain, KnotVector, MAX_GRID_POINTS, NurbsError};
 pub use net::{
-    BezierPatch, ControlNet, CurvePoint, NurbsCurve, NurbsSurface, SurfacePoint, homogeneous,
-    project,
+    ControlNet, CurvePoint, NurbsCurve, NurbsSurface, SurfacePoint, homogeneous, project,
 };

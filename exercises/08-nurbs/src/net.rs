@@ -1,5 +1,7 @@
-//! Homogeneous control points, control nets, and the NURBS curve, surface
-//! and Bézier patch types (given code: read it, do not edit it).
+//! Homogeneous control points, control nets, and the NURBS curve and
+//! surface types (given code: read it, do not edit it). The Bézier
+//! patches a surface splits into are the course library's
+//! `freeform::RationalPatch`: points `P = Pʷ.xyz / w` and weights `w`.
 //!
 //! **Homogeneous coordinates.** A control point `P = (x, y, z)` with weight
 //! `w > 0` is stored as the 4-vector `Pʷ = (w·x, w·y, w·z, w)` (The NURBS
@@ -54,25 +56,14 @@ pub fn check_homogeneous(points: &[DVec4]) -> Result<(), NurbsError> {
     Ok(())
 }
 
-/// A point on a curve and the first derivative there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CurvePoint {
-    /// `C(u)`.
-    pub point: DVec3,
-    /// `C′(u) = dC/du`.
-    pub tangent: DVec3,
-}
+/// A point on a curve and the first derivative there, `C(u)` and
+/// `C′(u) = dC/du` (the course library's record, `freeform::CurvePoint`).
+pub use freeform::CurvePoint;
 
-/// A point on a surface and its two partial derivatives there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfacePoint {
-    /// `S(u, v)`.
-    pub point: DVec3,
-    /// `S_u = ∂S/∂u`.
-    pub du: DVec3,
-    /// `S_v = ∂S/∂v`.
-    pub dv: DVec3,
-}
+/// A point on a surface and its two partial derivatives there, `S(u, v)`,
+/// `S_u = ∂S/∂u` and `S_v = ∂S/∂v` (the course library's record,
+/// `freeform::SurfacePoint`).
+pub use freeform::SurfacePoint;
 
 /// A grid of homogeneous control points, row `i` along `u`, column `j`
 /// along `v` (see the module documentation).
@@ -328,37 +319,5 @@ impl NurbsSurface {
             .collect();
         let net = ControlNet::try_new(data.rows, data.columns, points)?;
         Self::try_new(knots_u, knots_v, net)
-    }
-}
-
-/// A rational Bézier patch of degree `(rows − 1, columns − 1)`, evaluated on
-/// `[0, 1]²`, which reproduces the piece `domain_u × domain_v` of the NURBS
-/// surface it was cut from: `patch(s, t) = S(domain_u.lerp(s), domain_v.lerp(t))`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BezierPatch {
-    /// The control net; its degrees are `rows − 1` and `columns − 1`.
-    pub net: ControlNet,
-    /// The piece of the surface's `u` domain the patch covers.
-    pub domain_u: Domain,
-    /// The piece of the surface's `v` domain the patch covers.
-    pub domain_v: Domain,
-}
-
-impl BezierPatch {
-    /// The same patch as the course library's [`freeform::RationalPatch`]
-    /// (its points `Pʷ.xyz / w` and weights `w`), which topic 09
-    /// tessellates and topic 10 draws on the GPU: where the chain NURBS →
-    /// Bézier patches → triangles goes on.
-    ///
-    /// # Errors
-    /// A degree above [`freeform::patch::MAX_DEGREE`].
-    pub fn to_rational(&self) -> Result<freeform::RationalPatch, freeform::PatchError> {
-        let (rows, columns) = (self.net.rows(), self.net.columns());
-        let points = freeform::BezierPatch::try_new(
-            rows - 1,
-            columns - 1,
-            self.net.points().iter().map(|&p| project(p)).collect(),
-        )?;
-        freeform::RationalPatch::try_new(points, self.net.points().iter().map(|p| p.w).collect())
     }
 }

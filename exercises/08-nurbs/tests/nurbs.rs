@@ -49,18 +49,18 @@ fn circle_tangent_is_perpendicular_to_the_radius() {
         let u = (f64::from(k) + 0.5) / 100.0;
         let d = circle.derivative(u).unwrap();
         assert!(
-            d.point.dot(d.tangent).abs() < 1e-12 * d.tangent.length(),
+            d.point.dot(d.derivative).abs() < 1e-12 * d.derivative.length(),
             "u = {u}: {d:?}"
         );
         // Counter-clockwise: the tangent turns left of the radius.
-        assert!(d.point.cross(d.tangent).z > 0.0, "u = {u}");
+        assert!(d.point.cross(d.derivative).z > 0.0, "u = {u}");
     }
     // At u = 0 the quadratic arc leaves (1, 0) towards (1, 1): C′(0) =
     // p/(u_{p+1} − u_1) · (w₁/w₀) (P₁ − P₀) = 2/¼ · √2/2 · (0, 1).
     let d = circle.derivative(0.0).unwrap();
     assert_close(
         DVec3::Y * (8.0 * common::CORNER_WEIGHT),
-        d.tangent,
+        d.derivative,
         1e-12,
         "C′(0)",
     );
@@ -284,7 +284,7 @@ proptest! {
             - curve_point(curve.knots(), curve.points(), u - H))
             / (2.0 * H);
         let scale = 1.0 + slope.length();
-        prop_assert!(d.tangent.distance(slope) <= 1e-4 * scale, "C′({u}) = {}, quotient {slope}", d.tangent);
+        prop_assert!(d.derivative.distance(slope) <= 1e-4 * scale, "C′({u}) = {}, quotient {slope}", d.derivative);
     }
 
     #[testkit::test]
@@ -295,7 +295,7 @@ proptest! {
         prop_assert!(expected.distance(actual) <= TOLERANCE, "S({u}, {v}): {expected} vs {actual}");
         prop_assert!(common::in_bounding_box(actual, projected(surface.net().points()), TOLERANCE));
         let d = surface.derivatives(u, v).unwrap();
-        prop_assert!(d.point.distance(expected) <= TOLERANCE);
+        prop_assert!(d.position.distance(expected) <= TOLERANCE);
     }
 
     #[testkit::test]

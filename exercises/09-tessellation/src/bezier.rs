@@ -42,21 +42,15 @@ pub const MAX_RESOLUTION: usize = 1024;
 pub const DEGENERATE_NORMAL: f64 = 1e-12;
 
 /// How far towards the centre of the parameter square a degenerate normal
-/// is evaluated instead: small enough to be the limit for any picture.
-pub const NORMAL_NUDGE: f64 = 1e-6;
+/// is evaluated instead (the course library's `freeform::NORMAL_NUDGE`):
+/// the fraction of the way there, small enough to be the limit for any
+/// picture.
+pub use freeform::NORMAL_NUDGE;
 
 /// A point of a surface with what the tessellations need: its parameters,
-/// its position and its unit normal.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfacePoint {
-    /// Parameters `(u, v)` in `[0, 1]²`.
-    pub uv: DVec2,
-    /// `S(u, v)`.
-    pub position: DVec3,
-    /// The unit normal `N(u, v)` (zero only if the patch is degenerate
-    /// everywhere near `(u, v)`).
-    pub normal: DVec3,
-}
+/// its position and its unit normal (the course library's record,
+/// `freeform::SurfaceSample`; [`Evaluate::sample`] makes one).
+pub use freeform::SurfaceSample;
 
 /// The power form of a Bézier curve of degree `n = points.len() − 1`: the
 /// coefficients `a_k` of `C(t) = Σ_k a_k tᵏ`, which are the forward
@@ -132,9 +126,9 @@ pub trait Evaluate {
 
     /// Position and normal at `(u, v)`.
     #[must_use]
-    fn sample(&self, uv: DVec2) -> SurfacePoint {
+    fn sample(&self, uv: DVec2) -> SurfaceSample {
         let [position, du, dv] = self.derivatives(uv);
-        SurfacePoint {
+        SurfaceSample {
             uv,
             position,
             normal: unit_normal(self, uv, du, dv),

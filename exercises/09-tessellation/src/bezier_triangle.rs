@@ -37,7 +37,7 @@
 use glam::{DVec2, DVec3};
 
 #[allow(unused_imports)]
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 use crate::mesh::Mesh;
 pub use freeform::{BezierTriangle, TriangleDomain};

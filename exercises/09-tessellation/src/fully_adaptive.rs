@@ -34,7 +34,7 @@
 use std::collections::HashMap;
 
 #[allow(unused_imports)]
-use crate::bezier::{Evaluate, SurfacePoint};
+use crate::bezier::{Evaluate, SurfaceSample};
 #[allow(unused_imports)]
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;

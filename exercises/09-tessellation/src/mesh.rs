@@ -7,7 +7,7 @@ use std::io::{self, Write};
 
 use glam::{DVec2, DVec3};
 
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 
 /// An indexed triangle mesh with per-vertex normals and parameters.
@@ -32,7 +32,7 @@ impl Mesh {
     }
 
     /// Appends a vertex and returns its index.
-    pub fn push_vertex(&mut self, point: SurfacePoint) -> u32 {
+    pub fn push_vertex(&mut self, point: SurfaceSample) -> u32 {
         let index = u32::try_from(self.positions.len()).expect("fewer than 2³² vertices");
         self.positions.push(point.position);
         self.normals.push(point.normal);
@@ -45,9 +45,9 @@ impl Mesh {
     /// # Panics
     /// If `index` is out of range.
     #[must_use]
-    pub fn vertex(&self, index: u32) -> SurfacePoint {
+    pub fn vertex(&self, index: u32) -> SurfaceSample {
         let i = index as usize;
-        SurfacePoint {
+        SurfaceSample {
             uv: self.uvs[i],
             position: self.positions[i],
             normal: self.normals[i],

@@ -41,7 +41,7 @@
 use glam::{DVec2, DVec3};
 
 #[allow(unused_imports)]
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 use crate::mesh::Mesh;
 use crate::patch_grid::{GridPatch, PatchGrid};

@@ -4,7 +4,9 @@
 //! pictures of this topic, not a task; the rasterization topics teach how
 //! each of its steps is done properly.
 //!
-//! Conventions: the canvas's (pixel centres at integers, y up). The view
+//! Conventions: the canvas's (pixel centres at integers, y up); the
+//! triangles' pixels are those of the course's given rasterizer,
+//! `scene::raster::cover` (centres on an edge included). The view
 //! turns the mesh by `yaw` about the z axis, then tilts it by `pitch` about
 //! the x axis, and looks down the −z axis of the result; the mesh is scaled
 //! so that its picture fills [`FILL`](crate::render::FILL) of the smaller canvas side.
@@ -97,37 +99,16 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
             continue;
         };
         let [na, nb, nc] = fetch(&normals, *tri).unwrap_or([DVec3::Z; 3]);
-        let area = edge(a, b, c);
-        if area.abs() < f64::EPSILON {
-            continue;
-        }
-        let x0 = a.x.min(b.x).min(c.x).ceil().max(0.0) as usize;
-        let x1 = a.x.max(b.x).max(c.x).floor().min(w as f64 - 1.0);
-        let y0 = a.y.min(b.y).min(c.y).ceil().max(0.0) as usize;
-        let y1 = a.y.max(b.y).max(c.y).floor().min(h as f64 - 1.0);
-        if x1 < 0.0 || y1 < 0.0 {
-            continue;
-        }
-        for y in y0..=y1 as usize {
-            for x in x0..=x1 as usize {
-                let p = DVec3::new(x as f64, y as f64, 0.0);
-                let (wa, wb, wc) = (
-                    edge(b, c, p) / area,
-                    edge(c, a, p) / area,
-                    edge(a, b, p) / area,
-                );
-                if wa < 0.0 || wb < 0.0 || wc < 0.0 {
-                    continue;
-                }
-                let z = wa * a.z + wb * b.z + wc * c.z;
-                let k = y * w + x;
-                if z > depth[k] {
-                    depth[k] = z;
-                    let n = (wa * na + wb * nb + wc * nc).normalize_or_zero();
-                    shade[k] = Some(AMBIENT + (1.0 - AMBIENT) * n.dot(light).abs());
-                }
+        let corners = [a, b, c].map(DVec3::truncate);
+        scene::raster::cover(corners, canvas.viewport(), |pixel, [wa, wb, wc]| {
+            let z = wa * a.z + wb * b.z + wc * c.z;
+            let k = pixel.y as usize * w + pixel.x as usize;
+            if z > depth[k] {
+                depth[k] = z;
+                let n = (wa * na + wb * nb + wc * nc).normalize_or_zero();
+                shade[k] = Some(AMBIENT + (1.0 - AMBIENT) * n.dot(light).abs());
             }
-        }
+        });
     }
     if style != Style::Wireframe {
         for (k, s) in shade.iter().enumerate() {
@@ -156,11 +137,6 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
         }
     }
     canvas
-}
-
-/// Twice the signed area of `(a, b, p)` in the screen plane.
-fn edge(a: DVec3, b: DVec3, p: DVec3) -> f64 {
-    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
 }
 
 /// The three entries of `list` a triangle names, if all exist and are finite.

@@ -7,7 +7,7 @@ use common::{
     assert_tiles_rectangle, bernstein_surface, max_deviation, patch_from, sample_grid,
     torus_distance_and_normal, unit_plane,
 };
-use tessellation::bezier::{BezierPatch, Evaluate, RationalPatch, SurfacePoint};
+use tessellation::bezier::{BezierPatch, Evaluate, RationalPatch, SurfaceSample};
 use tessellation::edge_tests::{
     EdgeContext, EdgeTest, first_order_neighbour, local_flat, one_edge_complementary,
     one_edge_normal, two_triangle, umbrella_flat, vector_deviation_flat,
@@ -45,15 +45,15 @@ fn tests() -> [(&'static str, EdgeTest); 7] {
     ]
 }
 
-fn at(position: DVec3, normal: DVec3) -> SurfacePoint {
-    SurfacePoint {
+fn at(position: DVec3, normal: DVec3) -> SurfaceSample {
+    SurfaceSample {
         uv: DVec2::ZERO,
         position,
         normal: normal.normalize(),
     }
 }
 
-fn edge<'a>(v1: SurfacePoint, v2: SurfacePoint, mid: SurfacePoint) -> EdgeContext<'a> {
+fn edge<'a>(v1: SurfaceSample, v2: SurfaceSample, mid: SurfaceSample) -> EdgeContext<'a> {
     EdgeContext {
         v1,
         v2,

@@ -48,7 +48,7 @@
 //! (a collapsed edge, a degenerate patch) is returned as zero.
 
 use bytemuck::{Pod, Zeroable};
-use glam::{DVec3, Vec4};
+use glam::Vec4;
 
 pub use freeform::{BezierPatch, BezierTriangle, RationalPatch};
 
@@ -56,14 +56,11 @@ pub use freeform::{BezierPatch, BezierTriangle, RationalPatch};
 /// direction made of rounding noise.
 pub const NORMAL_EPSILON: f64 = 1e-12;
 
-/// A point of a surface with its unit normal (zero if degenerate).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfacePoint {
-    /// The position.
-    pub position: DVec3,
-    /// The unit normal, or zero.
-    pub normal: DVec3,
-}
+/// A point of a surface with its parameters and unit normal (zero if
+/// degenerate): the course library's record, `freeform::SurfaceSample`,
+/// what the WGSL `struct SurfacePoint` holds on the GPU besides the domain
+/// point the entry points pass on.
+pub use freeform::SurfaceSample;
 
 /// A vertex as the evaluation pass writes it and the render pass reads it
 /// (WGSL `struct Vertex`, 48 bytes, std430).

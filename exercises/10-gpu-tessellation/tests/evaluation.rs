@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::passes::{Domain, Patches, run_evaluation};
 use gpu_tessellation::patch::{
-    BezierPatch, BezierTriangle, GpuVertex, RationalPatch, SurfacePoint,
+    BezierPatch, BezierTriangle, GpuVertex, RationalPatch, SurfaceSample,
 };
 use gpu_tessellation::wgsl::{self, Piece};
 use proptest::prelude::*;
@@ -51,7 +51,7 @@ fn evaluate_triangles(
 /// unnormalised normal length (normals are skipped where it is tiny).
 fn check(
     got: &GpuVertex,
-    expected: SurfacePoint,
+    expected: SurfaceSample,
     cross_length: f64,
     what: &str,
 ) -> Result<(), TestCaseError> {

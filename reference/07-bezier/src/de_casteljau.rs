@@ -21,16 +21,12 @@
 
 use crate::basics::{BezierError, ControlPoint, check_control_points, check_parameter};
 
-/// A point of a curve together with its derivative there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CurvePoint<P> {
-    /// `P(t)`.
-    pub point: P,
-    /// `P'(t) = n · (b1ⁿ⁻¹ − b0ⁿ⁻¹)`; zero for a curve of degree 0.
-    /// The seed normalises it (Listing 4); normalise it yourself where only
-    /// the direction matters — it is zero where the curve has a cusp.
-    pub derivative: P,
-}
+/// A point of a curve together with its derivative there (the course
+/// library's record, `freeform::CurvePoint`). [`point_and_derivative`]
+/// fills it with `P'(t) = n · (b1ⁿ⁻¹ − b0ⁿ⁻¹)`, not normalised: the seed
+/// normalises it (Listing 4); normalise it yourself where only the
+/// direction matters — it is zero where the curve has a cusp.
+pub use freeform::CurvePoint;
 
 /// The two halves of a curve split at `t`, each with as many control
 /// points as the original.

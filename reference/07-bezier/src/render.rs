@@ -33,14 +33,10 @@ pub const WIREFRAME_HALF_WIDTH: f64 = 0.06;
 /// The colour of the wireframe overlay.
 pub const WIREFRAME_COLOUR: Rgba = Rgba::rgb(0.05, 0.05, 0.1);
 
-/// A point of the surface with its unit normal.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceSample {
-    /// `P(u, v)`.
-    pub position: DVec3,
-    /// The unit normal there.
-    pub normal: DVec3,
-}
+/// A point of the surface with its parameters and unit normal (the course
+/// library's record, `freeform::SurfaceSample`): what [`render_surface`]
+/// asks of the surface at each grid point.
+pub use freeform::SurfaceSample;
 
 /// How to render.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -34,8 +34,10 @@
 
 use glam::DVec4;
 
-use crate::knots::{Domain, KnotVector, NurbsError};
-use crate::net::{BezierPatch, ControlNet, NurbsCurve, NurbsSurface};
+use freeform::{BezierPatch, RationalPatch};
+
+use crate::knots::{KnotVector, NurbsError};
+use crate::net::{ControlNet, NurbsCurve, NurbsSurface, project};
 
 impl NurbsCurve {
     /// The same curve with `u` inserted `times` times into its knot vector
@@ -103,17 +105,24 @@ impl NurbsSurface {
     }
 
     /// The rational Bézier patches of a surface with clamped knot vectors,
-    /// one per non-empty span pair, ordered by `u` span, then `v` span
-    /// (row-major); patch `(a, b)` has `(p + 1) × (q + 1)` control points and
-    /// covers `[u_a, u_{a+1}] × [v_b, v_{b+1}]` of the distinct knots.
+    /// as the course library's [`RationalPatch`] (the type topics 09 and 10
+    /// take), one per non-empty span pair, ordered by `u` span, then `v`
+    /// span (row-major); patch `(a, b)` has `(p + 1) × (q + 1)` control
+    /// points and weights and reproduces the piece
+    /// `[u_a, u_{a+1}] × [v_b, v_{b+1}]` of the surface (between the
+    /// distinct knots) over `[0, 1]²`: `patch(s, t) = S(u_a + s·(u_{a+1} −
+    /// u_a), v_b + t·(v_{b+1} − v_b))`.
     ///
     /// Every interior knot is raised to multiplicity `p` (along `u`) and `q`
     /// (along `v`) by insertion; then the patches are the overlapping
     /// `(p + 1) × (q + 1)` blocks of the refined net, starting at rows
-    /// `a·p` and columns `b·q`.
+    /// `a·p` and columns `b·q`, each homogeneous point `Pʷ = (w·P, w)`
+    /// handed over as its point `P` and weight `w`.
     ///
-    /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]).
-    pub fn decompose(&self) -> Result<Vec<BezierPatch>, NurbsError> {
+    /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]); a
+    /// degree above the library's `freeform::patch::MAX_DEGREE`
+    /// ([`NurbsError::Patch`]).
+    pub fn decompose(&self) -> Result<Vec<RationalPatch>, NurbsError> {
         // BEGIN SOLUTION knot_insertion: raise every interior knot to multiplicity p (q), then cut the net into blocks
         if !self.knots_u().is_clamped() || !self.knots_v().is_clamped() {
             return Err(NurbsError::NotClamped);
@@ -128,22 +137,19 @@ impl NurbsSurface {
             refined = refined.insert_knot_v(b.value, missing)?;
         }
         let (p, q) = (refined.knots_u().degree(), refined.knots_v().degree());
-        let pieces_u = pieces(refined.knots_u());
-        let pieces_v = pieces(refined.knots_v());
-        let mut patches = Vec::with_capacity(pieces_u.len() * pieces_v.len());
-        for (a, &domain_u) in pieces_u.iter().enumerate() {
-            for (b, &domain_v) in pieces_v.iter().enumerate() {
-                let points = (0..=p)
+        let spans_u = refined.knots_u().interior_breakpoints().len() + 1;
+        let spans_v = refined.knots_v().interior_breakpoints().len() + 1;
+        let mut patches = Vec::with_capacity(spans_u * spans_v);
+        for a in 0..spans_u {
+            for b in 0..spans_v {
+                let block: Vec<DVec4> = (0..=p)
                     .flat_map(|i| {
                         let row = refined.net().row(a * p + i);
                         row[b * q..=b * q + q].to_vec()
                     })
                     .collect();
-                patches.push(BezierPatch {
-                    net: ControlNet::try_new(p + 1, q + 1, points)?,
-                    domain_u,
-                    domain_v,
-                });
+                let points = BezierPatch::try_new(p, q, block.iter().map(|&pw| project(pw)).collect())?;
+                patches.push(RationalPatch::try_new(points, block.iter().map(|pw| pw.w).collect())?);
             }
         }
         Ok(patches)
@@ -152,21 +158,6 @@ impl NurbsSurface {
 }
 
 // BEGIN SOLUTION
-/// The non-empty spans of the domain, in order.
-fn pieces(knots: &KnotVector) -> Vec<Domain> {
-    let domain = knots.domain();
-    let mut values = vec![domain.start];
-    values.extend(knots.interior_breakpoints().iter().map(|b| b.value));
-    values.push(domain.end);
-    values
-        .windows(2)
-        .map(|w| Domain {
-            start: w[0],
-            end: w[1],
-        })
-        .collect()
-}
-
 /// A5.1 `CurveKnotIns` on homogeneous points: the refined knot vector and
 /// control points.
 fn insert(

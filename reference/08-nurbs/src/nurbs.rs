@@ -82,8 +82,8 @@ impl NurbsCurve {
             cw_u += pw * dn;
         }
         let point = project(cw);
-        let tangent = (cw_u.truncate() - cw_u.w * point) / cw.w;
-        Ok(CurvePoint { point, tangent })
+        let derivative = (cw_u.truncate() - cw_u.w * point) / cw.w;
+        Ok(CurvePoint { point, derivative })
         // END SOLUTION
     }
 }
@@ -137,7 +137,7 @@ impl NurbsSurface {
         }
         let point = project(sw);
         Ok(SurfacePoint {
-            point,
+            position: point,
             du: (sw_u.truncate() - sw_u.w * point) / sw.w,
             dv: (sw_v.truncate() - sw_v.w * point) / sw.w,
         })

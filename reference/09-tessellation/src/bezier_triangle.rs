@@ -35,7 +35,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 use crate::mesh::Mesh;
 pub use freeform::{BezierTriangle, TriangleDomain};
@@ -124,7 +124,7 @@ pub fn tessellate_pn(pn: &PnTriangle, domain: &TriangleDomain) -> Mesh {
     let mut mesh = Mesh::new();
     let [n1, n2, n3] = pn.normals;
     for &b in &domain.points {
-        mesh.push_vertex(SurfacePoint {
+        mesh.push_vertex(SurfaceSample {
             uv: DVec2::new(b[0], b[1]),
             position: evaluate(&pn.geometry, b),
             normal: (b[0] * n1 + b[1] * n2 + b[2] * n3).normalize_or_zero(),

@@ -17,28 +17,28 @@
 
 use glam::DVec3;
 
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 
 /// What an edge test may look at.
 #[derive(Clone, Copy, Debug)]
 pub struct EdgeContext<'a> {
     /// The first end point `V1`.
-    pub v1: SurfacePoint,
+    pub v1: SurfaceSample,
     /// The second end point `V2`.
-    pub v2: SurfacePoint,
+    pub v2: SurfaceSample,
     /// The candidate vertex `V12`, on the surface at the parameter midpoint.
-    pub mid: SurfacePoint,
+    pub mid: SurfaceSample,
     /// The vertices opposite the edge in the triangles that share it (`V6`
     /// and `V10`; one on the boundary of the mesh).
-    pub opposite: &'a [SurfacePoint],
+    pub opposite: &'a [SurfaceSample],
     /// The first-order neighbourhood of the edge: `V1`, `V2` and every
     /// vertex joined to either by an edge, each once.
-    pub ring: &'a [SurfacePoint],
+    pub ring: &'a [SurfaceSample],
     /// The vertices joined to `V1` by an edge (`V2` among them).
-    pub neighbours1: &'a [SurfacePoint],
+    pub neighbours1: &'a [SurfaceSample],
     /// The vertices joined to `V2` by an edge (`V1` among them).
-    pub neighbours2: &'a [SurfacePoint],
+    pub neighbours2: &'a [SurfaceSample],
 }
 
 /// The seven tests, each with the seed's thresholds.
@@ -230,7 +230,7 @@ pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
 #[must_use]
 pub fn umbrella_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: unit umbrella vector at each end against its normal
-    let bent = |v: &SurfacePoint, neighbours: &[SurfacePoint]| {
+    let bent = |v: &SurfaceSample, neighbours: &[SurfaceSample]| {
         if neighbours.is_empty() {
             return false;
         }

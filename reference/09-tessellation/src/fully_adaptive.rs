@@ -32,7 +32,7 @@
 
 use std::collections::HashMap;
 
-use crate::bezier::{Evaluate, SurfacePoint};
+use crate::bezier::{Evaluate, SurfaceSample};
 use crate::edge_tests::{EdgeContext, EdgeTest};
 use crate::error::TessError;
 use crate::mesh::Mesh;
@@ -98,7 +98,7 @@ pub fn refine(
     let mut pending: Vec<[u32; 3]> = initial.triangles.clone();
     while !pending.is_empty() {
         let adjacency = Adjacency::new(&mesh, done.iter().chain(&pending));
-        let mut new_vertices: Vec<((u32, u32), SurfacePoint)> = Vec::new();
+        let mut new_vertices: Vec<((u32, u32), SurfaceSample)> = Vec::new();
         let mut this_round: HashMap<(u32, u32), bool> = HashMap::new();
         for tri in &pending {
             for (a, b) in edges(*tri) {
@@ -243,7 +243,7 @@ impl Adjacency {
         mesh: &Mesh,
         a: u32,
         b: u32,
-        mid: SurfacePoint,
+        mid: SurfaceSample,
         decide: impl Fn(&EdgeContext) -> bool,
     ) -> bool {
         let points = |ids: &[u32]| ids.iter().map(|&i| mesh.vertex(i)).collect::<Vec<_>>();

@@ -39,7 +39,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::bezier::SurfacePoint;
+use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 use crate::mesh::Mesh;
 use crate::patch_grid::{GridPatch, PatchGrid};
@@ -138,9 +138,9 @@ fn check_tolerance(tolerance: f64) -> Result<(), TessError> {
 
 /// A point of patch `(row, col)` at local parameters `local`, with its
 /// global parameters `(col + u, row + v)`.
-fn sample(grid: &PatchGrid<impl GridPatch>, row: usize, col: usize, local: DVec2) -> SurfacePoint {
+fn sample(grid: &PatchGrid<impl GridPatch>, row: usize, col: usize, local: DVec2) -> SurfaceSample {
     let point = grid.patch(row, col).sample(local);
-    SurfacePoint {
+    SurfaceSample {
         uv: local + DVec2::new(col as f64, row as f64),
         ..point
     }

@@ -62,14 +62,7 @@ fn surface(c: &mut Criterion) {
 }
 
 fn trimming(c: &mut Criterion) {
-    let p = [
-        DVec2::new(0.1, 0.5),
-        DVec2::new(0.1 + 0.8 / 3.0, 0.95),
-        DVec2::new(0.1 + 1.6 / 3.0, 0.75),
-        DVec2::new(0.9, 0.5),
-        DVec2::new(0.1 + 0.8 / 3.0, 0.2),
-        DVec2::new(0.1 + 1.6 / 3.0, 0.05),
-    ];
+    let p = freeform::trim::CUBIC_REGION;
     let newton = NewtonTrim::cubic(p).unwrap();
     let upper = vec![p[0], p[1], p[2], p[3]];
     let lower_back = vec![p[3], p[5], p[4], p[0]];

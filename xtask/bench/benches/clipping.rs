@@ -12,19 +12,21 @@ use clipping::liang_barsky::liang_barsky;
 use clipping::sutherland_hodgman::clip_polygon;
 use clipping::{ClipPlane, ClipWindow, Segment};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use scene::Vec4;
 
 const SEGMENTS: usize = 1000;
 
-/// The six planes of the clip volume.
-const PLANES: [ClipPlane; 6] = [
-    ClipPlane::new(Vec4::new(1.0, 0.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(-1.0, 0.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 1.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, -1.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 0.0, 1.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 0.0, -1.0, -1.0)),
-];
+/// The six planes of the clip volume, written out in testkit.
+const PLANES: [ClipPlane; 6] = {
+    let p = testkit::definitions::CLIP_VOLUME_PLANES;
+    [
+        ClipPlane::new(p[0]),
+        ClipPlane::new(p[1]),
+        ClipPlane::new(p[2]),
+        ClipPlane::new(p[3]),
+        ClipPlane::new(p[4]),
+        ClipPlane::new(p[5]),
+    ]
+};
 
 fn polygons(c: &mut Criterion) {
     let mesh = scene::ply::load(scene::data::path("clipped_torus.ply")).expect("shipped mesh");

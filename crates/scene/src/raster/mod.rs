@@ -1,6 +1,10 @@
 //! A small library rasterizer for the pipeline: triangles by edge
 //! functions and lines as one-pixel-wide bands of two triangles, with
-//! colour and depth interpolation and a depth test.
+//! colour and depth interpolation and a depth test. [`cover`], the
+//! triangles' pixels with their barycentric weights, is the one triangle
+//! rasterizer of the course's given code: topic 05's fragments (which add
+//! the top-left rule), topic 07's z-buffer, topic 09's renderer and
+//! topic 08's test pictures draw with it.
 //!
 //! This is not student work: the exercise topics write their own, and
 //! `cargo xtask view` draws the pipeline with those. It is kept small and
@@ -19,7 +23,7 @@ mod band;
 mod edge_function;
 
 pub use band::{band, draw_line};
-pub use edge_function::fill_triangle;
+pub use edge_function::{cover, fill_triangle};
 
 use canvas::{Canvas, Fragment, Vertex, within_limits};
 

@@ -7,16 +7,20 @@ use canvas::{Rgba, Vec2, Vec4};
 use clipping::{ClipPlane, ClipVertex, ClipWindow, Segment};
 use proptest::prelude::*;
 
-/// The six planes of the clip volume `−w ≤ x, y, z ≤ w`, written out:
-/// right, left, top, bottom, far, near.
-pub const VOLUME_PLANES: [ClipPlane; 6] = [
-    ClipPlane::new(Vec4::new(1.0, 0.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(-1.0, 0.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 1.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, -1.0, 0.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 0.0, 1.0, -1.0)),
-    ClipPlane::new(Vec4::new(0.0, 0.0, -1.0, -1.0)),
-];
+/// The six planes of the clip volume `−w ≤ x, y, z ≤ w`, written out
+/// (`testkit::definitions::CLIP_VOLUME_PLANES`, not taken from
+/// `clip_planes()`): right, left, top, bottom, far, near.
+pub const VOLUME_PLANES: [ClipPlane; 6] = {
+    let p = testkit::definitions::CLIP_VOLUME_PLANES;
+    [
+        ClipPlane::new(p[0]),
+        ClipPlane::new(p[1]),
+        ClipPlane::new(p[2]),
+        ClipPlane::new(p[3]),
+        ClipPlane::new(p[4]),
+        ClipPlane::new(p[5]),
+    ]
+};
 
 /// A clip-space vertex.
 pub fn cv(x: f32, y: f32, z: f32, w: f32, colour: Rgba) -> ClipVertex {

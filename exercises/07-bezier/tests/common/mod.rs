@@ -94,6 +94,7 @@ pub fn surface_partials_def(net: &BezierPatch, uv: DVec2) -> [DVec3; 2] {
 pub fn sample_def(net: &BezierPatch, uv: DVec2) -> SurfaceSample {
     let [du, dv] = surface_partials_def(net, uv);
     SurfaceSample {
+        uv,
         position: surface_def(net, uv),
         normal: du.cross(dv).normalize_or_zero(),
     }

@@ -7,7 +7,7 @@
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DVec3, DVec4};
-use nurbs::{ControlNet, KnotVector, NurbsCurve, NurbsSurface, homogeneous};
+use nurbs::{ControlNet, Domain, KnotVector, NurbsCurve, NurbsSurface, RationalPatch, homogeneous};
 use proptest::prelude::*;
 
 pub use testkit::oracles::bernstein;
@@ -51,6 +51,39 @@ pub fn bezier_patch_point(net: &ControlNet, s: f64, t: f64) -> DVec3 {
         }
     }
     sum.truncate() / sum.w
+}
+
+/// The same for the course library's patch: its homogeneous points
+/// `(w·P, w)` as a net.
+pub fn rational_patch_point(patch: &RationalPatch, s: f64, t: f64) -> DVec3 {
+    let (p, q) = (patch.points().degree_u(), patch.points().degree_v());
+    let points = (0..=p)
+        .flat_map(|i| (0..=q).map(move |j| homogeneous_point(patch, i, j)))
+        .collect();
+    let net = ControlNet::try_new(p + 1, q + 1, points).expect("a patch's points are a net");
+    bezier_patch_point(&net, s, t)
+}
+
+/// `Pʷ_ij = (w·P, w)` of a patch, to compare with a net's points.
+pub fn homogeneous_point(patch: &RationalPatch, i: usize, j: usize) -> DVec4 {
+    homogeneous(patch.points().control_point(i, j), patch.weight(i, j))
+}
+
+/// The non-empty spans of a knot vector's domain, in order: the pieces
+/// `[u_a, u_{a+1}]` between its distinct knots, which the Bézier patches
+/// of a decomposition cover one by one.
+pub fn spans(knots: &KnotVector) -> Vec<Domain> {
+    let domain = knots.domain();
+    let mut values = vec![domain.start];
+    values.extend(knots.interior_breakpoints().iter().map(|b| b.value));
+    values.push(domain.end);
+    values
+        .windows(2)
+        .map(|w| Domain {
+            start: w[0],
+            end: w[1],
+        })
+        .collect()
 }
 
 /// Fails with both points and `what` if they are farther apart than
@@ -284,42 +317,29 @@ pub fn render_grid(
     canvas
 }
 
-/// One triangle, both windings, centres on an edge included.
+/// One triangle, both windings, centres on an edge included: the pixels
+/// of the course's given rasterizer, `scene::raster::cover`, with colour
+/// and depth interpolated and depth-tested here.
 fn fill_triangle(canvas: &mut Canvas, v: [(DVec3, Rgba); 3]) {
     let [(a, ca), (b, cb), (c, cc)] = v;
-    let area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if area.abs() < 1e-12 {
-        return;
-    }
-    let x0 = a.x.min(b.x).min(c.x).ceil().max(0.0) as i32;
-    let x1 = a.x.max(b.x).max(c.x).floor().min(f64::from(WIDTH) - 1.0) as i32;
-    let y0 = a.y.min(b.y).min(c.y).ceil().max(0.0) as i32;
-    let y1 = a.y.max(b.y).max(c.y).floor().min(f64::from(HEIGHT) - 1.0) as i32;
-    for y in y0..=y1 {
-        for x in x0..=x1 {
-            let (px, py) = (f64::from(x), f64::from(y));
-            let edge = |p: DVec3, q: DVec3| (q.x - p.x) * (py - p.y) - (q.y - p.y) * (px - p.x);
-            let (la, lb, lc) = (edge(b, c) / area, edge(c, a) / area, edge(a, b) / area);
-            if la < 0.0 || lb < 0.0 || lc < 0.0 {
-                continue;
-            }
-            let depth = (la * a.z + lb * b.z + lc * c.z) as f32;
-            let pixel = Pixel::new(x, y);
-            if canvas.depth(pixel).is_some_and(|d| depth < d) {
-                let colour = Rgba::new(
-                    (la as f32) * ca.r + (lb as f32) * cb.r + (lc as f32) * cc.r,
-                    (la as f32) * ca.g + (lb as f32) * cb.g + (lc as f32) * cc.g,
-                    (la as f32) * ca.b + (lb as f32) * cb.b + (lc as f32) * cc.b,
-                    1.0,
-                );
-                canvas.plot(canvas::Fragment {
-                    pixel,
-                    depth,
-                    colour,
-                });
-            }
+    let corners = [a, b, c].map(DVec3::truncate);
+    let viewport = canvas.viewport();
+    scene::raster::cover(corners, viewport, |pixel, [la, lb, lc]| {
+        let depth = (la * a.z + lb * b.z + lc * c.z) as f32;
+        if canvas.depth(pixel).is_some_and(|d| depth < d) {
+            let colour = Rgba::new(
+                (la as f32) * ca.r + (lb as f32) * cb.r + (lc as f32) * cc.r,
+                (la as f32) * ca.g + (lb as f32) * cb.g + (lc as f32) * cc.g,
+                (la as f32) * ca.b + (lb as f32) * cb.b + (lc as f32) * cc.b,
+                1.0,
+            );
+            canvas.plot(canvas::Fragment {
+                pixel,
+                depth,
+                colour,
+            });
         }
-    }
+    });
 }
 
 /// Plots a dot of `colour` at the screen position of `p` if it is in

@@ -15,18 +15,14 @@ use tessellation::{DVec2, DVec3};
 /// Positions computed two ways agree to this (coordinates of order 10).
 pub const POSITION_TOLERANCE: f64 = 1e-9;
 
-pub use testkit::oracles::bernstein;
+pub use testkit::oracles::{bernstein, tensor_bezier};
 
-/// `S(u, v)` by the double Bernstein sum of Definition 1.1.4.
+/// `S(u, v)` of `patch` by the double Bernstein sum of Definition 1.1.4
+/// (the course's oracle, [`tensor_bezier`], which also gives the partial
+/// derivatives).
 pub fn bernstein_surface(patch: &BezierPatch, uv: DVec2) -> DVec3 {
-    let (p, q) = (patch.degree_u(), patch.degree_v());
-    let mut sum = DVec3::ZERO;
-    for i in 0..=p {
-        for j in 0..=q {
-            sum += bernstein(i, p, uv.x) * bernstein(j, q, uv.y) * patch.control_point(i, j);
-        }
-    }
-    sum
+    let control = |i: usize, j: usize| patch.control_point(i, j);
+    tensor_bezier(patch.degree_u(), patch.degree_v(), control, uv.to_array())[0]
 }
 
 /// A patch from a function of the control-point indices.

@@ -9,7 +9,7 @@ use glam::{DVec2, DVec3, Vec3};
 use gpu::Gpu;
 use gpu_tessellation::passes::Domain;
 use gpu_tessellation::patch::{
-    BezierPatch, BezierTriangle, GpuVertex, NORMAL_EPSILON, SurfacePoint,
+    BezierPatch, BezierTriangle, GpuVertex, NORMAL_EPSILON, SurfaceSample,
 };
 use proptest::prelude::*;
 use testkit::image::{Tolerance, assert_image_matches};
@@ -35,10 +35,11 @@ fn unit_or_zero(n: DVec3) -> DVec3 {
 /// The patch at `uv` by its definition (the double Bernstein sum), with the
 /// normal of the sheet: the cross product of the differences of the last
 /// step but one, `(∂P/∂u / 3) × (∂P/∂v / 3)`, normalised.
-pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfacePoint {
+pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfaceSample {
     let control = |i: usize, j: usize| patch.control_point(i, j);
     let [position, du, dv] = tensor_bezier(3, 3, control, [uv.x, uv.y]);
-    SurfacePoint {
+    SurfaceSample {
+        uv,
         position,
         normal: unit_or_zero((du / 3.0).cross(dv / 3.0)),
     }
@@ -47,11 +48,12 @@ pub fn patch_point(patch: &BezierPatch, uv: DVec2) -> SurfacePoint {
 /// The Bézier triangle at `uvw` by its definition, with the normal of the
 /// sheet: `(Q010 − Q100) × (Q001 − Q100)`, where `Q100 = ∂B/∂u / 3` and so
 /// on (the three points of the last step but one), normalised.
-pub fn triangle_point(triangle: &BezierTriangle, uvw: DVec3) -> SurfacePoint {
+pub fn triangle_point(triangle: &BezierTriangle, uvw: DVec3) -> SurfaceSample {
     let control = |i: usize, j: usize, k: usize| triangle.point(i, j, k);
     let [position, bu, bv, bw] = triangle_bezier(3, control, uvw.to_array());
     let (qu, qv, qw) = (bu / 3.0, bv / 3.0, bw / 3.0);
-    SurfacePoint {
+    SurfaceSample {
+        uv: uvw.truncate(),
         position,
         normal: unit_or_zero((qv - qu).cross(qw - qu)),
     }

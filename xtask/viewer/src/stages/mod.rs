@@ -331,12 +331,7 @@ impl Stages {
             stages.decompose.run = Some(Arc::new(|data: &freeform::NurbsSurfaceData| {
                 let error = |e: nurbs::NurbsError| e.to_string();
                 let surface = nurbs::NurbsSurface::from_data(data).map_err(error)?;
-                let patches = surface
-                    .decompose()
-                    .map_err(error)?
-                    .iter()
-                    .map(|patch| patch.to_rational().map_err(|e| e.to_string()))
-                    .collect::<Result<Vec<_>, _>>()?;
+                let patches = surface.decompose().map_err(error)?;
                 Decomposed::from_u_major(data.pieces(), patches)
             }));
         }

@@ -58,7 +58,11 @@ pub(super) fn render_surface(
     // render only passes it on.
     let sample = |uv| {
         surface(uv)
-            .map(|(position, normal)| SurfaceSample { position, normal })
+            .map(|(position, normal)| SurfaceSample {
+                uv,
+                position,
+                normal,
+            })
             .map_err(|_| bezier::BezierError::Empty)
     };
     bezier::render::render_surface(canvas, sample, &Asking(trims), &settings)
