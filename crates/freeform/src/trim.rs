@@ -44,3 +44,14 @@ pub const CUBIC_REGION: [DVec2; 6] = [
     DVec2::new(0.1 + 0.8 / 3.0, 0.2),
     DVec2::new(0.1 + 1.6 / 3.0, 0.05),
 ];
+
+/// The region kept inside [`QUADRATIC_REGION`] in the seed's nested trim
+/// (Fig. 12, Listing 12): ends `(0.35, 0.5)` and `(0.65, 0.5)`, controls
+/// `(0.5, 0.7)` and `(0.5, 0.3)`, so that `|v − 0.5| < 0.4 t (1 − t)`
+/// along `u = 0.35 + 0.3 t`.
+pub const INNER_REGION: [DVec2; 4] = [
+    DVec2::new(0.35, 0.5),
+    DVec2::new(0.5, 0.7),
+    DVec2::new(0.65, 0.5),
+    DVec2::new(0.5, 0.3),
+];

@@ -56,14 +56,8 @@ fn in_cubic(p: DVec2) -> bool {
     p.y < upper && p.y > lower
 }
 
-/// The inner region of the nested example: ends (0.35, 0.5), (0.65, 0.5),
-/// controls (0.5, 0.7) and (0.5, 0.3): `|v − 0.5| < 0.4 t (1 − t)`.
-const INNER: [DVec2; 4] = [
-    DVec2::new(0.35, 0.5),
-    DVec2::new(0.5, 0.7),
-    DVec2::new(0.65, 0.5),
-    DVec2::new(0.5, 0.3),
-];
+/// The inner region of the nested example: `|v − 0.5| < 0.4 t (1 − t)`.
+const INNER: [DVec2; 4] = freeform::trim::INNER_REGION;
 
 fn in_inner(p: DVec2) -> bool {
     let t = (p.x - 0.35) / 0.3;

@@ -80,31 +80,12 @@ impl TrimShape {
     }
 }
 
-/// The region between two quadratic curves of Abbildung 11: the upper
-/// curve `P0 P1 P2`, the lower `P0 P3 P2`.
-pub const QUADRATIC: [DVec2; 4] = [
-    DVec2::new(0.2, 0.5),
-    DVec2::new(0.5, 0.9),
-    DVec2::new(0.8, 0.5),
-    DVec2::new(0.5, 0.1),
-];
-/// The region between two cubic curves of Abbildung 24: the upper curve
-/// `P0 P1 P2 P3`, the lower `P0 P4 P5 P3`.
-pub const CUBIC: [DVec2; 6] = [
-    DVec2::new(0.1, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.95),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.75),
-    DVec2::new(0.9, 0.5),
-    DVec2::new(0.1 + 0.8 / 3.0, 0.2),
-    DVec2::new(0.1 + 1.6 / 3.0, 0.05),
-];
+/// The seed's regions between two quadratic curves (Abbildung 11) and
+/// two cubic curves (Abbildung 24), as topic 07's tests draw them.
+pub use freeform::trim::{CUBIC_REGION as CUBIC, QUADRATIC_REGION as QUADRATIC};
+
 /// The region kept inside [`QUADRATIC`] in the nested trim (Abbildung 12).
-pub const INNER: [DVec2; 4] = [
-    DVec2::new(0.35, 0.5),
-    DVec2::new(0.5, 0.7),
-    DVec2::new(0.65, 0.5),
-    DVec2::new(0.5, 0.3),
-];
+pub use freeform::trim::INNER_REGION as INNER;
 
 /// A trim and its parameters, in the parameter square `[0, 1]²`.
 #[derive(Clone, Copy, Debug, PartialEq)]
