@@ -74,7 +74,12 @@ fn two_shards_merged_give_the_gradebook_of_one_run() {
     args.extend(["--out", merged.to_str().unwrap()]);
     let output = xtask(&official, &args);
     assert!(output.status.success(), "{output:?}");
-    for file in ["gradebook.csv", "gradebook.json", "class.json", "class.html"] {
+    for file in [
+        "gradebook.csv",
+        "gradebook.json",
+        "class.json",
+        "class.html",
+    ] {
         assert_eq!(read(&merged.join(file)), read(&whole.join(file)), "{file}");
     }
     assert!(merged.join("s03-partial/report.html").is_file());
