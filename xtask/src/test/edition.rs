@@ -187,28 +187,36 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
         )
         .with_context(|| format!("cannot parse {}", path.display()))
     };
-    let (correct, faulty) = (report(&names[0])?, report(&names[1])?);
-    let flagged = |r: &serde_json::Value| {
-        r["integrity"]["changed"]
-            .as_array()
-            .is_some_and(|a| !a.is_empty())
-            || r["integrity"]["tampered"]
-                .as_array()
-                .is_some_and(|a| !a.is_empty())
+    let correct = report(&names[0])?;
+    // The gradebook's rows: points without the bonus, and the flag.
+    let path = out.join("gradebook.json");
+    let rows: Vec<serde_json::Value> = serde_json::from_str(
+        &fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?,
+    )
+    .with_context(|| format!("cannot parse {}", path.display()))?;
+    let row = |name: &str| {
+        rows.iter()
+            .find(|r| r["submission"] == name)
+            .with_context(|| format!("{name} is not in the class's gradebook"))
     };
+    let (correct_row, faulty_row) = (row(&names[0])?, row(&names[1])?);
     ensure!(
-        !flagged(&correct) && correct["score"] == correct["max_score"],
+        correct_row["flagged"] == false && correct_row["score"] == correct_row["max_score"],
         "{} (every solution) scores {} of {} in a class{}",
         names[0],
-        correct["score"],
-        correct["max_score"],
-        if flagged(&correct) { ", flagged" } else { "" }
+        correct_row["score"],
+        correct_row["max_score"],
+        if correct_row["flagged"] == true {
+            ", flagged"
+        } else {
+            ""
+        }
     );
     ensure!(
-        faulty["score"].as_f64() < correct["score"].as_f64(),
+        faulty_row["score"].as_f64() < correct_row["score"].as_f64(),
         "{} (a planted mistake) scores {} like a correct member",
         names[1],
-        faulty["score"]
+        faulty_row["score"]
     );
     let tasks = correct["topics"]
         .as_array()
@@ -219,8 +227,8 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
         .sum();
     let page = super::browser::class_report_in_chromium(root, &out, tasks, &names[1])?;
     Ok(format!(
-        "a class of two grades {} and {} of {}; {page}",
-        correct["score"], faulty["score"], correct["max_score"]
+        "a class of two grades {} and {} of {} (bonus apart); {page}",
+        correct_row["score"], faulty_row["score"], correct_row["max_score"]
     ))
 }
 
