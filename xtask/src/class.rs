@@ -151,9 +151,20 @@ fn make(
                 .join(&shortcut.topic)
                 .join("src")
                 .join(&shortcut.file);
-            let text = fs::read_to_string(&path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            crate::files::write_file(&path, shortcut.plant(&text)?)?;
+            // Planted into the solution as the reference holds it (a
+            // shortcut may replace a marked region), then handed in
+            // without the markers.
+            let reference = root
+                .join("reference")
+                .join(&shortcut.topic)
+                .join("src")
+                .join(&shortcut.file);
+            let text = fs::read_to_string(&reference)
+                .with_context(|| format!("cannot read {}", reference.display()))?;
+            crate::files::write_file(
+                &path,
+                crate::stubs::without_markers(&shortcut.plant(&text)?),
+            )?;
         }
         Kind::Tampered => {
             let topic = &topics[pick(topics.len())];
@@ -199,4 +210,43 @@ pub fn run(root: &Path, dir: &Path, size: usize, topics: &[String]) -> Result<()
         dir.display()
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every planted mistake a faulty member may hand in is made: planted
+    /// into the reference's file (a shortcut may need its markers) and
+    /// handed in without markers.
+    #[test]
+    fn every_planted_mistake_can_be_handed_in() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        if !root.join("reference").is_dir() {
+            eprintln!("not run: a student edition holds no solutions to plant into");
+            return;
+        }
+        let shortcuts = crate::test::shortcuts(root).unwrap();
+        let mut topics: Vec<String> = shortcuts.iter().map(|s| s.topic.clone()).collect();
+        topics.sort();
+        topics.dedup();
+        let member = std::env::temp_dir().join(format!("xtask-faulty-{}", std::process::id()));
+        for (nth, shortcut) in shortcuts.iter().enumerate() {
+            let _ = fs::remove_dir_all(&member);
+            make(root, &member, &topics, Kind::Faulty, nth, &shortcuts)
+                .unwrap_or_else(|e| panic!("{}: {e:#}", shortcut.what));
+            let file = member
+                .join("exercises")
+                .join(&shortcut.topic)
+                .join("src")
+                .join(&shortcut.file);
+            let handed_in = fs::read_to_string(&file).unwrap();
+            assert!(
+                !handed_in.contains("// BEGIN SOLUTION"),
+                "{}",
+                shortcut.what
+            );
+        }
+        let _ = fs::remove_dir_all(&member);
+    }
 }

@@ -22,7 +22,8 @@ pub(super) struct Shortcuts {
 /// One shortcut: where it goes, how it is made, what it must cost.
 #[derive(serde::Deserialize)]
 pub(crate) struct Shortcut {
-    what: String,
+    /// What the planted mistake is, in words.
+    pub what: String,
     /// Its topic (folder name).
     pub topic: String,
     /// Its solution file, in the topic's `src/`.
