@@ -264,7 +264,7 @@ mod linux {
         }
         write_class(&official, &class);
         let course_before = snapshot(&official);
-        let out = official.join("target/containment");
+        let out = crate::common::fresh(official.join("target/containment"));
         let limit = BUILD_LIMIT_S.to_string();
         let started = Instant::now();
         let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))

@@ -44,7 +44,7 @@ mod linux {
                 &format!("{checks}\n    -x"),
             )),
         );
-        let out = official.join("target/unsandboxed");
+        let out = crate::common::fresh(official.join("target/unsandboxed"));
         let output = std::process::Command::new(env!("CARGO_BIN_EXE_xtask"))
             .arg("--root")
             .arg(&official)

@@ -129,7 +129,7 @@ mod linux {
             ops(VIEWER_ATTACK, "-x"),
         )
         .unwrap();
-        let out = official.join("target/viewer");
+        let out = crate::common::fresh(official.join("target/viewer"));
         let started = Instant::now();
         let output = grade_submission(&official, &checkout, &out, &[]);
         assert!(output.status.success());

@@ -6,7 +6,7 @@ mod common;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use common::{fixture, grade_submission, stdout, xtask};
+use common::{fixture, fresh, grade_submission, stdout, xtask};
 
 /// A generated class of six members of the tiny course.
 fn class(official: &Path, name: &str) -> PathBuf {
@@ -17,15 +17,6 @@ fn class(official: &Path, name: &str) -> PathBuf {
     let output = xtask(official, &["class", class.to_str().unwrap(), "--size", "6"]);
     assert!(output.status.success(), "{output:?}");
     class
-}
-
-/// An empty folder at `path`: a fixture course keeps its `target/`
-/// between runs.
-fn fresh(path: PathBuf) -> PathBuf {
-    if path.exists() {
-        fs::remove_dir_all(&path).unwrap();
-    }
-    path
 }
 
 fn read(path: &Path) -> String {

@@ -89,7 +89,7 @@ fn submissions_are_graded_with_the_official_tests_and_changes_are_flagged() {
         ),
     )
     .unwrap();
-    let out = official.join("target/class");
+    let out = crate::common::fresh(official.join("target/class"));
     let output = grade_submission(&official, &class, &out, &["--jobs", "2"]);
     assert!(output.status.success(), "{output:?}");
     assert!(stdout(&output).contains("flagged (grading files changed): anna"));
@@ -212,7 +212,7 @@ fn a_generated_class_is_graded_two_at_a_time_as_each_member_earns() {
         stdout(&output).contains("s01-correct, s02-faulty, s03-partial, s04-tampered, s05-broken"),
         "{output:?}"
     );
-    let out = official.join("target/generated-class");
+    let out = crate::common::fresh(official.join("target/generated-class"));
     let output = grade_submission(&official, &class, &out, &["--jobs", "2"]);
     assert!(output.status.success(), "{output:?}");
     // The tiny course's one task file holds both tasks and it has no
@@ -293,7 +293,7 @@ fn a_crlf_checkout_grades_like_an_lf_one() {
         }
     }
     assert!(converted >= 6, "only {converted} files converted");
-    let out = official.join("target/crlf-class");
+    let out = crate::common::fresh(official.join("target/crlf-class"));
     let output = grade_submission(&official, &class, &out, &[]);
     assert!(output.status.success(), "{output:?}");
     assert_eq!(

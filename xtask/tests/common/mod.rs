@@ -149,3 +149,13 @@ pub fn grade(root: &Path, out: &str, extra: &[&str]) -> (Output, Value, Duration
     );
     (output, read_json(&out.join("report.json")), elapsed)
 }
+
+/// `path` emptied: a grade's `--out` in a fixture course, whose `target/`
+/// is kept between runs, so that a class graded again keeps no member
+/// graded by an earlier run (see `submission::resume`).
+pub fn fresh(path: PathBuf) -> PathBuf {
+    if path.exists() {
+        fs::remove_dir_all(&path).unwrap();
+    }
+    path
+}
