@@ -106,14 +106,6 @@ fn failure_details(test: &report::TestReport) -> String {
     if let Some(location) = &test.panic_location {
         let _ = write!(text, "\nat {location}");
     }
-    if let Some(input) = &test.minimal_input {
-        let _ = write!(text, "\nminimal failing input: {input}");
-    }
-    if let Some(diff) = &test.raster_diff {
-        let _ = write!(text, "\nraster diff (expected vs yours):\n{diff}");
-    }
-    if let Some(diff) = &test.snapshot_diff {
-        let _ = write!(text, "\nsnapshot diff (- expected, + yours):\n{diff}");
-    }
+    text.push_str(&test.evidence());
     text
 }

@@ -226,6 +226,26 @@ pub struct TestReport {
     pub images: Vec<PathBuf>,
 }
 
+impl TestReport {
+    /// What a failed test found beyond its reason and place, one line
+    /// each after a line break: the shrunk input, the raster diff, the
+    /// snapshot diff (empty when it found none of them).
+    #[must_use]
+    pub fn evidence(&self) -> String {
+        let mut text = String::new();
+        if let Some(input) = &self.minimal_input {
+            let _ = write!(text, "\nminimal failing input: {input}");
+        }
+        if let Some(diff) = &self.raster_diff {
+            let _ = write!(text, "\nraster diff (expected vs yours):\n{diff}");
+        }
+        if let Some(diff) = &self.snapshot_diff {
+            let _ = write!(text, "\nsnapshot diff (- expected, + yours):\n{diff}");
+        }
+        text
+    }
+}
+
 impl TaskReport {
     /// The failing test that tells the most, if any: one that ran before
     /// one not run (after a timeout), a literal, named test before a
@@ -304,15 +324,7 @@ impl TaskReport {
             if let Some(location) = &test.panic_location {
                 let _ = write!(text, "\nat: {location}");
             }
-            if let Some(input) = &test.minimal_input {
-                let _ = write!(text, "\nminimal failing input: {input}");
-            }
-            if let Some(diff) = &test.raster_diff {
-                let _ = write!(text, "\nraster diff (expected vs yours):\n{diff}");
-            }
-            if let Some(diff) = &test.snapshot_diff {
-                let _ = write!(text, "\nsnapshot diff (- expected, + yours):\n{diff}");
-            }
+            text.push_str(&test.evidence());
             let others = task.failed - 1;
             if others > 0 {
                 let _ = write!(text, "\n\n{others} other test(s) of this task failed too");

@@ -2,29 +2,17 @@
 
 use super::page::{failure_rows, href};
 use super::*;
-use crate::grade::report::{Edition, Exit, TestReport, TopicReport};
+use crate::grade::report::{Edition, TestReport, TopicReport};
 
 fn test(name: &str, reason: Option<&str>) -> TestReport {
-    TestReport {
-        name: name.to_owned(),
-        status: if reason.is_some() {
-            TestStatus::Failed
-        } else {
-            TestStatus::Passed
-        },
-        reason: reason.map(str::to_owned),
-        panic_location: None,
-        minimal_input: None,
-        raster_diff: None,
-        snapshot_diff: None,
-        reviewed: None,
-        duration_s: 0.0,
-        exit: Exit::default(),
-        output: None,
-        log: None,
-        images_dir: None,
-        images: Vec::new(),
-    }
+    let status = if reason.is_some() {
+        TestStatus::Failed
+    } else {
+        TestStatus::Passed
+    };
+    let mut test = crate::grade::report::tests::test(name, status);
+    test.reason = reason.map(str::to_owned);
+    test
 }
 
 fn task(id: &str, points: f64, score: f64, tests: Vec<TestReport>) -> TaskReport {
