@@ -364,7 +364,13 @@ mod linux {
             why.contains("has no exercises/01-tiny"),
             "drops-topic: {why}"
         );
-        assert_eq!(report("drops-topic")["max_score"], 3.0);
+        let dropped = report("drops-topic");
+        assert_eq!(dropped["max_score"], 3.0);
+        // A topic the submission lacks is neither built nor run: its
+        // tasks score 0 by the reason, not by the stubs' failing tests.
+        let double = task(&dropped, "01-tiny", "double");
+        assert_eq!(double["status"], "error", "{dropped:#}");
+        assert_eq!(double["tests"], serde_json::json!([]), "{dropped:#}");
 
         // The secret is in no file the grade wrote.
         let mut leaked = Vec::new();

@@ -95,6 +95,10 @@ pub struct GradeOptions {
     /// Progress bars and spinners on stderr (off where several grades
     /// share the terminal).
     pub progress: bool,
+    /// Topics of the assignment that the graded code does not hold (a
+    /// submission without their folders): neither built nor run, each of
+    /// their tasks an error that says so, scoring 0.
+    pub absent: Vec<String>,
 }
 
 impl GradeOptions {
@@ -114,6 +118,7 @@ impl GradeOptions {
             keep_binaries: None,
             permits: None,
             progress: true,
+            absent: Vec::new(),
         }
     }
 }
@@ -180,6 +185,8 @@ pub(crate) struct Prepared {
     options: GradeOptions,
     edition: Edition,
     started: Instant,
+    /// Seconds the builds took (and the listing of the tests).
+    build_s: f64,
     root: PathBuf,
     out: PathBuf,
     plans: Vec<plan::Plan>,
@@ -238,9 +245,14 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
     };
     let mut together: Option<std::vec::IntoIter<Vec<TestBinary>>> = None;
     let mut stopped: Option<String> = None;
-    if topics.len() > 1 {
-        let spinner = spinner(format!("building {} topics", topics.len()));
-        match build::build_all(&builder, &topics)? {
+    let held: Vec<topics::Topic> = topics
+        .iter()
+        .filter(|topic| !options.absent.contains(&topic.name))
+        .cloned()
+        .collect();
+    if held.len() > 1 {
+        let spinner = spinner(format!("building {} topics", held.len()));
+        match build::build_all(&builder, &held)? {
             Ok(all) => together = Some(all.into_iter()),
             Err(reason) => stopped = reason,
         }
@@ -256,6 +268,10 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
                 fs::remove_dir_all(&stale)
                     .with_context(|| format!("cannot clear {}", stale.display()))?;
             }
+        }
+        if options.absent.contains(&topic.name) {
+            plans.push(plan::absent(topic));
+            continue;
         }
         let build = match (together.as_mut().and_then(Iterator::next), &stopped) {
             // (None found: built on its own, which says why.)
@@ -281,7 +297,11 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         .filter(|plan| plan.compile_error.is_none())
         .map(|plan| plan.topic.name.as_str())
         .collect();
-    let graded: Vec<&str> = plans.iter().map(|plan| plan.topic.name.as_str()).collect();
+    let graded: Vec<&str> = plans
+        .iter()
+        .filter(|plan| !plan.absent)
+        .map(|plan| plan.topic.name.as_str())
+        .collect();
     let viewer = pipeline::build_viewer(&builder, &graded, &compiled);
     let viewer = match (&options.keep_binaries, viewer) {
         (Some(keep), pipeline::Viewer::Built(binary)) => {
@@ -296,6 +316,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         options: options.clone(),
         edition,
         started,
+        build_s: started.elapsed().as_secs_f64(),
         root,
         out,
         plans,
@@ -351,11 +372,13 @@ impl Prepared {
             options,
             edition,
             started,
+            build_s,
             root,
             out,
             plans,
             viewer,
         } = self;
+        let testing = Instant::now();
         let out = out.as_path();
         // Then run all tests of all topics in one pool.
         let mut jobs: Vec<(usize, usize)> = plans
@@ -394,6 +417,12 @@ impl Prepared {
         for (&(p, t), result) in jobs.iter().zip(results) {
             finished.insert((p, t), result);
         }
+        let tests_s = testing.elapsed().as_secs_f64();
+        let graded: Vec<String> = plans
+            .iter()
+            .filter(|plan| !plan.absent)
+            .map(|plan| plan.topic.name.clone())
+            .collect();
         let topics: Vec<TopicReport> = plans
             .into_iter()
             .enumerate()
@@ -403,7 +432,8 @@ impl Prepared {
             "drawing the pipeline with your stages".to_owned(),
             options.progress,
         );
-        let graded: Vec<&str> = topics.iter().map(|t| t.name.as_str()).collect();
+        let graded: Vec<&str> = graded.iter().map(String::as_str).collect();
+        let drawing = Instant::now();
         let pipeline = pipeline::draw_all(
             &pipeline::Plan {
                 root: &root,
@@ -413,6 +443,11 @@ impl Prepared {
             &viewer,
         );
         spinner.finish_and_clear();
+        let phases = report::Phases {
+            build_s: report::round2(build_s),
+            tests_s: report::round2(tests_s),
+            pipeline_s: report::round2(drawing.elapsed().as_secs_f64()),
+        };
         let report = Report {
             schema: report::SCHEMA,
             root,
@@ -420,6 +455,7 @@ impl Prepared {
             score: report::round2(topics.iter().map(|t| t.score).sum()),
             max_score: report::round2(topics.iter().map(|t| t.max_score).sum()),
             duration_s: report::round2(started.elapsed().as_secs_f64()),
+            phases,
             complete: topics.iter().all(|topic| {
                 topic.compile_error.is_none()
                     && topic.errors.is_empty()

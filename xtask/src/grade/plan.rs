@@ -20,6 +20,8 @@ pub(super) struct Plan {
     /// Per task (sheet order): an error that keeps it from being graded.
     pub(super) task_errors: Vec<Option<String>>,
     pub(super) tests: Vec<PlannedTest>,
+    /// The graded code does not hold the topic: nothing was built or run.
+    pub(super) absent: bool,
 }
 
 pub(super) struct PlannedTest {
@@ -50,6 +52,7 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
         errors: Vec::new(),
         task_errors: vec![None; topic.sheet.tasks.len()],
         tests: Vec::new(),
+        absent: false,
     };
     let binaries = match build {
         Build::Built(binaries) => binaries,
@@ -131,6 +134,24 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
         }
     }
     plan
+}
+
+/// Why the tasks of topic `name` score 0 in code that does not hold it.
+pub(super) fn absent_reason(name: &str) -> String {
+    format!("the submission has no exercises/{name}: its tasks score 0")
+}
+
+/// A topic the graded code does not hold: each task an error, no tests.
+pub(super) fn absent(topic: &Topic) -> Plan {
+    let why = absent_reason(&topic.name);
+    Plan {
+        topic: topic.clone(),
+        compile_error: None,
+        errors: Vec::new(),
+        task_errors: vec![Some(why); topic.sheet.tasks.len()],
+        tests: Vec::new(),
+        absent: true,
+    }
 }
 
 /// `dda/octants/steep_line` for test `octants::steep_line` of task `dda`:

@@ -1,7 +1,7 @@
 //! The grade report: topics → tasks → tests, as written to `report.json`.
 //!
 //! ```text
-//! Report { schema, root, edition, score, max_score, duration_s, complete, integrity, topics: [
+//! Report { schema, root, edition, score, max_score, duration_s, phases, complete, integrity, topics: [
 //!   TopicReport { name, package, dir, time_limit_s, memory_limit_mib,
 //!                 compile_error, errors, score, max_score, tasks: [
 //!     TaskReport { id, title, points, bonus, score, status, error,
@@ -52,6 +52,9 @@ pub struct Report {
     pub max_score: f64,
     /// Wall-clock seconds the grading took.
     pub duration_s: f64,
+    /// Where those seconds went.
+    #[serde(default)]
+    pub phases: Phases,
     /// Every task of every topic was graded: no compile error, no test
     /// binary outside the task list, no task without tests.
     pub complete: bool,
@@ -83,6 +86,18 @@ impl Report {
             |name| name.to_string_lossy().into_owned(),
         )
     }
+}
+
+/// The wall-clock seconds of a grade's three phases, one after the other.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct Phases {
+    /// Building the topics' test executables and the pipeline's viewer,
+    /// and listing the tests.
+    pub build_s: f64,
+    /// Running the tests.
+    pub tests_s: f64,
+    /// Drawing the pipeline's pictures with the graded stages.
+    pub pipeline_s: f64,
 }
 
 /// One topic (exercise crate).
@@ -400,6 +415,7 @@ pub(crate) mod tests {
             score,
             max_score: points,
             duration_s: 1.0,
+            phases: Default::default(),
             complete: true,
             integrity: None,
             sandboxed: true,

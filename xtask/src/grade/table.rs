@@ -245,7 +245,8 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
             );
         }
         for task in &topic.tasks {
-            if let Some(error) = &task.error {
+            // (An error of every task that the topic's says once.)
+            if let Some(error) = task.error.as_ref().filter(|e| !topic.errors.contains(e)) {
                 let _ = writeln!(text);
                 let _ = writeln!(
                     text,

@@ -106,6 +106,13 @@ fn grade_one(
     if options.topics.is_empty() {
         options.topics = all_topics.iter().map(|t| t.name.clone()).collect();
     }
+    // A topic it lacks is neither built nor run: the course's stubs of it
+    // would only fail, at the cost of a build and a `todo!()` per test.
+    options.absent = all_topics
+        .iter()
+        .filter(|topic| !submission.join("exercises").join(&topic.name).is_dir())
+        .map(|topic| topic.name.clone())
+        .collect();
     let options = &options;
     // A task file that reaches other files at compile time is not
     // compiled: its stub is staged instead, and its topic scores 0. (The
@@ -200,10 +207,7 @@ fn grade_one(
     }
     for topic in &mut report.topics {
         if !submission.join("exercises").join(&topic.name).is_dir() {
-            topic.errors.push(format!(
-                "the submission has no exercises/{}: its tasks score 0",
-                topic.name
-            ));
+            topic.errors.push(super::plan::absent_reason(&topic.name));
             report.complete = false;
         }
         for (_, why) in unreadable.iter().filter(|(t, _)| *t == topic.name) {
