@@ -1,11 +1,34 @@
-//! A pinhole camera for world points in `f64`: eye, target, up and a
-//! vertical field of view, projected as the pipeline projects
-//! ([`crate::pipeline`]: glam's right-handed look-at view looking down −z,
-//! OpenGL's perspective and clip volume, the near plane at depth 0). The
-//! surface topics render with it.
+//! The course's cameras. [`turn`]: the one way a camera is turned by
+//! angles (the world's up is +y), for topic 06's rays, topic 09's pictures
+//! and the viewer's orbits. [`Camera`]: a pinhole camera for world points
+//! in `f64` (eye, target, up and a vertical field of view), projected as the
+//! pipeline projects ([`crate::pipeline`]: glam's right-handed look-at view
+//! looking down −z, OpenGL's perspective and clip volume, the near plane at
+//! depth 0). The surface topics render with it.
 
-use glam::DVec3;
 use glam::dcamera::rh::{proj::opengl, view};
+use glam::{DMat3, DVec3};
+
+/// The camera turned by `yaw` and `pitch` (radians), as a rotation from
+/// camera to world: its columns are the camera's right, up and back (the
+/// opposite of where it looks) in world space.
+///
+/// Unturned, a camera looks along −z with +y up (glam's and OpenGL's eye
+/// space); `pitch` tilts it about its own x axis (negative: it looks down),
+/// then `yaw` turns it about the world's up axis, +y:
+///
+/// ```text
+///   turn(yaw, pitch) = R_y(yaw) · R_x(pitch)
+///   forward = −turn·z,   up = turn·y,   right = turn·x
+/// ```
+///
+/// An orbit around a target at distance `d` puts the eye at
+/// `target + d · turn·z`; `turn` transposed takes world directions into
+/// the camera's.
+#[must_use]
+pub fn turn(yaw: f64, pitch: f64) -> DMat3 {
+    DMat3::from_rotation_y(yaw) * DMat3::from_rotation_x(pitch)
+}
 
 /// A pinhole camera looking from `eye` at `target`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -91,6 +114,25 @@ mod tests {
             "{} vs {expected}",
             screen.z
         );
+    }
+
+    #[test]
+    fn a_turned_camera_looks_down_and_around_the_y_axis() {
+        let close = |a: DVec3, b: DVec3| (a - b).length() < 1e-12;
+        // Unturned: glam's eye space.
+        let rest = turn(0.0, 0.0);
+        assert!(close(-rest.z_axis, DVec3::NEG_Z) && close(rest.y_axis, DVec3::Y));
+        // Tilted by −90°: it looks straight down, its up along −z.
+        let down = turn(0.0, -std::f64::consts::FRAC_PI_2);
+        assert!(close(-down.z_axis, DVec3::NEG_Y) && close(down.y_axis, DVec3::NEG_Z));
+        // Turned by +90° about y: it looks along −x (counter-clockwise
+        // seen from above), and a tilt keeps its right horizontal.
+        let left = turn(std::f64::consts::FRAC_PI_2, -0.3);
+        assert!(close(left.x_axis, DVec3::NEG_Z));
+        assert!(-left.z_axis.x < -0.9 && -left.z_axis.y < 0.0);
+        // A rotation: right-handed and orthonormal.
+        assert!((left.determinant() - 1.0).abs() < 1e-12);
+        assert!(close(left.x_axis.cross(left.y_axis), left.z_axis));
     }
 
     #[test]

@@ -21,9 +21,11 @@
 //!   sheet's "cube of side length 2 centred at the origin").
 //! - Depth: NDC `z = −1` (the near plane) becomes canvas depth 0, `z = +1`
 //!   (the far plane) depth 1, as with OpenGL's default `glDepthRange(0, 1)`.
-//! - Cameras: [`Pipeline::for_mesh`]'s fixed one for the shipped meshes
-//!   (`f32`), and [`Camera`], a pinhole camera for `f64` world points
-//!   with the same view and projection (the surface topics' renders).
+//! - Cameras: the world's up is +y, and a camera turned by angles is
+//!   turned by [`turn`] (yaw about +y after a pitch about its own x axis);
+//!   [`Pipeline::for_mesh`]'s fixed camera for the shipped meshes (`f32`),
+//!   and [`Camera`], a pinhole camera for `f64` world points with the same
+//!   view and projection (the surface topics' renders).
 //! - Pixels: the canvas convention (centres at integers, y up); NDC `−1` and
 //!   `+1` map to the centres of the outermost pixels (see [`Pipeline::screen`]).
 #![warn(missing_docs)]
@@ -36,7 +38,7 @@ pub mod pipeline;
 pub mod ply;
 pub mod raster;
 
-pub use camera::Camera;
+pub use camera::{Camera, turn};
 pub use clip_vertex::ClipVertex;
 pub use mesh::Mesh;
 pub use pipeline::{Mode, Pipeline, discard_outside, inside_view_volume};

@@ -109,9 +109,10 @@ pub struct Camera {
 
 impl Camera {
     /// A `width × height` camera whose middle pixel looks at `centre`.
-    /// It looks along `−z` turned by `yaw` about the y axis and then by
-    /// `pitch` about its own x axis (radians); one world unit covers
-    /// `pixels_per_unit` pixels.
+    /// It is turned as every camera of the course ([`scene::turn`]): it
+    /// looks along `−z` tilted by `pitch` about its own x axis (negative:
+    /// down), then turned by `yaw` about the world's up axis, y (radians);
+    /// one world unit covers `pixels_per_unit` pixels.
     ///
     /// ```text
     ///   ray of pixel (x, y):  o = centre + u·right + v·up,  d = forward
@@ -141,7 +142,7 @@ impl Camera {
                 "pixels_per_unit must be finite and positive",
             ));
         }
-        let turn = glam::Mat3::from_rotation_y(yaw) * glam::Mat3::from_rotation_x(pitch);
+        let turn = scene::turn(f64::from(yaw), f64::from(pitch)).as_mat3();
         Ok(Self {
             width,
             height,

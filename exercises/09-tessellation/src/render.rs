@@ -6,10 +6,12 @@
 //!
 //! Conventions: the canvas's (pixel centres at integers, y up); the
 //! triangles' pixels are those of the course's given rasterizer,
-//! `scene::raster::cover` (centres on an edge included). The view
-//! turns the mesh by `yaw` about the z axis, then tilts it by `pitch` about
-//! the x axis, and looks down the −z axis of the result; the mesh is scaled
-//! so that its picture fills [`FILL`](crate::render::FILL) of the smaller canvas side.
+//! `scene::raster::cover` (centres on an edge included). The surfaces of
+//! this topic stand on the xy plane with z up, as the seed draws them; the
+//! renderer stands them in the course's world, whose up is y
+//! ([`STAND_UP`]), and looks at them with a camera turned as every camera
+//! of the course ([`scene::turn`]); the mesh is scaled so that its picture
+//! fills [`FILL`](crate::render::FILL) of the smaller canvas side.
 
 use canvas::{Canvas, Pixel, Rgba};
 use glam::{DMat3, DVec2, DVec3};
@@ -44,12 +46,17 @@ pub enum Style {
     ShadedWireframe,
 }
 
-/// Where the mesh is seen from (radians).
+/// The turn from the topic's z-up surfaces to the course's y-up world:
+/// a quarter turn about x, `(x, y, z) ↦ (x, z, −y)`.
+pub const STAND_UP: DMat3 = DMat3::from_cols(DVec3::X, DVec3::NEG_Z, DVec3::Y);
+
+/// Where the mesh is seen from: the camera's turn ([`scene::turn`],
+/// radians), its orbit about the mesh's middle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
-    /// Turn about the z axis.
+    /// Around the world's up axis (the surface's z).
     pub yaw: f64,
-    /// Tilt about the x axis after the turn.
+    /// The camera's tilt (negative: it looks down on the surface).
     pub pitch: f64,
 }
 
@@ -60,7 +67,8 @@ pub fn render(mesh: &Mesh, view: View, style: Style, width: u32, height: u32) ->
     let mut canvas = Canvas::new(width, height);
     canvas.clear(BACKGROUND);
     let (w, h) = (canvas.width() as usize, canvas.height() as usize);
-    let rotation = DMat3::from_rotation_x(view.pitch) * DMat3::from_rotation_z(view.yaw);
+    // World to camera: stood up, then the camera's turn undone.
+    let rotation = scene::turn(view.yaw, view.pitch).transpose() * STAND_UP;
     let finite: Vec<DVec3> = mesh
         .positions
         .iter()

@@ -223,8 +223,8 @@ fn pn_sphere_matches_the_reference_image() {
         }
     }
     let view = View {
-        yaw: 0.4,
-        pitch: -1.1,
+        yaw: -0.4,
+        pitch: -0.47,
     };
     assert_picture(
         "bezier_triangle_pn_sphere",

@@ -205,8 +205,8 @@ fn multi_patch_surface_matches_the_reference_image() {
         }
     }
     let view = tessellation::render::View {
-        yaw: 0.5,
-        pitch: -0.9,
+        yaw: -0.5,
+        pitch: -0.67,
     };
     assert_picture("uniform_example", &all, view, Style::ShadedWireframe);
 }
@@ -257,8 +257,8 @@ fn the_torus_patches_meet_without_a_crack() {
 fn a_rational_torus_matches_the_reference_images() {
     let mesh = torus_mesh(8);
     let view = tessellation::render::View {
-        yaw: 0.4,
-        pitch: -1.0,
+        yaw: -0.4,
+        pitch: -0.57,
     };
     // Both pictures before either verdict, so that a wrong shaded picture
     // still leaves the wireframe to compare with.

@@ -188,8 +188,8 @@ pub const PICTURE_TOLERANCE: testkit::image::Tolerance = testkit::image::Toleran
 
 /// The view the seed's surface is drawn from.
 pub const SEED_VIEW: View = View {
-    yaw: 2.4,
-    pitch: -1.0,
+    yaw: -2.4,
+    pitch: -0.57,
 };
 
 /// `part` appended to `all`, its indices moved past `all`'s vertices.

@@ -189,9 +189,11 @@ pub struct TessSetup {
     pub depth: u32,
     /// How the triangles show.
     pub look: Look,
-    /// The view's turn about the z axis, degrees.
+    /// The camera's orbit around the surface (its z, the world's up),
+    /// degrees.
     pub yaw: f64,
-    /// Its tilt about the x axis, degrees.
+    /// The camera's height above the surface's plane, degrees (the
+    /// opposite of its tilt: see `scene::turn`).
     pub pitch: f64,
     /// The picture's side in pixels.
     pub size: u32,
@@ -215,8 +217,8 @@ impl Default for TessSetup {
             thresholds: Test::OneEdgeNormal.default_thresholds(),
             depth: 4,
             look: Look::Both,
-            yaw: 0.5f64.to_degrees(),
-            pitch: -0.9f64.to_degrees(),
+            yaw: -0.5f64.to_degrees(),
+            pitch: 0.67f64.to_degrees(),
             size: 480,
         }
     }
@@ -238,7 +240,7 @@ impl TessSetup {
         }
         self.depth = self.depth.min(MAX_DEPTH);
         self.yaw = finite_or(self.yaw, defaults.yaw).clamp(-180.0, 180.0);
-        self.pitch = finite_or(self.pitch, defaults.pitch).clamp(-180.0, 180.0);
+        self.pitch = finite_or(self.pitch, defaults.pitch).clamp(-89.0, 89.0);
         self.size = self.size.clamp(16, 2048);
     }
 }
@@ -338,7 +340,7 @@ pub(super) fn tessellate(
     };
     let view = View {
         yaw: setup.yaw.to_radians(),
-        pitch: setup.pitch.to_radians(),
+        pitch: -setup.pitch.to_radians(),
     };
     Ok(Tessellated {
         canvas: tessellation::render::render(&mesh, view, style, setup.size, setup.size),

@@ -82,8 +82,8 @@ impl TessellationScene {
             ui.radio_value(&mut setup.look, tess::Look::Both, "Both");
         });
         ui.label("View (or drag the picture)");
-        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("turn"));
-        ui.add(egui::Slider::new(&mut setup.pitch, -180.0..=180.0).text("tilt"));
+        ui.add(egui::Slider::new(&mut setup.yaw, -180.0..=180.0).text("around"));
+        ui.add(egui::Slider::new(&mut setup.pitch, -89.0..=89.0).text("above"));
         if ui.button("Reset").clicked() {
             *setup = TessSetup::default();
         }
@@ -131,7 +131,7 @@ impl TessellationScene {
         let (around, above, _) = orbit(ui, &response);
         let setup = &mut self.setup;
         setup.yaw = (setup.yaw + f64::from(around)).clamp(-180.0, 180.0);
-        setup.pitch = (setup.pitch - f64::from(above)).clamp(-180.0, 180.0);
+        setup.pitch = (setup.pitch + f64::from(above)).clamp(-89.0, 89.0);
         slow_notice(ui, "Your tessellation has been running", slow);
     }
 }
