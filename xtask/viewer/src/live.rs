@@ -87,3 +87,46 @@ impl<J: Clone + PartialEq + Send + 'static, R: Send + 'static> Live<J, R> {
         self.ask(setup, || setup.clone())
     }
 }
+
+/// A set-up a scene's panel edits: kept drawable before its drawing is
+/// asked for.
+pub(crate) trait Setup: Clone + PartialEq + Send + 'static {
+    /// Every number in range and finite.
+    fn tidy(&mut self);
+}
+
+/// A scene drawn from one set-up: the set-up its panel edits and the
+/// drawing of it on screen.
+pub(crate) struct SetupScene<S, R> {
+    pub(crate) setup: S,
+    pub(crate) live: Live<S, R>,
+}
+
+impl<S: Setup + Default, R: Send + 'static> SetupScene<S, R> {
+    /// The default set-up, drawn by `worker`.
+    pub(crate) fn with_worker(worker: Worker<S, R>) -> Self {
+        Self {
+            setup: S::default(),
+            live: Live::new(worker),
+        }
+    }
+
+    /// Asks for the drawing if the set-up changed.
+    pub(crate) fn ask(&mut self) {
+        self.setup.tidy();
+        self.live.ask_for(&self.setup);
+    }
+
+    /// Asks for the drawing and takes it when it arrives.
+    pub(crate) fn update(&mut self, ui: &egui::Ui) {
+        self.ask();
+        self.live.poll(ui);
+    }
+
+    /// Asks for the drawing and waits for it, at most `limit`; whether it
+    /// arrived.
+    pub(crate) fn wait(&mut self, limit: Duration) -> bool {
+        self.ask();
+        self.live.wait(limit)
+    }
+}

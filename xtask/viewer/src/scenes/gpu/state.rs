@@ -1,45 +1,23 @@
-//! The GPU scene's state in the window: the set-up and the drawing on screen.
-
-use std::time::Duration;
-
-use eframe::egui;
+//! The GPU scene's state in the window: the set-up and the drawing on screen
+//! ([`SetupScene`]).
 
 use super::draw::worker;
-use crate::live::Live;
+use crate::live::{Setup, SetupScene};
 use crate::stages::Stages;
 use crate::stages::gpu::{GpuDrawing, GpuSetup};
 
 /// The GPU scene in the window.
-pub(crate) struct GpuScene {
-    pub(crate) setup: GpuSetup,
-    pub(crate) live: Live<GpuSetup, GpuDrawing>,
-}
+pub(crate) type GpuScene = SetupScene<GpuSetup, GpuDrawing>;
 
 impl GpuScene {
     /// The scene drawing with `stages`.
     pub(crate) fn new(stages: Stages) -> Self {
-        Self {
-            setup: GpuSetup::default(),
-            live: Live::new(worker(stages)),
-        }
+        Self::with_worker(worker(stages))
     }
+}
 
-    /// Asks for the drawing if the set-up changed.
-    pub(crate) fn ask(&mut self) {
-        self.setup.tidy();
-        self.live.ask_for(&self.setup);
-    }
-
-    /// Asks for the drawing and takes it when it arrives.
-    pub(crate) fn update(&mut self, ui: &egui::Ui) {
-        self.ask();
-        self.live.poll(ui);
-    }
-
-    /// Asks for the drawing and waits for it, at most `limit`; whether it
-    /// arrived.
-    pub(crate) fn wait(&mut self, limit: Duration) -> bool {
-        self.ask();
-        self.live.wait(limit)
+impl Setup for GpuSetup {
+    fn tidy(&mut self) {
+        GpuSetup::tidy(self);
     }
 }
