@@ -52,7 +52,17 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
     );
     let staged = stage::stage(root, Overlay::Reference, None)?;
     // The stage's own cache: its host artifacts serve, the Windows ones lie
-    // in a folder of their own.
+    // in a folder of their own, with Wine's prefix; no other step reads
+    // them.
+    let windows = staged.target_dir.join(TARGET);
+    let result = build_and_run(root, &staged);
+    crate::test::disk::remove_build(&windows, "the Windows build and its Wine prefix");
+    result
+}
+
+/// Builds the Windows test executables in `staged` and runs each under
+/// Wine.
+fn build_and_run(root: &Path, staged: &stage::Stage) -> Result<String> {
     let target_dir = staged.target_dir.clone();
     let mut executables = Vec::new();
     for (package, kind) in PACKAGES_TESTED {
@@ -77,7 +87,7 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
         !executables.is_empty(),
         "cargo built no Windows test executable"
     );
-    let prefix = target_dir.join("wine-prefix");
+    let prefix = target_dir.join(TARGET).join("wine-prefix");
     let mut passed = 0;
     let mut failed = Vec::new();
     for executable in &executables {
@@ -110,12 +120,19 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
                 .lines()
                 .filter(|line| line.starts_with("test ") && line.ends_with("FAILED"))
                 .collect();
-            println!(
-                "{name} failed under Wine ({}):\n{}",
-                output.status,
+            // No failed test: the program did not run (Wine's own errors,
+            // a full disk), which only its standard error tells.
+            let shown = if failures.is_empty() {
+                crate::test::tail(&String::from_utf8_lossy(&output.stderr), 20)
+            } else {
                 failures.join("\n")
-            );
-            failed.push(format!("{name} ({} failing)", failures.len()));
+            };
+            println!("{name} failed under Wine ({}):\n{shown}", output.status);
+            failed.push(if failures.is_empty() {
+                format!("{name} (did not run: {})", output.status)
+            } else {
+                format!("{name} ({} failing)", failures.len())
+            });
         }
     }
     ensure!(

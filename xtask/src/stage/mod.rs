@@ -65,7 +65,13 @@ pub const BUILT_FROM: &str = ".course-stage-built-from";
 /// (`<home>/bin`).
 #[must_use]
 pub fn class_home(root: &Path, slot: usize) -> PathBuf {
-    home(root).join("class").join(slot.to_string())
+    class_homes(root).join(slot.to_string())
+}
+
+/// The folder of every class slot's home (see [`class_home`]).
+#[must_use]
+pub fn class_homes(root: &Path) -> PathBuf {
+    home(root).join("class")
 }
 
 /// Where a staged file's contents come from.

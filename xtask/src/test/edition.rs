@@ -159,7 +159,15 @@ pub(super) fn student_edition(root: &Path) -> Result<String> {
     )?;
     // A class grades with this course's stage no longer held.
     drop(staged);
-    let class = class_of_two(root, first)?;
+    let class = class_of_two(root, first);
+    // The class's build and its slots' test executables: no later step
+    // grades a class.
+    super::disk::remove_build(
+        &crate::grade::submission::submissions_build(root),
+        "the class's build",
+    );
+    super::disk::remove_build(&stage::class_homes(root), "the class's slots");
+    let class = class?;
     Ok(format!(
         "{} topics: `cargo test` fails {failed} test(s), all at a todo!(); clippy clean; `cargo xtask grade {first}` scores 0; {workflow}; {class}",
         release.topics.len()

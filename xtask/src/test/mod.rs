@@ -45,6 +45,7 @@ use crate::stage::{self, Overlay};
 use crate::{setup, stubs, topics};
 
 mod browser;
+pub(crate) mod disk;
 mod edition;
 mod platforms;
 mod scores;
@@ -140,7 +141,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
             steps.len()
         );
     }
-    let mut results: Vec<(&str, Result<String>, Duration)> = Vec::new();
+    let mut results: Vec<(&str, Result<String>, Duration, disk::Disk)> = Vec::new();
     for (number, (title, step)) in steps.iter().enumerate() {
         if !only.is_empty() && !only.contains(&(number + 1)) {
             continue;
@@ -150,16 +151,18 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
         let started = Instant::now();
         let result = step();
         let elapsed = started.elapsed();
+        let disk = disk::Disk::measure(root);
+        let seconds = elapsed.as_secs_f64();
         match &result {
-            Ok(summary) => println!("==> ok ({:.1} s): {summary}", elapsed.as_secs_f64()),
-            Err(error) => println!("==> FAILED ({:.1} s): {error:#}", elapsed.as_secs_f64()),
+            Ok(summary) => println!("==> ok ({seconds:.1} s; {disk}): {summary}"),
+            Err(error) => println!("==> FAILED ({seconds:.1} s; {disk}): {error:#}"),
         }
-        results.push((title, result, elapsed));
+        results.push((title, result, elapsed, disk));
     }
     println!();
     println!("==> summary");
     let mut failed = 0;
-    for (title, result, elapsed) in &results {
+    for (title, result, elapsed, disk) in &results {
         let (status, detail) = match result {
             Ok(summary) => ("ok  ", summary.clone()),
             Err(error) => {
@@ -169,7 +172,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
         };
         let detail = detail.lines().next().unwrap_or_default().to_owned();
         println!(
-            "  {status}  {:>7.1} s  {title}: {detail}",
+            "  {status}  {:>7.1} s  [{disk}]  {title}: {detail}",
             elapsed.as_secs_f64()
         );
     }
@@ -187,13 +190,20 @@ fn stubs_in_sync(root: &Path) -> Result<String> {
 
 fn workspace_tests(root: &Path) -> Result<String> {
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    cargo::run_visibly(staged.cargo().args([
+    let tested = cargo::run_visibly(staged.cargo().args([
         "test",
         "--workspace",
         "--no-fail-fast",
         "--exclude",
         BENCH_PACKAGE,
-    ]))?;
+    ]));
+    // The grader's own tests copy fixture courses there, each with a build
+    // folder of its own.
+    disk::remove_build(
+        &staged.target_dir.join("tmp"),
+        "the scratch folders of the workspace's tests",
+    );
+    tested?;
     Ok("all tests pass with reference/ staged over the stubs".to_owned())
 }
 
@@ -299,7 +309,7 @@ pub(super) fn run_captured(command: &mut std::process::Command) -> Result<(bool,
 }
 
 /// The last `lines` lines of `text`.
-pub(super) fn tail(text: &str, lines: usize) -> String {
+pub(crate) fn tail(text: &str, lines: usize) -> String {
     let all: Vec<&str> = text.lines().collect();
     all[all.len().saturating_sub(lines)..].join("\n")
 }

@@ -54,7 +54,7 @@ pub(super) const OTHER_SYSTEMS: [(&str, &str); 2] = [
 /// missing is installed with rustup. The benchmarks are left out: criterion
 /// compiles C (`alloca`) for the target, which needs a cross compiler, and
 /// students never build them. The other targets' artifacts lie in their
-/// own folders of the stage's cache.
+/// own folders of the stage's cache, removed when checked.
 pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
     for (_, target) in OTHER_SYSTEMS {
         setup::rustup_target(target)?;
@@ -62,8 +62,8 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
     // In the stage's own cache: the host's build scripts and procedural
     // macros, built by the steps before, serve the other targets too.
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    for (_, target) in OTHER_SYSTEMS {
-        cargo::run_visibly(staged.cargo().args([
+    for (system, target) in OTHER_SYSTEMS {
+        let checked = cargo::run_visibly(staged.cargo().args([
             "clippy",
             "--workspace",
             "--all-targets",
@@ -75,7 +75,13 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
             "--",
             "-D",
             "warnings",
-        ]))?;
+        ]));
+        // No other step reads the other systems' artifacts.
+        super::disk::remove_build(
+            &staged.target_dir.join(target),
+            &format!("the check for {system}"),
+        );
+        checked?;
     }
     let systems: Vec<String> = OTHER_SYSTEMS
         .iter()

@@ -284,7 +284,7 @@ fn one_line(report: &Report, out: &Path) -> String {
 /// The build cache of submissions: never the one the solutions are built
 /// in, so that nothing a submission's build can read was compiled from
 /// them.
-fn submissions_build(official: &Path) -> PathBuf {
+pub(crate) fn submissions_build(official: &Path) -> PathBuf {
     stage::home(official).join("submissions-build")
 }
 
