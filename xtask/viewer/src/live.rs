@@ -110,23 +110,51 @@ impl<S: Setup + Default, R: Send + 'static> SetupScene<S, R> {
             live: Live::new(worker),
         }
     }
+}
 
-    /// Asks for the drawing if the set-up changed.
-    pub(crate) fn ask(&mut self) {
+impl<S: Setup, R: Send + 'static> LiveScene for SetupScene<S, R> {
+    type Job = S;
+    type Drawing = R;
+    type Key = S;
+
+    fn ask(&mut self) {
         self.setup.tidy();
         self.live.ask_for(&self.setup);
     }
 
-    /// Asks for the drawing and takes it when it arrives.
-    pub(crate) fn update(&mut self, ui: &egui::Ui) {
+    fn live(&mut self) -> &mut Live<S, R> {
+        &mut self.live
+    }
+}
+
+/// A scene drawn live: it says what to ask for; asking, taking the drawing
+/// when it arrives and waiting for it (in tests) are the same for all.
+pub(crate) trait LiveScene {
+    /// What the worker draws from.
+    type Job: Send + 'static;
+    /// What it draws.
+    type Drawing: Send + 'static;
+    /// What names a request (see [`Live`]).
+    type Key: Clone + PartialEq;
+
+    /// Asks for the drawing of what is set now, unless it was asked for
+    /// last.
+    fn ask(&mut self);
+
+    /// The scene's live drawing.
+    fn live(&mut self) -> &mut Live<Self::Job, Self::Drawing, Self::Key>;
+
+    /// Asks for the drawing and takes it when it arrives; whether it
+    /// arrived.
+    fn update(&mut self, ui: &egui::Ui) -> bool {
         self.ask();
-        self.live.poll(ui);
+        self.live().poll(ui)
     }
 
     /// Asks for the drawing and waits for it, at most `limit`; whether it
     /// arrived.
-    pub(crate) fn wait(&mut self, limit: Duration) -> bool {
+    fn wait(&mut self, limit: Duration) -> bool {
         self.ask();
-        self.live.wait(limit)
+        self.live().wait(limit)
     }
 }

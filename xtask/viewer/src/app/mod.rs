@@ -16,6 +16,7 @@ use std::time::Duration;
 
 use eframe::egui;
 
+use crate::live::LiveScene;
 use crate::meshes::MeshEntry;
 use crate::scenes::curves::{CurveDrawing, CurveSetup, CurvesScene};
 use crate::scenes::gpu::{GpuDrawing, GpuScene, GpuSetup};

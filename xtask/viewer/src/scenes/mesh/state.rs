@@ -3,13 +3,11 @@
 
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::Duration;
 
-use eframe::egui;
 use scene::Mesh;
 
 use super::draw::{Frame, Settings, frame_worker};
-use crate::live::Live;
+use crate::live::{Live, LiveScene};
 use crate::meshes::MeshEntry;
 use crate::stages::Stages;
 
@@ -43,29 +41,6 @@ impl MeshScene {
             message: None,
             outline_clipped: false,
         }
-    }
-
-    /// Asks for a frame if the mesh or the settings changed since the
-    /// last one.
-    pub(crate) fn ask(&mut self) {
-        let wanted = (self.selected, self.settings.clone());
-        let mesh = &self.meshes[self.selected].mesh;
-        let settings = &self.settings;
-        self.live
-            .ask(&wanted, || (Arc::clone(mesh), settings.clone()));
-    }
-
-    /// Asks for the frame and takes it when it arrives.
-    pub(crate) fn update(&mut self, ui: &egui::Ui) {
-        self.ask();
-        self.live.poll(ui);
-    }
-
-    /// Asks for the current frame and waits for it, at most `limit`;
-    /// whether it arrived.
-    pub(crate) fn wait(&mut self, limit: Duration) -> bool {
-        self.ask();
-        self.live.wait(limit)
     }
 
     /// Selects the mesh called `name`, if there is one.
@@ -105,5 +80,25 @@ impl MeshScene {
             Ok(()) => format!("saved {}", path.display()),
             Err(e) => format!("cannot save {}: {e}", path.display()),
         });
+    }
+}
+
+impl LiveScene for MeshScene {
+    type Job = (Arc<Mesh>, Settings);
+    type Drawing = Frame;
+    type Key = (usize, Settings);
+
+    /// Asks for a frame if the mesh or the settings changed since the
+    /// last one.
+    fn ask(&mut self) {
+        let wanted = (self.selected, self.settings.clone());
+        let mesh = &self.meshes[self.selected].mesh;
+        let settings = &self.settings;
+        self.live
+            .ask(&wanted, || (Arc::clone(mesh), settings.clone()));
+    }
+
+    fn live(&mut self) -> &mut Live<(Arc<Mesh>, Settings), Frame, (usize, Settings)> {
+        &mut self.live
     }
 }

@@ -1,12 +1,10 @@
 //! The pixel playground's state in the window: the set-up, the drawing on
 //! screen, the stepping and the handle being dragged.
 
-use std::time::Duration;
-
 use eframe::egui;
 
 use super::draw::{Drawing, Primitive, Setup, worker};
-use crate::live::Live;
+use crate::live::{Live, LiveScene};
 use crate::stages::Stages;
 
 /// The pixel playground in the window.
@@ -40,8 +38,25 @@ impl PixelsScene {
         }
     }
 
+    /// Where handle `k` shows on screen, once the grid has been drawn.
+    pub(crate) fn handle_on_screen(&self, k: usize) -> Option<egui::Pos2> {
+        let (origin, cell) = self.grid?;
+        let p = *self.setup.handles.get(k)?;
+        let top = self.setup.size as f32 - 0.5;
+        Some(egui::pos2(
+            origin.x + (p.x + 0.5) * cell,
+            origin.y + (top - p.y) * cell,
+        ))
+    }
+}
+
+impl LiveScene for PixelsScene {
+    type Job = Setup;
+    type Drawing = Drawing;
+    type Key = Setup;
+
     /// Asks for the drawing if the set-up changed.
-    pub(crate) fn ask(&mut self) {
+    fn ask(&mut self) {
         let index = |p: Primitive| Primitive::ALL.iter().position(|q| *q == p).unwrap_or(0);
         if self.setup.primitive != self.primitive {
             // Each primitive keeps its own handles.
@@ -56,32 +71,19 @@ impl PixelsScene {
         }
     }
 
-    /// Asks for the drawing and takes it when it arrives.
-    pub(crate) fn update(&mut self, ui: &egui::Ui) {
+    fn live(&mut self) -> &mut Live<Setup, Drawing> {
+        &mut self.live
+    }
+
+    /// Asks for the drawing and takes it when it arrives; a drawing with
+    /// fewer pixels shows no more steps than it has.
+    fn update(&mut self, ui: &egui::Ui) -> bool {
         self.ask();
-        if self.live.poll(ui)
-            && let Some(drawing) = &self.live.drawing
-        {
+        let arrived = self.live.poll(ui);
+        if arrived && let Some(drawing) = &self.live.drawing {
             let count = drawing.yours.len();
             self.steps = self.steps.map(|s| s.min(count));
         }
-    }
-
-    /// Asks for the drawing and waits for it, at most `limit`; whether it
-    /// arrived.
-    pub(crate) fn wait(&mut self, limit: Duration) -> bool {
-        self.ask();
-        self.live.wait(limit)
-    }
-
-    /// Where handle `k` shows on screen, once the grid has been drawn.
-    pub(crate) fn handle_on_screen(&self, k: usize) -> Option<egui::Pos2> {
-        let (origin, cell) = self.grid?;
-        let p = *self.setup.handles.get(k)?;
-        let top = self.setup.size as f32 - 0.5;
-        Some(egui::pos2(
-            origin.x + (p.x + 0.5) * cell,
-            origin.y + (top - p.y) * cell,
-        ))
+        arrived
     }
 }
