@@ -241,8 +241,49 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
             }
         }
     }
+    lean_debug_info(&mut files)?;
     files.sort();
     Ok(files)
+}
+
+/// cargo's configuration file of a workspace.
+const CONFIG: &str = ".cargo/config.toml";
+
+/// Sets the stage's `.cargo/config.toml` (the course's, or a new one) to
+/// build the course's own crates with line tables only instead of full
+/// debug information. A stage's build is the tooling's, which no debugger
+/// reads: its tests still report panics with files and lines, and its build
+/// folder is less than half the size, since every test program carries the
+/// debug information of what it links. The dependencies already have none
+/// (the workspace's `profile.dev.package."*"`, which this leaves alone).
+fn lean_debug_info(files: &mut Files) -> Result<()> {
+    let position = files.iter().position(|(to, _)| to == Path::new(CONFIG));
+    let mut config: toml::Table = match position {
+        Some(index) => {
+            let text = String::from_utf8(files[index].1.read()?)
+                .with_context(|| format!("{CONFIG} is not UTF-8"))?;
+            toml::from_str(&text).with_context(|| format!("cannot parse {CONFIG}"))?
+        }
+        None => toml::Table::new(),
+    };
+    let not_a_table = |name: &str| format!("`{name}` in {CONFIG} is not a table");
+    let dev = config
+        .entry("profile")
+        .or_insert_with(|| toml::Table::new().into())
+        .as_table_mut()
+        .with_context(|| not_a_table("profile"))?
+        .entry("dev")
+        .or_insert_with(|| toml::Table::new().into())
+        .as_table_mut()
+        .with_context(|| not_a_table("profile.dev"))?;
+    dev.insert("debug".to_owned(), "line-tables-only".into());
+    let text = toml::to_string(&config).with_context(|| format!("cannot write {CONFIG}"))?;
+    let source = Source::Text(text.into_bytes());
+    match position {
+        Some(index) => files[index].1 = source,
+        None => files.push((PathBuf::from(CONFIG), source)),
+    }
+    Ok(())
 }
 
 /// The lock file of a workspace.

@@ -138,6 +138,10 @@ fn the_reference_overlay_replaces_only_solution_files() {
     assert_eq!(
         staged,
         [
+            (
+                ".cargo/config.toml",
+                "[profile.dev]\ndebug = \"line-tables-only\"\n"
+            ),
             ("Cargo.toml", "[workspace]"),
             ("exercises/01-a/src/given.rs", "given"),
             ("exercises/01-a/src/lib.rs", "pub mod x; pub mod given;"),
@@ -146,6 +150,42 @@ fn the_reference_overlay_replaces_only_solution_files() {
         .map(|(a, b)| (a.to_owned(), b.to_owned()))
     );
     assert!(plan(&course.join("exercises"), Overlay::Reference).is_err());
+    fs::remove_dir_all(&course).unwrap();
+}
+
+#[test]
+fn a_stage_builds_the_course_with_line_tables_and_keeps_its_cargo_configuration() {
+    let course = scratch("config");
+    write(&course.join("Cargo.toml"), "[workspace]");
+    write(
+        &course.join(".cargo/config.toml"),
+        "[alias]\nxtask = \"run --package xtask --\"\n\n[profile.dev]\nopt-level = 1\n",
+    );
+    let files = plan(&course, Overlay::Own).unwrap();
+    let (_, config) = files
+        .iter()
+        .find(|(to, _)| to == Path::new(".cargo/config.toml"))
+        .unwrap();
+    let config: toml::Table =
+        toml::from_str(&String::from_utf8(config.read().unwrap()).unwrap()).unwrap();
+    assert_eq!(
+        config["alias"]["xtask"].as_str(),
+        Some("run --package xtask --")
+    );
+    assert_eq!(config["profile"]["dev"]["opt-level"].as_integer(), Some(1));
+    assert_eq!(
+        config["profile"]["dev"]["debug"].as_str(),
+        Some("line-tables-only")
+    );
+    // The course's own file is left as it is.
+    assert!(
+        !fs::read_to_string(course.join(".cargo/config.toml"))
+            .unwrap()
+            .contains("debug")
+    );
+    // A `profile` that is not a table is an error, not a silent default.
+    write(&course.join(".cargo/config.toml"), "profile = 1\n");
+    assert!(plan(&course, Overlay::Own).is_err());
     fs::remove_dir_all(&course).unwrap();
 }
 
