@@ -3,7 +3,7 @@
 //! first time it shows. Every scene keeps one; the window never waits for
 //! a drawing (except where a test asks it to, [`Live::wait`]).
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use eframe::egui;
 use egui::TextureHandle;
@@ -70,13 +70,17 @@ impl<J: Send + 'static, R: Send + 'static, K: Clone + PartialEq> Live<J, R, K> {
     /// Waits for the drawing asked for, at most `limit` (for tests);
     /// whether it arrived.
     pub(crate) fn wait(&mut self, limit: Duration) -> bool {
-        match self.worker.wait(limit) {
-            Some(drawing) => {
-                self.arrived(drawing);
-                true
+        let deadline = Instant::now() + limit;
+        // The drawing that arrives may be of an older request, after which
+        // the newest goes to the worker: that one is waited for too.
+        while self.worker.busy_for().is_some() {
+            let left = deadline.saturating_duration_since(Instant::now());
+            match self.worker.wait(left) {
+                Some(drawing) => self.arrived(drawing),
+                None => return false,
             }
-            None => self.worker.busy_for().is_none(),
         }
+        true
     }
 }
 
@@ -156,5 +160,26 @@ pub(crate) trait LiveScene {
     fn wait(&mut self, limit: Duration) -> bool {
         self.ask();
         self.live().wait(limit)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn waiting_takes_the_drawing_of_the_newest_request() {
+        let worker = Worker::start(|job: u32| {
+            std::thread::sleep(Duration::from_millis(50));
+            job
+        });
+        let mut live: Live<u32, u32> = Live::new(worker);
+        live.ask_for(&1);
+        // Asked while the first is drawn: it follows that one.
+        live.ask_for(&2);
+        assert!(live.wait(Duration::from_secs(30)));
+        assert_eq!(live.drawing, Some(2));
+        // Nothing asked: nothing to wait for.
+        assert!(live.wait(Duration::ZERO));
     }
 }
