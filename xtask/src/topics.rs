@@ -60,6 +60,14 @@ pub struct TaskSheet {
     /// missing adapter as a failure when graded.
     #[serde(default)]
     pub gpu: bool,
+    /// Whether a pass is decided by replay (`verdict = "replay"`): every
+    /// task function carries `#[transcript::task]`, and a staged grade runs
+    /// each test twice, recording the student's code and replaying the
+    /// record in a build without it (see `grade::run`). Otherwise
+    /// (`"token"`, the default) the test process that ran the student's
+    /// code prints the grader's token itself.
+    #[serde(default)]
+    pub verdict: Verdict,
     /// The tasks, in the order of the sheet.
     pub tasks: Vec<Task>,
 }
@@ -70,6 +78,19 @@ fn default_time_limit() -> f64 {
 
 fn default_memory_limit() -> u64 {
     DEFAULT_MEMORY_LIMIT_MIB
+}
+
+/// Where a topic's passes are decided (see [`TaskSheet::verdict`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// In the process that ran the student's code, authenticated by a
+    /// token that process holds.
+    #[default]
+    Token,
+    /// In a second process that replays the record of the first and never
+    /// ran the student's code.
+    Replay,
 }
 
 /// One task of a topic; its tests are `tests/<id>.rs`.

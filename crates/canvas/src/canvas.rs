@@ -20,6 +20,7 @@ pub const STENCIL_BITS: u32 = u8::BITS;
 
 /// A vertex as rasterizers receive it: after projection and viewport
 /// transform, in pixel coordinates.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Vertex {
     /// Position in pixel coordinates (pixel centres at integers, y up).
@@ -54,6 +55,7 @@ impl Vertex {
 }
 
 /// What a rasterizer emits for one covered pixel.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
     /// The pixel.
@@ -108,6 +110,7 @@ pub enum CanvasError {
 /// (see the crate documentation for the full convention). Every write
 /// outside the canvas is ignored, so rasterizers need not clip pixels
 /// themselves; every read outside returns `None`.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Canvas {
     width: u32,

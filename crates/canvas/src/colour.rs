@@ -7,6 +7,7 @@ use std::ops::{Add, Mul};
 /// Channels are plain (not premultiplied) and linear: interpolating two
 /// colours interpolates each channel. Values outside `[0, 1]` are kept as
 /// they are and only clamped when a canvas is written to a PNG.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Rgba {
     /// Red.

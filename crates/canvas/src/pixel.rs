@@ -13,6 +13,7 @@ pub const MAX_COORD: i32 = 1 << 24;
 ///
 /// A different type from a continuous point (`Vec2`): adding two pixels
 /// means nothing, and a pixel is never "between" two others.
+#[transcript::evidence]
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
 pub struct Pixel {
     /// Column, growing to the right.
@@ -93,6 +94,7 @@ pub fn within_limits(v: f32) -> bool {
 ///   y_min +-----------+
 ///       x_min       x_max
 /// ```
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Viewport {
     /// Leftmost visible column.
@@ -141,6 +143,7 @@ impl Viewport {
 ///   y  ·  ·  ■  ■  ■  ■  ·      Span { y, x_start: 2, x_end: 5 }
 ///      0  1  2  3  4  5  6
 /// ```
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Span {
     /// The row.

@@ -20,6 +20,7 @@ use canvas::{MAX_COORD, Pixel};
 /// ```
 ///
 /// Pattern 4 cannot occur for slopes `m ≤ ½`, pattern 1 not for `m ≥ ½`.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Pattern {
     /// E, E: both pixels on P's row.
@@ -47,6 +48,7 @@ impl Pattern {
 
 /// One double step as [`double_step_line`] reports it: the decision
 /// variable the pattern was chosen by, and the pattern.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct DoubleStep {
     /// The decision variable *before* this step's update, the value the
@@ -94,6 +96,7 @@ pub struct DoubleStep {
 /// ```
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
+#[transcript::task]
 pub fn double_step_line(
     from: Pixel,
     to: Pixel,

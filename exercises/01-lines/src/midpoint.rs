@@ -31,6 +31,7 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing (use the viewport version,
 /// `clipped_midpoint_line`, for lines that reach far outside).
+#[transcript::task]
 pub fn midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&from, &to, &mut plot);

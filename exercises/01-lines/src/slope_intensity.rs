@@ -16,6 +16,7 @@ use canvas::Pixel;
 /// intensity: `1/√2` for axis-parallel lines, `1` for diagonals. A
 /// zero-length line (one pixel) gets the axis-parallel value `1/√2`.
 #[must_use]
+#[transcript::task]
 pub fn slope_intensity(from: Pixel, to: Pixel) -> f32 {
     // Unused until you write the body:
     let _ = (&from, &to);

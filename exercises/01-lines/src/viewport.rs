@@ -30,6 +30,7 @@ use canvas::{Pixel, Viewport};
 /// border is intersected with `y_min − ½` / `y_max + ½` (for a steep line
 /// the roles of x and y swap). Only the visible columns are visited, so a
 /// line billions of pixels long costs no more than its visible part.
+#[transcript::task]
 pub fn clipped_midpoint_line(
     from: Pixel,
     to: Pixel,

@@ -24,6 +24,7 @@ use glam::DVec2;
 /// The intensities add up to the rectangle's area, the line's length.
 /// A zero-length line covers no area and draws nothing; endpoints that are
 /// not finite or lie beyond ±`MAX_COORD` draw nothing.
+#[transcript::task]
 pub fn area_sampling_line(from: Vec2, to: Vec2, mut plot: impl FnMut(Pixel, f32)) {
     // BEGIN SOLUTION area_sampling: intersect each nearby pixel square with the 1-pixel-wide rectangle around the line and plot the overlapped area
     if ![from.x, from.y, to.x, to.y].into_iter().all(within_limits) {

@@ -33,6 +33,7 @@ use canvas::{Fragment, Pixel, Vertex, round_half_away, within_limits};
 ///   ±`MAX_COORD`) to thousands of pixels off the line.
 /// - A zero-length line plots one fragment with `from`'s attributes.
 /// - Endpoints that are not finite or lie beyond ±`MAX_COORD` draw nothing.
+#[transcript::task]
 pub fn dda_line(from: &Vertex, to: &Vertex, mut plot: impl FnMut(Fragment)) {
     // BEGIN SOLUTION dda: plot one fragment per major-axis column, interpolating colour and depth with t in [0, 1]
     let (a, b) = (from.position, to.position);

@@ -33,6 +33,7 @@ pub const STEPS_PER_PIXEL: f64 = 16.0;
 /// height `1 − r` integrated along a chord), and 0 for `|u| ≥ 1`. The
 /// integral is taken with Simpson's rule once, on first use.
 #[must_use]
+#[transcript::task]
 pub fn distance_table() -> &'static [f32; TABLE_LEN] {
     // BEGIN SOLUTION gupta_sproull: compute the table once (std::sync::OnceLock): the cone volume over the strip for D = k/16, divided by the value at D = 0
     static TABLE: OnceLock<[f32; TABLE_LEN]> = OnceLock::new();
@@ -73,6 +74,7 @@ pub fn filter(distance: f64) -> f32 {
 /// per row, and `D = |2v·Δx| / (2·√(Δx² + Δy²))`.
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
+#[transcript::task]
 pub fn gupta_sproull_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel, f32)) {
     // BEGIN SOLUTION gupta_sproull: run the midpoint line and plot its pixel and both minor-axis neighbours with filter(distance to the line)
     if [from.x, from.y, to.x, to.y]

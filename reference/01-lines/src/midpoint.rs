@@ -30,6 +30,7 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing (use the viewport version,
 /// `clipped_midpoint_line`, for lines that reach far outside).
+#[transcript::task]
 pub fn midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
     // BEGIN SOLUTION midpoint: step along the major axis with an integer decision variable; at d = 0 take the smaller minor coordinate
     if [from.x, from.y, to.x, to.y]

@@ -16,6 +16,7 @@ use canvas::Pixel;
 /// intensity: `1/√2` for axis-parallel lines, `1` for diagonals. A
 /// zero-length line (one pixel) gets the axis-parallel value `1/√2`.
 #[must_use]
+#[transcript::task]
 pub fn slope_intensity(from: Pixel, to: Pixel) -> f32 {
     // BEGIN SOLUTION slope_intensity: return length / (max(|dx|, |dy|) * sqrt 2), and 1/sqrt 2 for a zero-length line
     let (dx, dy) = (

@@ -44,6 +44,7 @@ use canvas::{MAX_COORD, Pixel};
 ///   after a straight step and by `2·(short − long)` after a diagonal one.
 /// - A zero-length line plots one pixel.
 /// - Endpoints beyond ±[`MAX_COORD`] draw nothing.
+#[transcript::task]
 pub fn two_ended_midpoint_line(
     from: Pixel,
     to: Pixel,

@@ -33,6 +33,7 @@ pub const LANES: usize = 8;
 
 /// One batch of the line: up to [`LANES`] consecutive columns of the major
 /// axis, each lane computed on its own.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Batch {
     /// How many lanes hold a column: [`LANES`], fewer only in the line's
@@ -65,6 +66,7 @@ pub struct Batch {
 ///   and one fragment with `from`'s attributes.
 /// - Endpoints that are not finite or lie beyond ±`MAX_COORD` draw nothing
 ///   and report no batch.
+#[transcript::task]
 pub fn vectorised_dda_line(
     from: &Vertex,
     to: &Vertex,

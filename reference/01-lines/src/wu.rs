@@ -42,6 +42,7 @@ use canvas::{MAX_COORD, Pixel};
 /// report nothing; a zero-length line plots `from` alone.
 ///
 /// Endpoints beyond ±[`MAX_COORD`] draw nothing.
+#[transcript::task]
 pub fn wu_line_traced(
     from: Pixel,
     to: Pixel,

@@ -17,7 +17,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use anyhow::Result;
+use anyhow::{Context as _, Result, bail};
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
@@ -45,6 +45,9 @@ pub struct TestBinary {
     pub name: String,
     /// Where cargo put it.
     pub executable: PathBuf,
+    /// The same tests built against the replaying crate, for a replayed
+    /// topic (see `stage::replay`).
+    pub replay: Option<PathBuf>,
 }
 
 /// What building a topic gave.
@@ -285,6 +288,44 @@ pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
     Ok(Build::Built(test_binaries(&run.stdout, None)))
 }
 
+/// Builds the replay package of `topic`, whose folder in the stage is
+/// `package_dir` (see `stage::replay`), and pairs each of `binaries` with
+/// its replaying twin. The package is the course's own code: a failure is
+/// the course's, and stops the grade.
+pub fn add_replays(
+    builder: &Builder,
+    topic: &Topic,
+    package_dir: &Path,
+    binaries: &mut [TestBinary],
+) -> Result<()> {
+    let package = crate::stage::replay::package_name(topic);
+    let mut args = cargo_test_args();
+    args.extend(["--package", &package]);
+    let what = format!("{}{}", topic.name, crate::stage::replay::REPLAY_SUFFIX);
+    let run = builder.cargo(&what, &args, &[])?;
+    if !run.success {
+        bail!(
+            "the replay build of {} failed (the course's own code, not the graded one): {}",
+            topic.name,
+            run.stopped.unwrap_or_else(|| compiler_errors(&run.stderr))
+        );
+    }
+    let replays = test_binaries(&run.stdout, Some(package_dir));
+    for binary in binaries {
+        let twin = replays
+            .iter()
+            .find(|replay| replay.name == binary.name)
+            .with_context(|| {
+                format!(
+                    "the replay build of {} has no test `{}`",
+                    topic.name, binary.name
+                )
+            })?;
+        binary.replay = Some(twin.executable.clone());
+    }
+    Ok(())
+}
+
 /// The integration-test executables among cargo's JSON messages, of the
 /// package in `package_dir` when given.
 fn test_binaries(messages: &str, package_dir: Option<&Path>) -> Vec<TestBinary> {
@@ -308,6 +349,7 @@ fn test_binaries(messages: &str, package_dir: Option<&Path>) -> Vec<TestBinary> 
             is_test.then_some(TestBinary {
                 name: target.name,
                 executable: message.executable?,
+                replay: None,
             })
         })
         .collect();

@@ -284,6 +284,16 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
                 build?
             }
         };
+        let build = match (crate::stage::replay::package_dir(&root, topic), build) {
+            (Some(package_dir), Build::Built(mut binaries)) => {
+                let spinner = spinner(format!("building the replay of {}", topic.name));
+                let built = build::add_replays(&builder, topic, &package_dir, &mut binaries);
+                spinner.finish_and_clear();
+                built?;
+                Build::Built(binaries)
+            }
+            (_, build) => build,
+        };
         let build = match (&options.keep_binaries, build) {
             (Some(keep), Build::Built(binaries)) => {
                 Build::Built(keep_binaries(binaries, &keep.join(&topic.name))?)
@@ -335,6 +345,10 @@ fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary
         .map(|binary| {
             Ok(TestBinary {
                 executable: keep_binary(&binary.executable, dir)?,
+                replay: match &binary.replay {
+                    Some(replay) => Some(keep_binary(replay, &dir.join("replay"))?),
+                    None => None,
+                },
                 name: binary.name,
             })
         })

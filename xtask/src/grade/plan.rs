@@ -62,7 +62,12 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
         }
     };
     let mut has_binary = vec![false; topic.sheet.tasks.len()];
-    for TestBinary { name, executable } in binaries {
+    for TestBinary {
+        name,
+        executable,
+        replay,
+    } in binaries
+    {
         let Some(task) = topic.sheet.tasks.iter().position(|task| task.id == name) else {
             plan.errors.push(format!(
                 "test binary `tests/{name}.rs` is not a task of {} (the task sheet lists: {}); its tests were not run",
@@ -76,7 +81,10 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
             .join("scratch")
             .join(&topic.name)
             .join(format!("list-{name}"));
-        let list = |ignored| run::list_tests(&executable, &topic.dir, root, &listing, ignored);
+        // The replay's list where there is one: that build holds no
+        // student code.
+        let listed_from = replay.as_ref().unwrap_or(&executable);
+        let list = |ignored| run::list_tests(listed_from, &topic.dir, root, &listing, ignored);
         let listed = list(false).and_then(|all| Ok((all, list(true)?)));
         let (mut all, ignored) = match listed {
             Ok(lists) => lists,
@@ -112,6 +120,7 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
                 time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
                 memory_limit_mib: topic.sheet.memory_limit_mib,
                 verdict_file: scratch.join(".testkit-verdict"),
+                replay: replay.clone(),
                 log: out
                     .join("logs")
                     .join(&topic.name)

@@ -4,6 +4,19 @@
 //! student code ([`crate::sandbox`]), which owns its sandbox, environment,
 //! limits and cleanup. Here: the token the test must print, and reading
 //! back what it printed.
+//!
+//! A test of a replayed topic (see the `transcript` crate) runs twice:
+//!
+//! ```text
+//!   record: the test with the student's code, no token,   ──> transcript
+//!           its pictures and snapshots thrown away             │ (read-only)
+//!   replay: the same test built without the student's code, <──┘
+//!           the token, the report's pictures and snapshots  ──> the verdict
+//! ```
+//!
+//! The token never exists in a process that ran the student's code, so no
+//! read of that process's memory can find it; what the first run prints is
+//! shown as evidence of what the code did, never read for the verdict.
 
 use std::ffi::OsString;
 use std::fs::{self, File};
@@ -12,6 +25,13 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::{Context, Result};
+
+mod transcript {
+    //! The names the `transcript` crate reads (repeated here so that xtask
+    //! needs no course crate).
+    pub const RECORD_VAR: &str = "TRANSCRIPT_RECORD";
+    pub const REPLAY_VAR: &str = "TRANSCRIPT_REPLAY";
+}
 
 use super::outcome::Exit;
 use crate::sandbox::{Jail, Job, Limits, Purpose};
@@ -59,6 +79,9 @@ pub struct TestCommand {
     /// Where the run's secret token is written for the test to take (in
     /// the test's own scratch folder, which no other test can see).
     pub verdict_file: PathBuf,
+    /// The same test built against the replaying crate: when set, the
+    /// test runs twice (see the module documentation).
+    pub replay: Option<PathBuf>,
 }
 
 /// A finished test process.
@@ -72,6 +95,9 @@ pub struct Finished {
     pub output: String,
     /// The secret a passed test prints (see [`super::outcome::judge`]).
     pub token: String,
+    /// For a replayed test: the end of what the run of the student's code
+    /// printed, shown beside the verdict's output, never read for it.
+    pub evidence: Option<String>,
 }
 
 impl Finished {
@@ -86,13 +112,188 @@ impl Finished {
             duration: Duration::ZERO,
             output: String::new(),
             token: String::new(),
+            evidence: None,
         }
     }
 }
 
+/// The environment variables that say where a test's pictures and pending
+/// snapshots go (see `plan::test_env`): a recording run's go to its scratch.
+const EVIDENCE_VARS: [(&str, &str); 2] = [
+    ("TESTKIT_OUTPUT_DIR", "pictures"),
+    ("INSTA_PENDING_DIR", "snapshots"),
+];
+
+/// The line before a recording run's output, where it is shown.
+pub const EVIDENCE_HEADER: &str = "\n--- the run of your code (its output, shown as evidence; the verdict above is the replay's) ---";
+
+/// A recorded or replayed run may take this many times the sheet's time
+/// limit: writing down (or reading back) every value a task hands out is
+/// the grader's cost, not the student's. A long line hands its callback
+/// tens of millions of fragments; recorded, the run takes several times as
+/// long as the drawing.
+const REPLAY_TIME_FACTOR: u32 = 3;
+
+/// Of a recording run's output, this much is kept in the log beside the
+/// replay's.
+const RECORDED_OUTPUT_KEPT: usize = 16 << 10;
+
 impl TestCommand {
-    /// Runs the test to its end or its limit.
+    /// Runs the test to its end or its limit: once with the token, or, for
+    /// a replayed topic, recorded and then replayed with the token.
     pub fn run(&self) -> Result<Finished> {
+        match &self.replay {
+            None => self.run_with_token(&self.executable, None),
+            Some(replay) => self.run_replayed(replay),
+        }
+    }
+
+    /// Records the student's code, then replays the record (see the module
+    /// documentation).
+    fn run_replayed(&self, replay: &Path) -> Result<Finished> {
+        let scratch = self
+            .writable
+            .first()
+            .context("a test needs a scratch folder")?;
+        let record_dir = scratch.with_extension("record");
+        let transcript = record_dir.join("transcript");
+        for dir in [scratch, &record_dir] {
+            remove_tree(dir);
+            fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+        }
+        let mut env: Vec<(OsString, OsString)> = self
+            .env
+            .iter()
+            .map(|(key, value)| {
+                let thrown_away = EVIDENCE_VARS
+                    .iter()
+                    .find(|(var, _)| key == var)
+                    .map(|(_, dir)| scratch.join(dir).into_os_string());
+                (key.clone(), thrown_away.unwrap_or_else(|| value.clone()))
+            })
+            .collect();
+        env.push((transcript::RECORD_VAR.into(), transcript.clone().into()));
+        let recorded_log = self.log.with_extension("record.log");
+        let mut limits = Limits::test(self.time_limit * REPLAY_TIME_FACTOR, self.memory_limit_mib);
+        limits.output = OUTPUT_LIMIT;
+        let job = Job {
+            purpose: Purpose::Run,
+            program: self.executable.clone(),
+            args: self.test_args(),
+            cwd: self.cwd.clone(),
+            course: self.course.clone(),
+            read_only: vec![self.executable.clone()],
+            writable: vec![scratch.clone(), record_dir.clone()],
+            emptied: Vec::new(),
+            env,
+            gpu: self.gpu,
+            limits,
+            stdout: recorded_log.clone(),
+            stderr: None,
+        };
+        let recorded = Jail::get().run(&job)?;
+        remove_tree(scratch);
+        let recorded_output = read_tail(&recorded_log)?;
+        // Stopped by a limit or killed by a signal (a stack overflow, an
+        // abort): nothing to replay, and its own output says why.
+        if recorded.exit.stopped() || recorded.exit.signal.is_some() {
+            remove_tree(&record_dir);
+            let _ = fs::rename(&recorded_log, &self.log);
+            return Ok(Finished {
+                exit: recorded.exit,
+                duration: recorded.duration,
+                output: recorded_output,
+                token: String::new(),
+                evidence: None,
+            });
+        }
+        let replayed = self.run_with_token(replay, Some(&transcript));
+        remove_tree(&record_dir);
+        self.move_replayed_snapshots();
+        let mut replayed = replayed?;
+        replayed.duration += recorded.duration;
+        // The replay's tests are copies in its package: name the topic's.
+        if let Ok(topic) = self.cwd.strip_prefix(&self.course)
+            && let Some(name) = topic.file_name()
+        {
+            let copy = Path::new(crate::stage::replay::REPLAY_DIR).join(name);
+            replayed.output = replayed.output.replace(
+                &format!("{}/", copy.display()),
+                &format!("{}/", topic.display()),
+            );
+        }
+        // An exit of its own (not libtest's 0 or 101): the recording's
+        // output says what the code did; the replay only that it ended.
+        if replayed.exit.code != Some(0) && !matches!(recorded.exit.code, Some(0 | 101)) {
+            replayed.exit = recorded.exit;
+            replayed.output = recorded_output.clone();
+            replayed.token = String::new();
+        }
+        // The recording's output beside the replay's, as evidence only.
+        let mut start = recorded_output.len().saturating_sub(RECORDED_OUTPUT_KEPT);
+        while !recorded_output.is_char_boundary(start) {
+            start += 1;
+        }
+        let evidence = format!("{EVIDENCE_HEADER}\n{}", &recorded_output[start..]);
+        let _ = fs::OpenOptions::new()
+            .append(true)
+            .open(&self.log)
+            .and_then(|mut log| std::io::Write::write_all(&mut log, evidence.as_bytes()));
+        let _ = fs::remove_file(&recorded_log);
+        replayed.evidence = Some(evidence);
+        Ok(replayed)
+    }
+
+    /// Moves the pending snapshots the replay wrote under its package's
+    /// path (`replay/<topic>/tests/snapshots/`) to where the topic's own
+    /// would be (`exercises/<topic>/tests/snapshots/`), for the review.
+    fn move_replayed_snapshots(&self) {
+        let Some((_, pending)) = self.env.iter().find(|(key, _)| key == "INSTA_PENDING_DIR") else {
+            return;
+        };
+        let pending = Path::new(pending);
+        let Ok(topic) = self.cwd.strip_prefix(&self.course) else {
+            return;
+        };
+        let Some(name) = topic.file_name() else {
+            return;
+        };
+        let from = pending.join(crate::stage::replay::REPLAY_DIR).join(name);
+        let mut folders = vec![from.clone()];
+        while let Some(folder) = folders.pop() {
+            let Ok(entries) = fs::read_dir(&folder) else {
+                continue;
+            };
+            for entry in entries.flatten() {
+                let path = entry.path();
+                match entry.file_type() {
+                    Ok(kind) if kind.is_dir() => folders.push(path),
+                    Ok(kind) if kind.is_file() => {
+                        let Ok(relative) = path.strip_prefix(&from) else {
+                            continue;
+                        };
+                        let to = pending.join(topic).join(relative);
+                        if let Some(parent) = to.parent() {
+                            let _ = fs::create_dir_all(parent);
+                        }
+                        let _ = fs::rename(&path, &to);
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    /// libtest's arguments: this one test, its output not captured.
+    fn test_args(&self) -> Vec<OsString> {
+        ["--exact", &self.name, "--nocapture", "--test-threads=1"]
+            .map(OsString::from)
+            .to_vec()
+    }
+
+    /// Runs `executable`'s test with the token (replaying `transcript`,
+    /// when given, read-only).
+    fn run_with_token(&self, executable: &Path, transcript: Option<&Path>) -> Result<Finished> {
         let token = new_token()?;
         if let Some(parent) = self.verdict_file.parent() {
             fs::create_dir_all(parent)
@@ -102,17 +303,27 @@ impl TestCommand {
             .with_context(|| format!("cannot write {}", self.verdict_file.display()))?;
         let mut env = self.env.clone();
         env.push((VERDICT_FILE_VAR.into(), self.verdict_file.clone().into()));
-        let mut limits = Limits::test(self.time_limit, self.memory_limit_mib);
+        let mut read_only = vec![executable.to_path_buf()];
+        if let Some(transcript) = transcript {
+            env.push((transcript::REPLAY_VAR.into(), transcript.into()));
+            if transcript.exists() {
+                read_only.push(transcript.to_path_buf());
+            }
+        }
+        let time_limit = if transcript.is_some() {
+            self.time_limit * REPLAY_TIME_FACTOR
+        } else {
+            self.time_limit
+        };
+        let mut limits = Limits::test(time_limit, self.memory_limit_mib);
         limits.output = OUTPUT_LIMIT;
         let job = Job {
             purpose: Purpose::Run,
-            program: self.executable.clone(),
-            args: ["--exact", &self.name, "--nocapture", "--test-threads=1"]
-                .map(OsString::from)
-                .to_vec(),
+            program: executable.to_path_buf(),
+            args: self.test_args(),
             cwd: self.cwd.clone(),
             course: self.course.clone(),
-            read_only: vec![self.executable.clone()],
+            read_only,
             writable: self.writable.clone(),
             emptied: Vec::new(),
             env,
@@ -126,7 +337,7 @@ impl TestCommand {
         // that never started its body leaves behind): what a test wrote
         // there is not kept, so a class leaves no gigabytes behind.
         if let Some(scratch) = self.writable.first() {
-            let _ = fs::remove_dir_all(scratch);
+            remove_tree(scratch);
         }
         let _ = fs::remove_file(&self.verdict_file);
         let mut output = read_tail(&self.log)?;
@@ -155,8 +366,14 @@ impl TestCommand {
             duration: ended.duration,
             output,
             token,
+            evidence: None,
         })
     }
+}
+
+/// Removes a folder a test wrote, if it is there.
+fn remove_tree(dir: &Path) {
+    let _ = fs::remove_dir_all(dir);
 }
 
 /// 128 random bits from the operating system, in hex: a token no test can

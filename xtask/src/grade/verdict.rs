@@ -134,7 +134,10 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         reviewed: None,
         duration_s: report::round2(run.duration.as_secs_f64()),
         exit: run.exit,
-        output: (status == TestStatus::Failed).then(|| excerpt(&run.output)),
+        output: (status == TestStatus::Failed).then(|| match &run.evidence {
+            None => excerpt(&run.output),
+            Some(evidence) => format!("{}\n{}", excerpt(&run.output), excerpt(evidence)),
+        }),
         log: test
             .command
             .filter(|_| ran)

@@ -43,6 +43,7 @@ use anyhow::{Context, Result, bail};
 use crate::files::{files_under, plain_file};
 
 mod build;
+pub mod replay;
 mod sync;
 #[cfg(test)]
 mod tests;
@@ -184,9 +185,19 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
     Ok(tasks)
 }
 
+/// The files of a stage of the course at `root`: (path in the stage,
+/// file to copy), sorted by the former: the edition ([`edition_plan`]) and
+/// the replay packages of its replayed topics ([`replay`]).
+pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
+    let mut files = edition_plan(root, overlay)?;
+    replay::add_packages(root, &mut files)?;
+    files.sort();
+    Ok(files)
+}
+
 /// The files of an edition of the course at `root`: (path in the stage,
 /// file to copy), sorted by the former.
-pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
+pub fn edition_plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
     let mut files: Files = files_under(root)?
         .into_iter()
         .map(|file| (file.clone(), Source::File(root.join(file))))
@@ -400,7 +411,7 @@ pub fn outside_course(root: &Path, dir: &Path) -> Result<PathBuf> {
 /// to `DIR` for a tutor's editor (a folder of its own, with its own build).
 pub fn write_reference(root: &Path, dir: &Path) -> Result<()> {
     let dir = outside_course(root, dir)?;
-    let files = plan(root, Overlay::Reference)?;
+    let files = edition_plan(root, Overlay::Reference)?;
     claim(&dir)?;
     let (written, removed) = sync(&files, &dir)?;
     println!(

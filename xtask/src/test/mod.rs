@@ -64,6 +64,10 @@ use stand_ins::given_code_stands_in_for_no_task;
 /// [`shortcuts_lose_their_points`]).
 pub(super) const SHORTCUTS: &str = "xtask/tests/shortcuts";
 
+/// The stage's replay packages (`stage::replay`), as cargo's `--exclude`
+/// pattern: the course's own code and tests again, built for grading.
+pub(super) const REPLAY_PACKAGES: &str = "*-replay";
+
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
 pub(super) const BENCH_PACKAGE: &str = "course-bench";
 
@@ -196,6 +200,9 @@ fn workspace_tests(root: &Path) -> Result<String> {
         "--no-fail-fast",
         "--exclude",
         BENCH_PACKAGE,
+        // The replay builds run only with a record (see `stage::replay`).
+        "--exclude",
+        REPLAY_PACKAGES,
     ]));
     // The grader's own tests copy fixture courses there, each with a build
     // folder of its own.
@@ -215,6 +222,8 @@ fn clippy(root: &Path, overlay: Overlay<'_>) -> Result<String> {
         "--workspace",
         "--all-targets",
         "--all-features",
+        "--exclude",
+        REPLAY_PACKAGES,
         "--",
         "-D",
         "warnings",

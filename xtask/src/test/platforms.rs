@@ -70,6 +70,8 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
             "--all-features",
             "--exclude",
             BENCH_PACKAGE,
+            "--exclude",
+            super::REPLAY_PACKAGES,
             "--target",
             target,
             "--",

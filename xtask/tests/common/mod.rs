@@ -33,12 +33,11 @@ pub fn fixture(name: &str, case: &str) -> PathBuf {
         }
     }
     copy_dir(&source, &copy);
-    // The course's `#[testkit::test]`, which the fixtures' tests use.
-    let macros = Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/testkit-macros");
-    for file in ["Cargo.toml", "src/lib.rs"] {
-        let target = copy.join("crates/testkit-macros").join(file);
-        fs::create_dir_all(target.parent().unwrap()).unwrap();
-        fs::copy(macros.join(file), target).unwrap();
+    // The course's `#[testkit::test]`, which the fixtures' tests use, and
+    // the record and replay of `#[transcript::task]`.
+    let crates = Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates");
+    for name in ["testkit-macros", "transcript", "transcript-macros"] {
+        copy_dir(&crates.join(name), &copy.join("crates").join(name));
     }
     copy
 }

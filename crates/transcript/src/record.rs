@@ -1,0 +1,201 @@
+//! The recording side: what a [`crate::task`] function does in the
+//! student's crate.
+
+use std::any::Any;
+use std::cell::Cell;
+use std::fs::File;
+use std::io::{BufWriter, Write as _};
+use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
+use std::sync::{Mutex, OnceLock, PoisonError};
+
+use crate::event::{self, Event};
+
+thread_local! {
+    /// How many task calls are running on this thread: only a call that
+    /// starts at depth 0 is recorded (its nested task calls are the
+    /// student's own business). A callback of a recorded call runs at
+    /// depth 0 again: it is the test's code.
+    static DEPTH: Cell<usize> = const { Cell::new(0) };
+}
+
+/// The transcript being written, when the grader asked for one.
+struct Recorder {
+    state: Mutex<State>,
+}
+
+/// The file and the batch of calls not yet written to it.
+struct State {
+    out: BufWriter<File>,
+    /// The parameter whose calls the batch holds, and the batch.
+    batch: Option<(u32, Vec<u8>)>,
+    /// Room to encode one call's arguments in.
+    scratch: Vec<u8>,
+}
+
+impl State {
+    // A write that fails leaves the transcript short, which the replay
+    // reports as a call that never ended.
+    fn write_batch(&mut self) {
+        if let Some((parameter, batch)) = self.batch.take() {
+            let _ = event::write(&mut self.out, &event::calls(parameter, &batch));
+        }
+    }
+
+    fn write(&mut self, event: &Event, flush: bool) {
+        self.write_batch();
+        let _ = event::write(&mut self.out, event);
+        if flush {
+            let _ = self.out.flush();
+        }
+    }
+}
+
+impl Recorder {
+    /// The process's recorder: `None` outside the grader.
+    fn get() -> Option<&'static Recorder> {
+        static RECORDER: OnceLock<Option<Recorder>> = OnceLock::new();
+        RECORDER
+            .get_or_init(|| {
+                let path = std::env::var_os(crate::RECORD_VAR)?;
+                let file = File::create(&path).unwrap_or_else(|error| {
+                    panic!(
+                        "cannot create the transcript {}: {error}",
+                        std::path::Path::new(&path).display()
+                    )
+                });
+                Some(Recorder {
+                    state: Mutex::new(State {
+                        out: BufWriter::new(file),
+                        batch: None,
+                        scratch: Vec::new(),
+                    }),
+                })
+            })
+            .as_ref()
+    }
+
+    fn state(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    fn write(&self, event: &Event, flush: bool) {
+        self.state().write(event, flush);
+    }
+
+    /// One call of callback parameter `parameter`, its arguments written
+    /// by `encode`, added to the batch.
+    fn call(&self, parameter: u32, encode: &mut dyn FnMut(&mut Vec<u8>)) {
+        let mut state = self.state();
+        let state = &mut *state;
+        if state.batch.as_ref().is_some_and(|(p, _)| *p != parameter) {
+            state.write_batch();
+        }
+        state.scratch.clear();
+        encode(&mut state.scratch);
+        let (_, batch) = state.batch.get_or_insert_with(|| (parameter, Vec::new()));
+        event::push_call(batch, &state.scratch);
+        if batch.len() >= event::BATCH_BYTES {
+            state.write_batch();
+        }
+    }
+}
+
+/// Where a recorded call's callbacks report to: `None` when the call is
+/// not recorded (nothing asked for, or a nested call).
+#[derive(Clone, Copy)]
+pub struct Recording(Option<&'static Recorder>);
+
+/// One call of a task function, from its start to its end.
+pub struct Call {
+    recording: Recording,
+}
+
+impl Call {
+    /// A call of the task function `name` begins.
+    #[must_use]
+    pub fn enter(name: &str) -> Call {
+        let depth = DEPTH.with(|depth| depth.replace(depth.get() + 1));
+        let recorder = if depth == 0 { Recorder::get() } else { None };
+        if let Some(recorder) = recorder {
+            recorder.write(&Event::Enter(name.to_owned()), false);
+        }
+        Call {
+            recording: Recording(recorder),
+        }
+    }
+
+    /// Where this call's callbacks report to.
+    #[must_use]
+    pub fn recording(&self) -> Recording {
+        self.recording
+    }
+
+    /// Runs the function's body; a panic is recorded with its message and
+    /// goes on unwinding.
+    pub fn run<R>(&self, body: impl FnOnce() -> R) -> R {
+        match catch_unwind(AssertUnwindSafe(body)) {
+            Ok(value) => value,
+            Err(payload) => {
+                if let Some(recorder) = self.recording.0 {
+                    recorder.write(&Event::Panic(message(payload.as_ref())), true);
+                }
+                resume_unwind(payload)
+            }
+        }
+    }
+
+    /// The call returns: `encode` writes its value, then the final value
+    /// of each `&mut` parameter.
+    pub fn finish(&self, encode: &mut dyn FnMut(&mut Vec<u8>)) {
+        if let Some(recorder) = self.recording.0 {
+            let mut values = Vec::new();
+            encode(&mut values);
+            recorder.write(&Event::Return(values), true);
+        }
+    }
+}
+
+impl Drop for Call {
+    fn drop(&mut self) {
+        DEPTH.with(|depth| depth.set(depth.get().saturating_sub(1)));
+    }
+}
+
+/// While alive, the thread runs the caller's code (a callback of a
+/// recorded call): task calls it makes are recorded as calls of their own.
+pub struct Outside(Option<usize>);
+
+impl Drop for Outside {
+    fn drop(&mut self) {
+        if let Some(depth) = self.0 {
+            DEPTH.with(|d| d.set(depth));
+        }
+    }
+}
+
+impl Recording {
+    /// The call invokes its callback parameter number `parameter`, whose
+    /// arguments `encode` writes; keep the returned guard alive while the
+    /// callback runs.
+    #[must_use]
+    pub fn callback(self, parameter: u32, encode: &mut dyn FnMut(&mut Vec<u8>)) -> Outside {
+        match self.0 {
+            Some(recorder) => {
+                recorder.call(parameter, encode);
+                Outside(Some(DEPTH.with(|depth| depth.replace(0))))
+            }
+            None => Outside(None),
+        }
+    }
+}
+
+/// A panic's message, as the panic hook prints it.
+fn message(payload: &(dyn Any + Send)) -> String {
+    if let Some(text) = payload.downcast_ref::<&str>() {
+        (*text).to_owned()
+    } else if let Some(text) = payload.downcast_ref::<String>() {
+        text.clone()
+    } else {
+        "Box<dyn Any>".to_owned()
+    }
+}

@@ -1,0 +1,176 @@
+//! The replay packages of a stage: for every topic whose passes are
+//! decided by replay (`verdict = "replay"` in its sheet), a second package
+//! that builds the topic's official tests against the course's own copy of
+//! its crate, compiled with `--cfg transcript_replay`, where every task
+//! function replays a record instead of running a body (see the
+//! `transcript` crate).
+//!
+//! ```text
+//!   stage/exercises/01-lines/      package `lines`: the graded code (the
+//!     src/  tests/                 student's, the reference ...) and the tests
+//!   stage/replay/01-lines/         package `lines-replay`, library `lines`:
+//!     Cargo.toml build.rs          the course's own src/ (no student file),
+//!     src/ tests/ (the course's)   the same tests, cfg transcript_replay
+//! ```
+//!
+//! The package lies at another path of the stage, so cargo keeps its
+//! artifacts apart from the graded package's, in the one build cache; its
+//! sources are the course's whatever is graded, so they build once.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+
+use super::{Files, Source};
+use crate::files::files_under;
+use crate::topics::{Topic, Verdict};
+
+/// Where the replay packages lie in a stage.
+pub const REPLAY_DIR: &str = "replay";
+
+/// The suffix of a replay package's name (`lines` → `lines-replay`).
+pub const REPLAY_SUFFIX: &str = "-replay";
+
+/// The build script of a replay package: the `cfg` that turns every task
+/// function into its replayer.
+const BUILD_SCRIPT: &str = "//! Compiles the course's crate as the replayer of a recorded run.\nfn main() {\n    println!(\"cargo::rustc-cfg=transcript_replay\");\n}\n";
+
+/// The folder of `topic`'s replay package in a stage at `stage_root`, if
+/// the topic is replayed and the stage has one.
+#[must_use]
+pub fn package_dir(stage_root: &Path, topic: &Topic) -> Option<PathBuf> {
+    let dir = stage_root.join(REPLAY_DIR).join(&topic.name);
+    (topic.sheet.verdict == Verdict::Replay && dir.join("Cargo.toml").is_file()).then_some(dir)
+}
+
+/// The name of `topic`'s replay package.
+#[must_use]
+pub fn package_name(topic: &Topic) -> String {
+    format!("{}{REPLAY_SUFFIX}", topic.package)
+}
+
+/// Adds the replay package of every replayed topic of the course at
+/// `root` to `files`, and makes them members of the staged workspace.
+pub fn add_packages(root: &Path, files: &mut Files) -> Result<()> {
+    let topics = crate::topics::discover(root)?;
+    let replayed: Vec<&Topic> = topics
+        .iter()
+        .filter(|topic| topic.sheet.verdict == Verdict::Replay)
+        .collect();
+    if replayed.is_empty() {
+        return Ok(());
+    }
+    for topic in &replayed {
+        let home = Path::new(REPLAY_DIR).join(&topic.name);
+        // The tests are copied rather than named by a path out of the
+        // package (`../../exercises/..`): insta refuses to put a pending
+        // snapshot under a path with `..`. The grader moves the replay's
+        // pending snapshots to where the topic's own would be.
+        for folder in ["src", "tests"] {
+            let from = topic.dir.join(folder);
+            if from.is_dir() {
+                for file in files_under(&from)? {
+                    files.push((home.join(folder).join(&file), Source::File(from.join(file))));
+                }
+            }
+        }
+        files.push((home.join("build.rs"), Source::Text(BUILD_SCRIPT.into())));
+        files.push((
+            home.join("Cargo.toml"),
+            Source::Text(manifest(topic)?.into()),
+        ));
+    }
+    add_members(files)
+}
+
+/// Makes the replay packages members of the staged workspace.
+fn add_members(files: &mut Files) -> Result<()> {
+    let workspace = files
+        .iter_mut()
+        .find(|(to, _)| to == Path::new("Cargo.toml"))
+        .context("the course has no Cargo.toml")?;
+    let text = String::from_utf8(workspace.1.read()?).context("Cargo.toml is not UTF-8")?;
+    // After the opening bracket of the workspace's `members = [` list,
+    // however it is laid out.
+    let list = text
+        .match_indices("members")
+        .filter(|(at, _)| text[..*at].ends_with('\n'))
+        .find_map(|(at, _)| {
+            let rest = text[at + "members".len()..].trim_start();
+            let rest = rest.strip_prefix('=')?.trim_start();
+            rest.starts_with('[').then(|| text.len() - rest.len() + 1)
+        });
+    let Some(at) = list else {
+        bail!("the course's Cargo.toml has no `members = [` list to add the replay packages to");
+    };
+    let text = format!(
+        "{}\n    # The replay builds of the graded tests (the grader's stage only).\n    \"{REPLAY_DIR}/*\",{}",
+        &text[..at],
+        &text[at..]
+    );
+    workspace.1 = Source::Text(text.into_bytes());
+    Ok(())
+}
+
+/// The manifest of `topic`'s replay package: the topic's own, renamed,
+/// with its library named as before (its tests are copies of the topic's).
+fn manifest(topic: &Topic) -> Result<String> {
+    let path = topic.dir.join("Cargo.toml");
+    let text =
+        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut manifest: toml::Table =
+        toml::from_str(&text).with_context(|| format!("cannot parse {}", path.display()))?;
+    let package = manifest
+        .get_mut("package")
+        .and_then(toml::Value::as_table_mut)
+        .with_context(|| format!("{} has no [package]", path.display()))?;
+    package.insert("name".into(), package_name(topic).into());
+    package.insert(
+        "description".into(),
+        format!(
+            "The replay build of {}'s tests (made by the grader).",
+            topic.name
+        )
+        .into(),
+    );
+    package.insert("build".into(), "build.rs".into());
+    for auto in ["autobenches", "autoexamples", "autobins"] {
+        package.insert(auto.into(), false.into());
+    }
+    let mut lib = toml::Table::new();
+    lib.insert("name".into(), topic.package.replace('-', "_").into());
+    lib.insert("path".into(), "src/lib.rs".into());
+    manifest.insert("lib".into(), lib.into());
+    manifest.remove("bench");
+    toml::to_string(&manifest).context("cannot write a replay manifest")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_replay_packages_join_the_members_however_the_list_is_laid_out() {
+        for manifest in [
+            "[workspace]\nmembers = [\"exercises/*\"]\n",
+            "[workspace]\nresolver = \"3\"\nmembers = [\n    \"crates/*\",\n]\ndefault-members = [\"crates/*\"]\n",
+        ] {
+            let mut files: Files = vec![(
+                PathBuf::from("Cargo.toml"),
+                Source::Text(manifest.as_bytes().to_vec()),
+            )];
+            add_members(&mut files).unwrap();
+            let text = String::from_utf8(files[0].1.read().unwrap()).unwrap();
+            let parsed: toml::Table = toml::from_str(&text).unwrap();
+            let members = parsed["workspace"]["members"].as_array().unwrap();
+            assert_eq!(members[0].as_str(), Some("replay/*"), "{text}");
+            assert_eq!(members.len(), 2, "{text}");
+            let default = parsed["workspace"].get("default-members");
+            assert!(
+                default.is_none_or(|d| d.as_array().unwrap().len() == 1),
+                "the default members stay as they were: {text}"
+            );
+        }
+    }
+}
