@@ -118,13 +118,7 @@ fn grade_one(
         .map(|topic| topic.name.clone())
         .collect();
     let options = &options;
-    // Each task file of the submission read once, through a handle that
-    // follows no link; that copy alone is checked, staged and graded.
-    let taken = take_task_files(official, submission)?;
-    let mut files = stage::plan(official, Overlay::Submission(submission))?;
-    files.retain(|(to, _)| !taken.files.iter().any(|(task_file, _)| task_file == to));
-    files.extend(taken.files.iter().cloned());
-    files.sort();
+    let (files, taken) = staged_files(official, submission)?;
     let (refused, unreadable) = (taken.refused, taken.unreadable);
     let course_before = contents_of(official)?;
     let planned: Vec<(PathBuf, Vec<u8>)> = files
@@ -272,6 +266,20 @@ fn take_task_files(official: &Path, submission: &Path) -> Result<Taken> {
         }
     }
     Ok(taken)
+}
+
+/// The files of the stage of `submission`: the edition of the official
+/// course with the submission's task files as [`take_task_files`] took
+/// them (each read once, held in memory), and what it found. Nothing of
+/// the submission is left to be read later: no staged file is a path
+/// into it.
+fn staged_files(official: &Path, submission: &Path) -> Result<(stage::Files, Taken)> {
+    let taken = take_task_files(official, submission)?;
+    let mut files = stage::plan(official, Overlay::Submission(submission))?;
+    files.retain(|(to, _)| !taken.files.iter().any(|(task_file, _)| task_file == to));
+    files.extend(taken.files.iter().cloned());
+    files.sort();
+    Ok((files, taken))
 }
 
 /// The table of a graded submission, as `cargo xtask grade` prints it.
@@ -664,6 +672,44 @@ mod tests {
             assert!(again.unreadable[0].1.contains("symbolic link"));
             assert_eq!(again.files[0].1, Source::File(official.join(&classify)));
         }
+        let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_submissions_tool_configuration_is_never_staged_nor_read_later() {
+        // insta reads `insta.yaml`, `.config/insta.yaml` or `.insta.yaml`
+        // in the workspace root, proptest `proptest-regressions/` beside
+        // a test: a submission's are not the course's, and stay behind.
+        let dir = std::env::temp_dir().join(format!("xtask-staged-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let submission = dir.join("anna");
+        let dda = PathBuf::from("exercises/01-lines/src/dda.rs");
+        let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
+        write(submission.join(&dda), "// mine\n");
+        for config in ["insta.yaml", ".config/insta.yaml", ".insta.yaml"] {
+            write(submission.join(config), "behavior:\n  force_pass: true\n");
+        }
+        write(
+            submission.join("exercises/01-lines/tests/proptest-regressions/dda.txt"),
+            "cc 0\n",
+        );
+        let (files, _) = staged_files(&course(), &submission).unwrap();
+        for (to, from) in &files {
+            let name = to.to_string_lossy();
+            assert!(
+                !name.contains("insta.yaml") && !name.contains("proptest-regressions"),
+                "{name} is staged"
+            );
+            assert!(
+                !matches!(from, Source::File(path) if path.starts_with(&submission)),
+                "{name} would be read from the submission later"
+            );
+        }
+        let staged = files
+            .iter()
+            .find(|(to, _)| *to == dda)
+            .map(|(_, from)| from);
+        assert_eq!(staged, Some(&Source::Text(b"// mine\n".to_vec())));
         let _ = fs::remove_dir_all(&dir);
     }
 
