@@ -63,6 +63,16 @@ fn an_insta_yaml_in_the_submission_or_above_the_course_changes_nothing() {
         "---\nsource: exercises/01-tiny/tests/double.rs\nexpression: double(21).to_string()\n---\n42\n",
     )
     .unwrap();
+    // The sandboxed build is offline: insta's sources fetched first
+    // (nothing to do where the course was built).
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let fetched = std::process::Command::new(cargo)
+        .arg("fetch")
+        .current_dir(&official)
+        .env_remove("CARGO_TARGET_DIR")
+        .status()
+        .unwrap();
+    assert!(fetched.success(), "cargo fetch in {}", official.display());
     fs::write(above.join("insta.yaml"), LOOSE).unwrap();
     fs::create_dir_all(above.join(".config")).unwrap();
     fs::write(above.join(".config/insta.yaml"), LOOSE).unwrap();
