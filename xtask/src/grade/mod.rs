@@ -213,15 +213,15 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         crate::setup::ensure_vulkan();
     }
     let spinner = |message: String| spinner(message, options.progress);
+    // (What an earlier grade's tests left may be anything: removed by the
+    // grader's bounded removal, never `fs::remove_dir_all`.)
     for stale in [
         out.join(PENDING_SNAPSHOTS),
         out.join("scratch"),
         out.join("build"),
     ] {
-        if stale.exists() {
-            fs::remove_dir_all(&stale)
-                .with_context(|| format!("cannot clear {}", stale.display()))?;
-        }
+        crate::files::remove_tree(&stale)
+            .with_context(|| format!("cannot clear {}", stale.display()))?;
     }
 
     // Build every topic first: cargo serialises builds anyway. All at
@@ -264,10 +264,8 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             out.join("images").join(&topic.name),
             out.join("logs").join(&topic.name),
         ] {
-            if stale.exists() {
-                fs::remove_dir_all(&stale)
-                    .with_context(|| format!("cannot clear {}", stale.display()))?;
-            }
+            crate::files::remove_tree(&stale)
+                .with_context(|| format!("cannot clear {}", stale.display()))?;
         }
         if options.absent.contains(&topic.name) {
             plans.push(plan::absent(topic));
@@ -327,9 +325,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
 /// Hard links `binaries` into `dir` (emptied first): cargo replaces an
 /// executable it rebuilds with a new file, so the link keeps this build's.
 fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary>> {
-    if dir.exists() {
-        fs::remove_dir_all(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
-    }
+    crate::files::remove_tree(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
     binaries
         .into_iter()
         .map(|binary| {
@@ -362,7 +358,7 @@ impl Prepared {
         let keep = self.options.keep_binaries.clone();
         let report = self.run();
         if let Some(keep) = keep {
-            let _ = fs::remove_dir_all(keep);
+            let _ = crate::files::remove_tree(&keep);
         }
         report
     }
@@ -405,13 +401,29 @@ impl Prepared {
             *next += 1;
         }
         jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
+        // What the tests write into the report folder is kept within one
+        // budget for the whole grade, swept after each test (see
+        // `files::Keeper`).
+        let kept = pool::Kept {
+            keeper: std::sync::Mutex::new(crate::files::Keeper::new(
+                out,
+                crate::files::KEPT_BUDGET,
+            )),
+            pending: out.join(PENDING_SNAPSHOTS),
+        };
         let results = pool::run_all(
             &plans,
             &jobs,
             options.jobs.max(1),
             options.permits.as_deref(),
             options.progress,
+            &kept,
         )?;
+        let left_out = kept
+            .keeper
+            .into_inner()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .left_out();
 
         let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
         for (&(p, t), result) in jobs.iter().zip(results) {
@@ -469,6 +481,7 @@ impl Prepared {
             containment: crate::sandbox::Jail::get().containment(),
             topics,
             pipeline,
+            left_out,
         };
         Ok(report)
     }

@@ -126,7 +126,7 @@ impl TestCommand {
         // that never started its body leaves behind): what a test wrote
         // there is not kept, so a class leaves no gigabytes behind.
         if let Some(scratch) = self.writable.first() {
-            let _ = fs::remove_dir_all(scratch);
+            let _ = crate::files::remove_tree(scratch);
         }
         let _ = fs::remove_file(&self.verdict_file);
         let mut output = read_tail(&self.log)?;
