@@ -418,6 +418,44 @@ fn plain() { assert_eq!(1, 1); }
     }
 
     #[test]
+    fn every_snapshot_of_the_course_is_named_by_a_test_that_compares_with_it() {
+        // Otherwise a failed comparison with it could never be recorded,
+        // and a tutor could never accept it.
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        for topic in crate::topics::discover(&root).unwrap() {
+            let snapshots = topic.dir.join("tests").join("snapshots");
+            for file in crate::files::files_under(&snapshots).unwrap() {
+                let name = file.to_string_lossy().into_owned();
+                let Some(stem) = name.strip_suffix(".snap") else {
+                    continue;
+                };
+                let mut parts: Vec<&str> = stem.split("__").collect();
+                parts.pop();
+                let binary = parts.remove(0);
+                let source =
+                    fs::read_to_string(topic.dir.join("tests").join(format!("{binary}.rs")))
+                        .unwrap();
+                let named = source
+                    .match_indices("fn ")
+                    .filter_map(|(at, _)| {
+                        let rest = &source[at + 3..];
+                        let end = rest.find('(')?;
+                        let function = &rest[..end];
+                        let test = parts
+                            .iter()
+                            .copied()
+                            .chain([function])
+                            .collect::<Vec<_>>()
+                            .join("::");
+                        Some(compared_snapshots(&source, binary, &test))
+                    })
+                    .any(|compared| compared.contains(&name));
+                assert!(named, "{}/tests/snapshots/{name}", topic.name);
+            }
+        }
+    }
+
+    #[test]
     fn bodies_compare_as_insta_compares_them() {
         assert_eq!(snapshot_body("---\nsource: a.rs\n---\n#.\n"), "#.\n");
         assert!(same_body("#.\r\n.#  \n\n", "\n#.\n.#"));
