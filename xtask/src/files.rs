@@ -85,10 +85,9 @@ pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
     let mut seen = 0;
     let mut folders = vec![(root.to_path_buf(), 0)];
     while let Some((dir, depth)) = folders.pop() {
-        let entries =
-            fs::read_dir(&dir).with_context(|| format!("cannot read {}", dir.display()))?;
+        let entries = fs::read_dir(&dir).map_err(|error| unreadable(root, &dir, error))?;
         for entry in entries {
-            let entry = entry.with_context(|| format!("cannot read {}", dir.display()))?;
+            let entry = entry.map_err(|error| unreadable(root, &dir, error))?;
             seen += 1;
             if seen > MAX_CHECKOUT_ENTRIES {
                 bail!(
@@ -99,7 +98,7 @@ pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
             let path = entry.path();
             let kind = entry
                 .file_type()
-                .with_context(|| format!("cannot read {}", path.display()))?;
+                .map_err(|error| unreadable(root, &path, error))?;
             if kind.is_dir() {
                 let name = entry.file_name();
                 let solutions = depth == 0 && name == SOLUTIONS;
@@ -109,7 +108,7 @@ pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
                 if depth + 1 >= MAX_DEPTH {
                     bail!(
                         "{}: folders nest deeper than {MAX_DEPTH} levels below {}, deeper than a course checkout has, so the grader reads no further",
-                        path.display(),
+                        shortened(path.strip_prefix(root).unwrap_or(&path)),
                         root.display()
                     );
                 }
@@ -122,6 +121,39 @@ pub fn files_under(root: &Path) -> Result<Vec<PathBuf>> {
     }
     files.sort();
     Ok(files)
+}
+
+/// The error of a walk of `root` that could not read `path`: a path longer
+/// than the system takes said in words, and the path shortened, so that a
+/// reason stays readable (a hostile path is thousands of bytes).
+fn unreadable(root: &Path, path: &Path, error: std::io::Error) -> anyhow::Error {
+    let shown = shortened(path.strip_prefix(root).unwrap_or(path));
+    if error.kind() == ErrorKind::InvalidFilename {
+        anyhow::anyhow!(
+            "{}: a path in it is longer than this system takes ({shown}), so the grader reads no further",
+            root.display()
+        )
+    } else {
+        anyhow::Error::new(error).context(format!("cannot read {shown} in {}", root.display()))
+    }
+}
+
+/// The most characters of a path a message shows.
+const SHOWN_PATH_CHARS: usize = 120;
+
+/// `path` for a message: its start and its end when it is longer than
+/// [`SHOWN_PATH_CHARS`], the middle cut out with `…`.
+#[must_use]
+pub fn shortened(path: &Path) -> String {
+    let text = path.display().to_string();
+    let count = text.chars().count();
+    if count <= SHOWN_PATH_CHARS {
+        return text;
+    }
+    let half = SHOWN_PATH_CHARS / 2;
+    let start: String = text.chars().take(half).collect();
+    let end: String = text.chars().skip(count - half).collect();
+    format!("{start}…{end}")
 }
 
 /// Whether `relative` under `root` is a plain file reached through plain
@@ -637,8 +669,10 @@ impl Keeper {
 
     /// Names `path`, relative to the report folder, with `why`.
     fn note(&mut self, path: &Path, why: &str) {
-        let shown = path.strip_prefix(&self.report).unwrap_or(path);
-        let line = format!("{}: {why}", shown.display());
+        let line = format!(
+            "{}: {why}",
+            shortened(path.strip_prefix(&self.report).unwrap_or(path))
+        );
         if self.left_out.len() < LEFT_OUT_NAMED {
             self.left_out.push(line);
         } else {
@@ -783,7 +817,9 @@ pub(crate) mod tests {
         remove_tree(&dir.join("deep")).unwrap();
         // 20 folders of 250 bytes: 5,000 bytes, past Linux's `PATH_MAX`.
         chain(&dir, "long", 20, &"n".repeat(250));
-        assert!(files_under(&dir).is_err(), "no walk past PATH_MAX");
+        let error = format!("{:#}", files_under(&dir).unwrap_err());
+        assert!(error.contains("longer than this system takes"), "{error}");
+        assert!(error.len() < 400, "the reason stays readable: {error}");
         assert!(!walk(&dir, &mut |_, _| true) || listing(&dir).len() == 1);
         remove_tree(&dir).unwrap();
     }
