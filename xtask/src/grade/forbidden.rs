@@ -100,6 +100,7 @@ pub fn uses(source: &str) -> Vec<String> {
         i = end.max(at + 1);
     }
     found.extend(soundness_hole_uses(&masked));
+    found.extend(crate::sandbox::const_eval::lifted_bounds(&masked));
     found.sort_by_key(|f| {
         f.split(':')
             .next()

@@ -99,6 +99,9 @@ pub struct GradeOptions {
     /// submission without their folders): neither built nor run, each of
     /// their tasks an error that says so, scoring 0.
     pub absent: Vec<String>,
+    /// What containment student code needs before it runs: the grade of
+    /// record fails closed (see [`crate::sandbox::Policy`]).
+    pub sandbox: crate::sandbox::Policy,
 }
 
 impl GradeOptions {
@@ -119,6 +122,7 @@ impl GradeOptions {
             permits: None,
             progress: true,
             absent: Vec::new(),
+            sandbox: crate::sandbox::Policy::BestEffort,
         }
     }
 }
