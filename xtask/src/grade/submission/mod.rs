@@ -525,13 +525,7 @@ fn report_class(class: &Class, out: &Path) -> Result<()> {
         let lines: Vec<String> = class
             .not_graded
             .iter()
-            .map(|(name, why)| {
-                format!(
-                    "{}: {}",
-                    table::shown(name),
-                    table::continued(why, "  ")
-                )
-            })
+            .map(|(name, why)| format!("{}: {}", table::shown(name), table::continued(why, "  ")))
             .collect();
         bail!(
             "{} submission(s) could not be graded and are not in the gradebook:\n{}",
