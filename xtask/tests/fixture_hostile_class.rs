@@ -248,6 +248,11 @@ mod linux {
         assert_eq!(floods["score"], 3.0, "the sparse terabyte: {floods:#}");
         let kept = bytes(&out.join("floods-pictures/images"));
         assert!(kept <= KEPT_BUDGET, "{kept} bytes of pictures kept");
+        let folder = bytes(&out.join("floods-pictures"));
+        assert!(
+            folder <= KEPT_BUDGET + (1 << 20),
+            "the member's report folder holds {folder} bytes: the budget and the reports"
+        );
         assert!(
             floods["left_out"].to_string().contains("past the budget"),
             "{floods:#}"

@@ -423,11 +423,10 @@ impl Prepared {
             options.progress,
             &kept,
         )?;
-        let left_out = kept
+        let mut keeper = kept
             .keeper
             .into_inner()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-            .left_out();
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
 
         let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
         for (&(p, t), result) in jobs.iter().zip(results) {
@@ -459,6 +458,16 @@ impl Prepared {
             &viewer,
         );
         spinner.finish_and_clear();
+        // The builds' logs (the compiler's messages, which quote student
+        // code) and what the listings of the tests and the viewer printed
+        // into scratch, up to the output limit each, count to the same
+        // budget.
+        for folder in [out.join("build"), out.join("scratch")] {
+            for log in crate::files::listing(&folder) {
+                keeper.keep_log(&folder.join(log));
+            }
+        }
+        let left_out = keeper.left_out();
         let phases = report::Phases {
             build_s: report::round2(build_s),
             tests_s: report::round2(tests_s),
