@@ -109,6 +109,13 @@ mod linux {
         assert_eq!(report["score"], 3.0, "{}", first_reason(&report));
         assert_eq!(report["sandboxed"], false);
         assert_eq!(report["containment"]["on_purpose"], true, "{report:#}");
+        // Gradescope's results say it too.
+        let results = read_json(&out.join("member/results.json"));
+        let said = results["output"].as_str().unwrap_or_default();
+        assert!(
+            said.contains("graded on purpose (--unsandboxed-on-purpose) without bubblewrap"),
+            "{results:#}"
+        );
     }
 
     /// A class of four graded for the record in the sandbox: the honest
@@ -182,9 +189,16 @@ mod linux {
         assert_eq!(honest["containment"]["on_purpose"], false, "{honest:#}");
         // A grade of record had its cgroups (it refuses without them); the
         // platforms workflow says which hierarchy its runner has.
-        assert_eq!(honest["containment"]["aggregate_limits"], true, "{honest:#}");
+        assert_eq!(
+            honest["containment"]["aggregate_limits"], true,
+            "{honest:#}"
+        );
         if let Ok(expected) = std::env::var("XTASK_EXPECT_CGROUP") {
-            assert_eq!(honest["containment"]["cgroup"], expected.as_str(), "{honest:#}");
+            assert_eq!(
+                honest["containment"]["cgroup"],
+                expected.as_str(),
+                "{honest:#}"
+            );
         }
         assert!(gradebook.contains("a-honest,3,3"), "{gradebook}");
         assert!(

@@ -73,12 +73,21 @@ impl Jail {
             for dir in &job.writable {
                 give_to_nobody(dir)?;
             }
+            // No supplementary group but, for a GPU topic, those that may
+            // open the GPU's device files (`render`, `video`).
+            let groups = if job.gpu { gpu_groups() } else { Vec::new() };
+            let groups = if groups.is_empty() {
+                "--clear-groups".to_owned()
+            } else {
+                let ids: Vec<String> = groups.iter().map(u32::to_string).collect();
+                format!("--groups={}", ids.join(","))
+            };
             inner.extend(
                 [
                     "setpriv",
                     &format!("--reuid={NOBODY}"),
                     &format!("--regid={NOBODY}"),
-                    "--clear-groups",
+                    &groups,
                     // Nothing inheritable either: the process keeps no
                     // capability of its own across the `exec`.
                     "--inh-caps=-all",
@@ -252,6 +261,37 @@ fn running_as_root() -> bool {
 #[cfg(not(unix))]
 fn running_as_root() -> bool {
     false
+}
+
+/// The groups that own the GPU's device files ([`GPU_DEVICES`] and what is
+/// in `/dev/dri`), root's excepted: a GPU topic's tests, run as
+/// [`NOBODY`], are in them, so that they may open a render node that only
+/// its group may (`crw-rw---- root render`), as the grader could.
+#[cfg(unix)]
+fn gpu_groups() -> Vec<u32> {
+    use std::os::unix::fs::MetadataExt as _;
+    let dri = fs::read_dir("/dev/dri")
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|entry| entry.path());
+    let mut groups: Vec<u32> = GPU_DEVICES
+        .iter()
+        .map(PathBuf::from)
+        .chain(dri)
+        .filter_map(|path| fs::metadata(path).ok())
+        .filter(|meta| !meta.is_dir())
+        .map(|meta| meta.gid())
+        .filter(|&gid| gid != 0)
+        .collect();
+    groups.sort_unstable();
+    groups.dedup();
+    groups
+}
+
+#[cfg(not(unix))]
+fn gpu_groups() -> Vec<u32> {
+    Vec::new()
 }
 
 /// Makes `dir` (created if missing) and what is in it [`NOBODY`]'s, so that

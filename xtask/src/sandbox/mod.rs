@@ -266,6 +266,34 @@ pub struct Containment {
     pub on_purpose: bool,
 }
 
+impl Containment {
+    /// For a grade of record graded with less on purpose, the line every
+    /// report says it in: what did not hold (`sandboxed`: whether
+    /// bubblewrap ran); `None` for any other grade.
+    #[must_use]
+    pub fn on_purpose_note(&self, sandboxed: bool) -> Option<String> {
+        if !self.on_purpose {
+            return None;
+        }
+        let lacking: Vec<&str> = [
+            (!sandboxed, "bubblewrap"),
+            (!self.seccomp, "its seccomp filters"),
+            (!self.aggregate_limits, "cgroups"),
+        ]
+        .into_iter()
+        .filter_map(|(lacked, what)| lacked.then_some(what))
+        .collect();
+        Some(if lacking.is_empty() {
+            "graded with --unsandboxed-on-purpose; everything held all the same".to_owned()
+        } else {
+            format!(
+                "graded on purpose (--unsandboxed-on-purpose) without {}",
+                lacking.join(", ")
+            )
+        })
+    }
+}
+
 /// How a grading run treats containment it cannot fully have.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub enum Policy {
