@@ -330,7 +330,9 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            // An error may quote a submission (a file's name, a reason): its
+            // lines escaped, as every line the grader prints.
+            eprintln!("error: {}", grade::escaped_lines(&format!("{error:#}")));
             ExitCode::FAILURE
         }
     }

@@ -529,6 +529,14 @@ pub fn print_summary(report: &Report, out: &Path, details: bool) {
     );
 }
 
+/// Text of many lines for the terminal, each line escaped as the grader
+/// escapes every text from a submission (see `table::shown`), the later
+/// ones indented under the first.
+#[must_use]
+pub fn escaped_lines(text: &str) -> String {
+    table::continued(text, "  ")
+}
+
 /// One screen for `cargo xtask watch`: the table and the first failing
 /// task's first failure.
 #[must_use]

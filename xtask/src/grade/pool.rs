@@ -120,7 +120,12 @@ pub(super) fn run_all(
                     };
                     let plan = &plans[p];
                     let test = &plan.tests[t];
-                    bar.set_message(format!("{} {}", plan.topic.name, test.name));
+                    // (A test's name is what its program listed: escaped.)
+                    bar.set_message(format!(
+                        "{} {}",
+                        plan.topic.name,
+                        super::table::shown(&test.name)
+                    ));
                     let command = test.command.as_ref().expect("only runnable tests are jobs");
                     let key = (p, test.task);
                     let skip = timed_out.lock().expect("no worker panics").contains(&key);
