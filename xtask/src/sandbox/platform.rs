@@ -9,7 +9,15 @@ use anyhow::{Context, Result};
 
 /// The seccomp filters every sandboxed process runs under, compiled once
 /// per run into files bwrap reads (`--add-seccomp-fd`, one per filter).
+/// Made on Linux alone (x86-64 and AArch64), where bwrap runs.
 #[derive(Debug)]
+#[cfg_attr(
+    not(all(
+        target_os = "linux",
+        any(target_arch = "x86_64", target_arch = "aarch64")
+    )),
+    allow(dead_code)
+)]
 pub(super) struct Filters {
     files: Vec<PathBuf>,
 }
@@ -131,7 +139,7 @@ const CLONE_NEWUSER: u64 = libc::CLONE_NEWUSER as u64;
 /// The x32 ABI's numbers (bit 30 set) pass seccompiler's architecture
 /// check on x86-64: each denied call is denied by that number too, and by
 /// the x32 numbers of the calls x32 numbers apart.
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_os = "linux", target_arch = "x86_64"))]
 fn with_x32(calls: Vec<i64>) -> Vec<i64> {
     const X32: i64 = 0x4000_0000;
     /// x32's own numbers of `ptrace`, `kexec_load`, `process_vm_readv` and
@@ -143,7 +151,7 @@ fn with_x32(calls: Vec<i64>) -> Vec<i64> {
     all
 }
 
-#[cfg(target_arch = "aarch64")]
+#[cfg(all(target_os = "linux", target_arch = "aarch64"))]
 fn with_x32(calls: Vec<i64>) -> Vec<i64> {
     calls
 }
