@@ -457,12 +457,13 @@ pub fn read_capped(path: &Path, cap: u64) -> Result<Vec<u8>> {
     }
     let mut options = fs::OpenOptions::new();
     options.read(true);
-    #[cfg(target_os = "linux")]
+    #[cfg(unix)]
     {
         use std::os::unix::fs::OpenOptionsExt as _;
         // Swapped for a link or a pipe since it was looked at: refused, not
         // followed, and never waited on.
-        options.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
+        let flags = rustix::fs::OFlags::NOFOLLOW | rustix::fs::OFlags::NONBLOCK;
+        options.custom_flags(flags.bits() as i32);
     }
     let file = options
         .open(path)
