@@ -555,6 +555,28 @@ mod tests {
     }
 
     #[test]
+    fn a_grader_in_the_root_cgroup_makes_its_jobs_under_the_root() {
+        // As in a host without systemd, or a container at the root of its
+        // cgroup namespace: the root alone may hold processes and still
+        // give its children controllers.
+        let mount = scratch("root");
+        fs::write(mount.join("cgroup.procs"), "").unwrap();
+        fs::write(mount.join("cgroup.subtree_control"), "memory pids\n").unwrap();
+        let hierarchy = Hierarchy::V2 {
+            mount: mount.clone(),
+        };
+        let cgroup = Cgroup::new_in(
+            &hierarchy,
+            "0::/\n",
+            &Limits::test(Duration::from_secs(1), 64),
+        )
+        .unwrap();
+        assert_eq!(cgroup.dirs[0].parent(), Some(mount.as_path()));
+        drop(cgroup);
+        fs::remove_dir_all(&mount).unwrap();
+    }
+
+    #[test]
     fn a_v1_job_gets_a_memory_and_a_pids_cgroup() {
         let root = scratch("v1");
         let hierarchy = Hierarchy::V1 {
