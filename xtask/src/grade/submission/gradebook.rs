@@ -126,10 +126,18 @@ impl Class {
                 .unwrap_or_default();
             let row_path = member.join(ROW_FILE);
             if row_path.is_file() {
-                let bytes = read_capped(&row_path, MAX_SUBMITTED_FILE)?;
-                let row: GradebookRow = serde_json::from_slice(&bytes)
-                    .with_context(|| format!("cannot read {}", row_path.display()))?;
-                class.rows.push(row);
+                // A row that cannot be read is that member's problem, named
+                // with why; the gradebook holds the others.
+                let row = read_capped(&row_path, MAX_SUBMITTED_FILE).and_then(|bytes| {
+                    serde_json::from_slice::<GradebookRow>(&bytes)
+                        .with_context(|| format!("cannot read {}", row_path.display()))
+                });
+                match row {
+                    Ok(row) => class.rows.push(row),
+                    Err(error) => class
+                        .not_graded
+                        .push((name, format!("its gradebook row is unreadable: {error:#}"))),
+                }
             } else if let Ok(why) = read_capped(&member.join(NOT_GRADED_FILE), MAX_SUBMITTED_FILE) {
                 class
                     .not_graded
@@ -343,10 +351,10 @@ mod tests {
     }
 
     /// A part whose member's picture folder holds a chain of 2,100
-    /// folders (its path far past `PATH_MAX`; an older grade kept it) and
-    /// a link posing as a member: the merge copies the honest member,
-    /// names the deep one as not graded with why, copies nothing through
-    /// the link, and is written.
+    /// folders (its path far past `PATH_MAX`; an older grade kept it), a
+    /// member whose row is torn, and a link posing as a member: the merge
+    /// copies the honest member, names the other two as not graded with
+    /// why, copies nothing through the link, and is written.
     #[test]
     fn a_merge_goes_on_past_a_member_it_cannot_copy() {
         use crate::files::tests::{chain, scratch};
@@ -370,16 +378,24 @@ mod tests {
             row(name).save(&part.join(name)).unwrap();
         }
         chain(&part.join("deep/images"), "t", 2_100, "d");
+        fs::create_dir_all(part.join("torn")).unwrap();
+        fs::write(part.join("torn").join(ROW_FILE), "{ not json").unwrap();
         #[cfg(unix)]
         std::os::unix::fs::symlink(part.join("anna"), part.join("linked")).unwrap();
         let out = dir.join("merged");
         let class = merge(&[part], &out).expect("the merge is written");
         let names: Vec<&str> = class.rows.iter().map(|r| r.submission.as_str()).collect();
         assert_eq!(names, ["anna"]);
-        assert_eq!(class.not_graded.len(), 1, "{:?}", class.not_graded);
+        assert_eq!(class.not_graded.len(), 2, "{:?}", class.not_graded);
         assert_eq!(class.not_graded[0].0, "deep");
         assert!(
             class.not_graded[0].1.contains("could not be copied"),
+            "{:?}",
+            class.not_graded
+        );
+        assert_eq!(class.not_graded[1].0, "torn");
+        assert!(
+            class.not_graded[1].1.contains("row is unreadable"),
             "{:?}",
             class.not_graded
         );
