@@ -227,6 +227,12 @@ mod linux {
                     .is_none(),
             "a test's scratch folder is removed"
         );
+        assert!(
+            text.lines()
+                .any(|l| l.contains("leaves-links: 3 / 3 points")
+                    && l.contains("left out of its report")),
+            "the class's line says what was left out: {text}"
+        );
         let links = read_json(&out.join("leaves-links/report.json"));
         assert_eq!(links["score"], 3.0, "{links:#}");
         let left_out = links["left_out"].to_string();
