@@ -1,8 +1,16 @@
-//! The grader's file walks and reads, in one place: the files of a course
-//! (never `target/`, `.git/` or the solutions, no link followed), a
-//! bounded walk of what a job wrote, and the plain-file reads and writes
-//! that staging a submission needs (no link followed at any component),
-//! and which files are WGSL.
+//! The grader's file walks, reads and removals, in one place: the files
+//! of a course (never `target/`, `.git/` or the solutions, no link
+//! followed), a bounded walk of what a job wrote, the plain-file reads and
+//! writes that staging a submission needs (no link followed at any
+//! component), the removal of what a test leaves ([`remove_tree`]), what
+//! a report keeps of it ([`Keeper`]), and which files are WGSL.
+//!
+//! Everything here may meet a member's data, which may be anything: so
+//! every walk is bounded (depth [`MAX_DEPTH`], a count of entries), keeps
+//! its folders on a stack of its own rather than the call stack, and
+//! follows no link; every read of a member's file is capped
+//! ([`MAX_SUBMITTED_FILE`]); and what cannot be read is an error with its
+//! reason, which the class makes that member's result.
 
 use std::collections::HashMap;
 use std::fs::{self, File};
@@ -50,8 +58,9 @@ const MOVED_UP_PAST: usize = 512;
 
 /// The bytes a grade keeps of what its tests wrote into its report folder:
 /// their pictures, pending snapshots and logs together ([`Keeper`]). 256
-/// MiB: the course's own tests keep a few MiB a member; a class of 100 is
-/// bounded by 25 GiB of reports.
+/// MiB: far more than the course's own tests keep (small PNG pictures,
+/// text snapshots, short logs), and a class of 100 within 25 GiB of
+/// reports.
 pub const KEPT_BUDGET: u64 = 256 << 20;
 
 /// Of a test's log past the budget, this much (its end) is kept.
