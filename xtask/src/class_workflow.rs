@@ -111,7 +111,8 @@ jobs:
         working-directory: course
         env:
           SHARD: ${{{{ matrix.shard }}}}/${{{{ needs.plan.outputs.count }}}}
-        run: cargo xtask grade --submission ../class --shard "$SHARD" --out ../part || echo "::warning::some members of shard $SHARD could not be graded (see their lines above)"
+        run: |
+{delegate}          cargo xtask grade --submission ../class --shard "$SHARD" --out ../part || echo "::warning::some members of shard $SHARD could not be graded (see their lines above)"
       - name: Keep the part
         uses: actions/upload-artifact@v4
         with:
@@ -143,7 +144,8 @@ jobs:
         with:
           name: class-grade
           path: class-grade/
-"#
+"#,
+        delegate = crate::sandbox::delegate_script("          "),
     )
 }
 

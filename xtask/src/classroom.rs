@@ -162,7 +162,8 @@ jobs:
           restore-keys: grade-${{{{ runner.os }}}}-
       - name: Grade
         working-directory: {COURSE_DIR}
-        run: cargo xtask grade --submission ../{SUBMISSION_DIR} --out ../{GRADE_DIR}
+        run: |
+{delegate}          cargo xtask grade --submission ../{SUBMISSION_DIR} --out ../{GRADE_DIR}
       - name: Keep the report
         if: always()
         uses: actions/upload-artifact@v4
@@ -170,7 +171,8 @@ jobs:
           name: grade-report
           path: {GRADE_DIR}/
           if-no-files-found: ignore
-"#
+"#,
+        delegate = crate::sandbox::delegate_script("          "),
     );
     for (topic, task) in &tasks {
         let id = step_id(&topic.name, &task.id);

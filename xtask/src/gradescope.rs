@@ -20,6 +20,19 @@
 //!   changed grading files), or writes one that says why nothing was graded;
 //! - `autograder.zip`: the three, ready to upload.
 //!
+//! **Containment: Gradescope's container is the stated exception.** A
+//! grade of record fails closed where bubblewrap, its seccomp filter or
+//! the cgroups cannot be had (see `crate::sandbox::Policy`), and in
+//! Gradescope's container they usually cannot: it is a Docker container
+//! run as root, whose seccomp profile forbids the namespaces bubblewrap
+//! makes and whose `/sys/fs/cgroup` is read-only. The container itself is
+//! the sandbox there: each submission is graded in a fresh one that holds
+//! the student edition alone (no solutions, no other student's work, no
+//! token of the course's), with Gradescope's own limits. So both scripts
+//! grade with `--unsandboxed-on-purpose`: what the container allows is
+//! still used (bubblewrap where it runs), student code runs as `nobody`
+//! either way, and every report says what did not hold.
+//!
 //! `run_autograder` takes `AUTOGRADER_ROOT` (default `/autograder`) and
 //! `XTASK` (default: the grader `setup.sh` built), so that a test can run
 //! it on a simulated tree.
@@ -57,9 +70,11 @@ rustc --version
 cargo build --release --package xtask
 # Grade the untouched edition once, as a submission: every dependency is
 # then compiled into the image, and a student's submission compiles only
-# its own code.
+# its own code. On purpose without the whole sandbox where the container
+# forbids it (see run_autograder).
 rm -rf /tmp/warm-up && cp -r "$SOURCE/course" /tmp/warm-up && rm -rf /tmp/warm-up/target
-target/release/xtask --root "$SOURCE/course" grade --submission /tmp/warm-up --out /tmp/warm-up-grade > /dev/null
+target/release/xtask --root "$SOURCE/course" grade --submission /tmp/warm-up --out /tmp/warm-up-grade \
+    --unsandboxed-on-purpose > /dev/null
 rm -rf /tmp/warm-up /tmp/warm-up-grade
 "#;
 
@@ -86,8 +101,14 @@ if [ ! -f "$SUBMISSION/Cargo.toml" ] && [ "${#ENTRIES[@]}" -eq 1 ] && [ -d "${EN
 fi
 cp -r "$SUBMISSION" "$WORK/submission"
 
-"$XTASK" --root "$COURSE" grade --submission "$WORK/submission" --out "$WORK/grade" 2>&1 \
-    | tee "$WORK/grade.log"
+# Gradescope's container is the stated exception to a grade of record's
+# failing closed: a Docker container, run as root, usually forbids the
+# namespaces bubblewrap makes and the cgroups that limit a test's processes
+# together. The container is the sandbox here (a fresh one per submission,
+# holding the student edition alone); what it allows is still used, student
+# code runs as nobody, and results.json says what did not hold.
+"$XTASK" --root "$COURSE" grade --submission "$WORK/submission" --out "$WORK/grade" \
+    --unsandboxed-on-purpose 2>&1 | tee "$WORK/grade.log"
 STATUS=${PIPESTATUS[0]}
 if [ "$STATUS" -eq 0 ] && [ -f "$WORK/grade/submission/results.json" ]; then
     cp "$WORK/grade/submission/results.json" "$RESULTS"

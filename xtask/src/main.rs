@@ -231,6 +231,11 @@ struct GradeArgs {
     /// e.g. on N machines; `cargo xtask gradebook merge` joins their --out folders.
     #[arg(long, value_name = "I/N", value_parser = grade::submission::Shard::parse)]
     shard: Option<grade::submission::Shard>,
+    /// With --submission: grade even where bubblewrap, its seccomp filter or the cgroups
+    /// that limit a test's processes together cannot be had (what can be had is still
+    /// used), instead of refusing; every report says so.
+    #[arg(long)]
+    unsandboxed_on_purpose: bool,
 }
 
 fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
@@ -247,6 +252,15 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
     options.target_dir = args.target_dir;
     if let Some(seconds) = args.build_time_limit {
         options.build_time_limit = std::time::Duration::from_secs(seconds);
+    }
+    // The grade of record runs someone else's code: it fails closed.
+    options.sandbox = match (&args.submission, args.unsandboxed_on_purpose) {
+        (Some(_), false) => sandbox::Policy::Required,
+        (Some(_), true) => sandbox::Policy::OnPurpose,
+        (None, _) => sandbox::Policy::BestEffort,
+    };
+    if args.submission.is_some() && !args.reference {
+        sandbox::enforce(options.sandbox)?;
     }
     match args.submission {
         Some(_) if args.reference => {
@@ -316,7 +330,9 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            // An error may quote a submission (a file's name, a reason): its
+            // lines escaped, as every line the grader prints.
+            eprintln!("error: {}", grade::escaped_lines(&format!("{error:#}")));
             ExitCode::FAILURE
         }
     }

@@ -2,18 +2,21 @@
 //! last grade found different, reviewed with `cargo-insta` (installed
 //! when missing), without the tutor needing to know where anything lies.
 //!
-//! The grade leaves each failed snapshot as insta's `.snap.new` under its
-//! report folder, at the official snapshot's path. The review lays each
-//! beside a copy of the official `.snap` in a review folder of its own
-//! (`<report>/review/`) and runs `cargo insta review` there: stepping
-//! through the diffs, the tutor accepts (the student's snapshot is right),
-//! rejects (it is wrong) or skips each, and the verdicts are written to
-//! `<report>/review.json`. A test that failed only on a snapshot the tutor
-//! accepted gets its points back, marked as reviewed, in the member's
-//! reports and in the class's gradebook (see `grade::reviewed`). Accepting changes only that copy: the course's
-//! official snapshots are never touched from a submission. Without a
-//! terminal (or with `--list`) the snapshots and their diffs are printed
-//! instead.
+//! The grade records, on each failed test, the official snapshots it
+//! compared with and found different, and the body it captured (see
+//! `grade::reviewed`: the record in `report.json`, never a test's reason,
+//! never a pending snapshot equal to the official one). The review lays
+//! each recorded body, as insta's `.snap.new`, beside a copy of the
+//! official `.snap` in a review folder of its own (`<report>/review/`) and
+//! runs `cargo insta review` there: stepping through the diffs, the tutor
+//! accepts (the student's snapshot is right), rejects (it is wrong) or
+//! skips each, and the verdicts are written to `<report>/review.json`. A
+//! test whose recorded mismatches the tutor all accepted gets its points
+//! back, marked as reviewed, in the member's reports and in the class's
+//! gradebook; a rejection or a skip changes nothing. Accepting changes
+//! only that copy: the course's official snapshots are never touched from
+//! a submission. Without a terminal (or with `--list`) the snapshots and
+//! their diffs are printed instead.
 
 use std::fs;
 use std::io::IsTerminal as _;
@@ -24,7 +27,7 @@ use anyhow::{Context, Result, bail, ensure};
 use serde::Serialize;
 
 use crate::grade::report::Report;
-use crate::grade::{self, PENDING_SNAPSHOTS};
+use crate::grade::{self, reviewed};
 use crate::{setup, stage};
 
 /// The verdict of a snapshot the tutor found right.
@@ -34,24 +37,39 @@ const ACCEPTED: &str = "accepted";
 /// cargo-insta finds the snapshots in it.
 const REVIEW_MANIFEST: &str = "# Written by `cargo xtask review`: a copy of the snapshots under review.\n[package]\nname = \"snapshot-review\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[lib]\npath = \"lib.rs\"\n\n[workspace]\n";
 
-/// The pending snapshots under `dir`, relative to it, sorted. The folder
-/// is written by tests: its walk follows no link and is bounded.
-fn pending_under(dir: &Path) -> Result<Vec<PathBuf>> {
-    let mut found = Vec::new();
-    if dir.is_dir() {
-        for file in crate::files::listing(dir) {
-            if file.to_string_lossy().ends_with(".snap.new") {
-                found.push(file);
+/// The official snapshot a pending one would replace: `x.snap.new` → `x.snap`.
+fn official_of(pending: &Path) -> PathBuf {
+    pending.with_extension("")
+}
+
+/// The mismatches the grade in `report` recorded, one per official
+/// snapshot: (the pending snapshot's path in the course, `x.snap.new`;
+/// the body captured), sorted.
+fn recorded(report: &Report) -> Vec<(PathBuf, String)> {
+    let mut found: Vec<(PathBuf, String)> = Vec::new();
+    for test in report
+        .topics
+        .iter()
+        .flat_map(|topic| &topic.tasks)
+        .flat_map(|task| &task.tests)
+    {
+        for mismatch in &test.snapshot_mismatches {
+            let pending = PathBuf::from(format!("{}.new", mismatch.snapshot));
+            if !found.iter().any(|(p, _)| *p == pending) {
+                found.push((pending, mismatch.captured.clone()));
             }
         }
     }
     found.sort();
-    Ok(found)
+    found
 }
 
-/// The official snapshot a pending one would replace: `x.snap.new` → `x.snap`.
-fn official_of(pending: &Path) -> PathBuf {
-    pending.with_extension("")
+/// Reads the report in `graded`.
+fn read_report(graded: &Path) -> Result<Report> {
+    let path = graded.join("report.json");
+    let text =
+        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    serde_json::from_str(&text).with_context(|| format!("cannot read {}", path.display()))
 }
 
 /// One snapshot's verdict.
@@ -69,42 +87,50 @@ pub struct Review {
     graded: PathBuf,
     /// The review folder inside it.
     dir: PathBuf,
-    /// The pending snapshots, relative to the grade's snapshots folder.
+    /// The pending snapshots (`x.snap.new`, at the official snapshot's
+    /// path in the course), as the grade recorded them.
     pub pending: Vec<PathBuf>,
+    /// The body the grade captured for each of [`Self::pending`].
+    captured: Vec<String>,
     /// The cargo-insta program.
     insta: PathBuf,
 }
 
 impl Review {
-    /// Lays the snapshots the grade in `graded` found different beside a
-    /// copy of the course's (at `root`) in `graded/review/`, and finds
-    /// cargo-insta (installing it when missing). `None` when every
-    /// snapshot matched.
+    /// Lays the snapshots the grade in `graded` recorded as different
+    /// (its `report.json`, see `grade::reviewed`) beside a copy of the
+    /// course's (at `root`) in `graded/review/`, and finds cargo-insta
+    /// (installing it when missing). `None` when no test failed on a
+    /// snapshot. Nothing a test wrote is read: the bodies are the grade's
+    /// record.
     pub fn prepare(root: &Path, graded: &Path) -> Result<Option<Self>> {
         ensure!(
             graded.join("report.json").is_file(),
             "no grade in {} to review: run `cargo xtask grade` first",
             graded.display()
         );
-        let pending = pending_under(&graded.join(PENDING_SNAPSHOTS))?;
-        if pending.is_empty() {
-            return Ok(None);
-        }
+        let report = read_report(graded)?;
         let dir = graded.join("review");
         if dir.exists() {
             fs::remove_dir_all(&dir).with_context(|| format!("cannot clear {}", dir.display()))?;
         }
-        for file in &pending {
-            let official = root.join(official_of(file));
-            let to = dir.join(file);
-            fs::create_dir_all(to.parent().expect("a snapshot lies in a folder"))
-                .with_context(|| format!("cannot create the folder of {}", to.display()))?;
-            fs::copy(graded.join(PENDING_SNAPSHOTS).join(file), &to)
-                .with_context(|| format!("cannot copy {}", file.display()))?;
-            if official.is_file() {
-                fs::copy(&official, dir.join(official_of(file)))
-                    .with_context(|| format!("cannot copy {}", official.display()))?;
-            }
+        let (mut pending, mut captured) = (Vec::new(), Vec::new());
+        for (file, body) in recorded(&report) {
+            let official_path = root.join(official_of(&file));
+            let Ok(official) = fs::read_to_string(&official_path) else {
+                continue; // not a snapshot of this course
+            };
+            // insta's header (the official one's, naming the test's
+            // source) above the body the grade captured.
+            let header = &official[..official.len() - reviewed::snapshot_body(&official).len()];
+            let to = dir.join(&file);
+            crate::files::write_file(&to, format!("{header}{body}"))?;
+            crate::files::write_file(&dir.join(official_of(&file)), &official)?;
+            pending.push(file);
+            captured.push(body);
+        }
+        if pending.is_empty() {
+            return Ok(None);
         }
         // cargo-insta works in a cargo package: an empty one around them.
         fs::write(dir.join("Cargo.toml"), REVIEW_MANIFEST)
@@ -116,6 +142,7 @@ impl Review {
             graded: graded.to_path_buf(),
             dir,
             pending,
+            captured,
             insta,
         }))
     }
@@ -163,11 +190,7 @@ impl Review {
         if !status.success() {
             bail!("`cargo insta review` stopped ({status})");
         }
-        let verdicts = verdicts(
-            &self.dir,
-            &self.graded.join(PENDING_SNAPSHOTS),
-            &self.pending,
-        )?;
+        let verdicts = verdicts(&self.dir, &self.pending, &self.captured)?;
         let path = self.graded.join("review.json");
         fs::write(
             &path,
@@ -187,11 +210,7 @@ impl Review {
 /// grade in `graded` (see `grade::reviewed`): its reports written again,
 /// and its row in its class's gradebook. What changed, in a line.
 fn apply_verdicts(graded: &Path, verdicts: &[Verdict]) -> Result<String> {
-    let path = graded.join("report.json");
-    let text =
-        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
-    let mut report: Report =
-        serde_json::from_str(&text).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut report = read_report(graded)?;
     let accepted: Vec<String> = verdicts
         .iter()
         .filter(|v| v.verdict == ACCEPTED)
@@ -298,39 +317,33 @@ fn plain_diff(page: &str) -> String {
 }
 
 /// What the review did with each snapshot, read off the review folder:
-/// accepted when the graded snapshot took the official one's place,
-/// rejected when it was thrown away, not reviewed while it waits.
-fn verdicts(review: &Path, graded: &Path, pending: &[PathBuf]) -> Result<Vec<Verdict>> {
+/// accepted when the body the grade captured took the official one's
+/// place, rejected when it was thrown away, not reviewed while it waits.
+/// `pending` and `captured` are the grade's record ([`Review::prepare`]).
+fn verdicts(review: &Path, pending: &[PathBuf], captured: &[String]) -> Result<Vec<Verdict>> {
     pending
         .iter()
-        .map(|file| {
+        .zip(captured)
+        .map(|(file, body)| {
             let official = official_of(file);
+            let now = fs::read_to_string(review.join(&official)).unwrap_or_default();
             let verdict = if review.join(file).exists() {
                 "not reviewed"
-            } else if snapshot_body(&review.join(&official)) == snapshot_body(&graded.join(file)) {
+            } else if reviewed::same_body(reviewed::snapshot_body(&now), body) {
                 ACCEPTED
             } else {
                 "rejected"
             };
             Ok(Verdict {
-                snapshot: official.display().to_string(),
+                snapshot: official
+                    .components()
+                    .map(|c| c.as_os_str().to_string_lossy().into_owned())
+                    .collect::<Vec<_>>()
+                    .join("/"),
                 verdict,
             })
         })
         .collect()
-}
-
-/// A snapshot file's contents after its metadata header (the part insta
-/// rewrites on accepting).
-fn snapshot_body(path: &Path) -> Option<String> {
-    let text = fs::read_to_string(path).ok()?;
-    Some(match text.strip_prefix("---\n") {
-        Some(rest) => rest
-            .split_once("\n---\n")
-            .map_or(rest, |(_, body)| body)
-            .to_owned(),
-        None => text,
-    })
 }
 
 #[cfg(test)]
@@ -368,25 +381,92 @@ mod tests {
     fn verdicts_are_read_off_the_review_folder() {
         let dir = std::env::temp_dir().join(format!("xtask-review-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
-        let (review, graded) = (dir.join("review"), dir.join("graded"));
+        let review = dir.join("review");
         let snap = |name: &str| PathBuf::from(format!("t/snapshots/{name}.snap.new"));
         let write = |path: PathBuf, body: &str| {
             fs::create_dir_all(path.parent().unwrap()).unwrap();
             fs::write(path, format!("---\nsource: t.rs\n---\n{body}")).unwrap();
         };
-        for name in ["a", "b", "c"] {
-            write(graded.join(snap(name)), "yours\n");
-        }
-        // a accepted (the .snap now holds the graded body), b rejected (the
-        // official body stays), c not reviewed yet.
+        // a accepted (the .snap now holds the captured body), b rejected
+        // (the official body stays), c not reviewed yet.
         write(review.join(official_of(&snap("a"))), "yours\n");
         write(review.join(official_of(&snap("b"))), "official\n");
         write(review.join(official_of(&snap("c"))), "official\n");
         write(review.join(snap("c")), "yours\n");
-        let got = verdicts(&review, &graded, &[snap("a"), snap("b"), snap("c")]).unwrap();
+        let captured = vec!["yours\n".to_owned(); 3];
+        let got = verdicts(&review, &[snap("a"), snap("b"), snap("c")], &captured).unwrap();
         let words: Vec<&str> = got.iter().map(|v| v.verdict).collect();
         assert_eq!(words, ["accepted", "rejected", "not reviewed"]);
         assert_eq!(got[0].snapshot, "t/snapshots/a.snap");
+        let _ = fs::remove_dir_all(&dir);
+    }
+}
+
+/// The review's attack, planted: a test that writes the official body as
+/// its pending snapshot and panics with insta's words, then a tutor who
+/// rejects what is shown. Before the review acted on the grader's record,
+/// the equal bodies read as "accepted" and the reason's words named the
+/// snapshot: 0 points became full marks.
+#[cfg(test)]
+mod planted {
+    use super::*;
+    use crate::grade::report::TestStatus;
+    use crate::grade::report::tests::{report_of, test};
+    use crate::topics::{TaskSheet, Topic};
+
+    #[test]
+    fn a_pending_snapshot_equal_to_the_official_one_and_a_reject_score_nothing() {
+        let dir = std::env::temp_dir().join(format!("xtask-review-plant-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let (course, graded) = (dir.join("course"), dir.join("graded"));
+        let snapshot = "exercises/01-x/tests/snapshots/t__octants.snap";
+        let official = "---\nsource: tests/t.rs\nexpression: sheet\n---\n#..\n.#.\n";
+        crate::files::write_file(
+            &course.join("exercises/01-x/tests/t.rs"),
+            "#[test]\nfn octants() { testkit::insta::assert_snapshot!(\"octants\", sheet); }\n",
+        )
+        .unwrap();
+        crate::files::write_file(&course.join(snapshot), official).unwrap();
+        // What the student's test left: the official body as its pending
+        // snapshot, and insta's words as its reason.
+        crate::files::write_file(
+            &graded
+                .join(grade::PENDING_SNAPSHOTS)
+                .join(format!("{snapshot}.new")),
+            official,
+        )
+        .unwrap();
+        let mut failed = test("octants", TestStatus::Failed);
+        failed.reason = Some(format!(
+            "snapshot 'octants' does not match {snapshot} (yours is the .snap.new at the same path under the report's snapshots/)"
+        ));
+        let mut report = report_of(4.0, vec![failed]);
+        let topic = Topic {
+            name: "01-x".to_owned(),
+            package: "x".to_owned(),
+            dir: course.join("exercises/01-x"),
+            sheet: TaskSheet::parse("[[tasks]]\nid = \"t\"\ntitle = \"T\"\npoints = 4\n").unwrap(),
+        };
+        grade::reviewed::record_mismatches(&graded, &topic, &mut report.topics[0].tasks);
+        assert!(
+            report.topics[0].tasks[0].tests[0]
+                .snapshot_mismatches
+                .is_empty(),
+            "an equal body was recorded as a mismatch"
+        );
+        fs::write(
+            graded.join("report.json"),
+            serde_json::to_string(&report).unwrap(),
+        )
+        .unwrap();
+        // Nothing to review: cargo-insta is not even needed.
+        assert!(Review::prepare(&course, &graded).unwrap().is_none());
+        // And whatever verdicts a review file names, the test stays failed.
+        assert_eq!(
+            grade::reviewed::apply(&mut report, &[snapshot.to_owned()]),
+            0
+        );
+        assert_eq!(report.score, 0.0, "a reject gave points");
         let _ = fs::remove_dir_all(&dir);
     }
 }

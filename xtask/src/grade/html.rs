@@ -108,6 +108,18 @@ pub fn page(report: &Report) -> String {
             escape(&integrity.summary())
         );
     }
+    if !report.left_out.is_empty() {
+        let items: String = report
+            .left_out
+            .iter()
+            .map(|line| format!("<li><code>{}</code></li>", escape(line)))
+            .collect();
+        let _ = writeln!(
+            html,
+            "<p class=\"error\"><strong>Left out of this report</strong>: what the tests left in it that is no plain file, or past the {} it keeps, was removed:</p>\n<ul>{items}</ul>",
+            crate::files::size(crate::files::KEPT_BUDGET)
+        );
+    }
     let reviewed: Vec<String> = report
         .topics
         .iter()

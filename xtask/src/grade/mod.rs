@@ -99,6 +99,9 @@ pub struct GradeOptions {
     /// submission without their folders): neither built nor run, each of
     /// their tasks an error that says so, scoring 0.
     pub absent: Vec<String>,
+    /// What containment student code needs before it runs: the grade of
+    /// record fails closed (see [`crate::sandbox::Policy`]).
+    pub sandbox: crate::sandbox::Policy,
 }
 
 impl GradeOptions {
@@ -119,6 +122,7 @@ impl GradeOptions {
             permits: None,
             progress: true,
             absent: Vec::new(),
+            sandbox: crate::sandbox::Policy::BestEffort,
         }
     }
 }
@@ -213,15 +217,15 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         crate::setup::ensure_vulkan();
     }
     let spinner = |message: String| spinner(message, options.progress);
+    // (What an earlier grade's tests left may be anything: removed by the
+    // grader's bounded removal, never `fs::remove_dir_all`.)
     for stale in [
         out.join(PENDING_SNAPSHOTS),
         out.join("scratch"),
         out.join("build"),
     ] {
-        if stale.exists() {
-            fs::remove_dir_all(&stale)
-                .with_context(|| format!("cannot clear {}", stale.display()))?;
-        }
+        crate::files::remove_tree(&stale)
+            .with_context(|| format!("cannot clear {}", stale.display()))?;
     }
 
     // Build every topic first: cargo serialises builds anyway. All at
@@ -264,10 +268,8 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             out.join("images").join(&topic.name),
             out.join("logs").join(&topic.name),
         ] {
-            if stale.exists() {
-                fs::remove_dir_all(&stale)
-                    .with_context(|| format!("cannot clear {}", stale.display()))?;
-            }
+            crate::files::remove_tree(&stale)
+                .with_context(|| format!("cannot clear {}", stale.display()))?;
         }
         if options.absent.contains(&topic.name) {
             plans.push(plan::absent(topic));
@@ -337,9 +339,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
 /// Hard links `binaries` into `dir` (emptied first): cargo replaces an
 /// executable it rebuilds with a new file, so the link keeps this build's.
 fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary>> {
-    if dir.exists() {
-        fs::remove_dir_all(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
-    }
+    crate::files::remove_tree(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
     binaries
         .into_iter()
         .map(|binary| {
@@ -376,7 +376,7 @@ impl Prepared {
         let keep = self.options.keep_binaries.clone();
         let report = self.run();
         if let Some(keep) = keep {
-            let _ = fs::remove_dir_all(keep);
+            let _ = crate::files::remove_tree(&keep);
         }
         report
     }
@@ -419,13 +419,28 @@ impl Prepared {
             *next += 1;
         }
         jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
+        // What the tests write into the report folder is kept within one
+        // budget for the whole grade, swept after each test (see
+        // `files::Keeper`).
+        let kept = pool::Kept {
+            keeper: std::sync::Mutex::new(crate::files::Keeper::new(
+                out,
+                crate::files::KEPT_BUDGET,
+            )),
+            pending: out.join(PENDING_SNAPSHOTS),
+        };
         let results = pool::run_all(
             &plans,
             &jobs,
             options.jobs.max(1),
             options.permits.as_deref(),
             options.progress,
+            &kept,
         )?;
+        let mut keeper = kept
+            .keeper
+            .into_inner()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
 
         let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
         for (&(p, t), result) in jobs.iter().zip(results) {
@@ -457,6 +472,16 @@ impl Prepared {
             &viewer,
         );
         spinner.finish_and_clear();
+        // The builds' logs (the compiler's messages, which quote student
+        // code) and what the listings of the tests and the viewer printed
+        // into scratch, up to the output limit each, count to the same
+        // budget.
+        for folder in [out.join("build"), out.join("scratch")] {
+            for log in crate::files::listing(&folder) {
+                keeper.keep_log(&folder.join(log));
+            }
+        }
+        let left_out = keeper.left_out();
         let phases = report::Phases {
             build_s: report::round2(build_s),
             tests_s: report::round2(tests_s),
@@ -483,6 +508,7 @@ impl Prepared {
             containment: crate::sandbox::Jail::get().containment(),
             topics,
             pipeline,
+            left_out,
         };
         Ok(report)
     }
@@ -515,6 +541,14 @@ pub fn print_summary(report: &Report, out: &Path, details: bool) {
         "{}",
         table::render(report, out, table::Style::detect(), details)
     );
+}
+
+/// Text of many lines for the terminal, each line escaped as the grader
+/// escapes every text from a submission (see `table::shown`), the later
+/// ones indented under the first.
+#[must_use]
+pub fn escaped_lines(text: &str) -> String {
+    table::continued(text, "  ")
 }
 
 /// One screen for `cargo xtask watch`: the table and the first failing

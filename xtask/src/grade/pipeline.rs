@@ -199,7 +199,7 @@ pub fn build_viewer(builder: &Builder, graded: &[&str], compiled: &[&str]) -> Vi
 /// Draws the pictures with the viewer built by [`build_viewer`].
 pub fn draw_all(plan: &Plan<'_>, viewer: &Viewer) -> Vec<PipelinePicture> {
     let dir = plan.out.join("pipeline");
-    let _ = fs::remove_dir_all(&dir);
+    let _ = crate::files::remove_tree(&dir);
     let scenes: Vec<&Scene> = SCENES
         .iter()
         .filter(|scene| scene.needs.met(plan.graded))
@@ -311,7 +311,7 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     };
     let logs = plan.out.join("scratch").join("pipeline");
     let scratch = logs.join(scene.file).with_extension("tmp");
-    let _ = fs::remove_dir_all(&scratch);
+    let _ = crate::files::remove_tree(&scratch);
     let stdout = logs.join(scene.file).with_extension("out");
     let stderr = logs.join(scene.file).with_extension("err");
     let mut args: Vec<OsString> = scene.args.iter().map(OsString::from).collect();
@@ -334,7 +334,7 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     };
     let ended = Jail::get().run(&job);
     let picture = crate::files::read_plain(&scratch, Path::new(scene.file));
-    let _ = fs::remove_dir_all(&scratch);
+    let _ = crate::files::remove_tree(&scratch);
     let ended = match ended {
         Ok(ended) => ended,
         Err(error) => {

@@ -3,6 +3,7 @@
 //! ([`Permits`]).
 
 use std::collections::HashSet;
+use std::path::PathBuf;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
@@ -10,8 +11,9 @@ use std::time::Duration;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::plan::Plan;
+use super::plan::{Plan, PlannedTest};
 use super::run::Finished;
+use crate::files::Keeper;
 
 /// A counting semaphore: the tests that may run at once, shared by the
 /// submissions of a class graded side by side.
@@ -52,15 +54,42 @@ impl Drop for PermitGuard<'_> {
     }
 }
 
+/// What a grade keeps of what its tests write into the report folder:
+/// each test's pictures and log, and the pending snapshots all tests
+/// share, swept after every test (see [`Keeper`]).
+pub(super) struct Kept {
+    /// The grade's one keeper, shared by the workers.
+    pub(super) keeper: Mutex<Keeper>,
+    /// The folder of pending snapshots, which every test may write.
+    pub(super) pending: PathBuf,
+}
+
+impl Kept {
+    /// Sweeps what the test `test` (just ended) could write.
+    fn sweep_after(&self, test: &PlannedTest) {
+        let mut keeper = self
+            .keeper
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        keeper.sweep(&test.images_dir);
+        keeper.sweep(&self.pending);
+        if let Some(command) = &test.command {
+            keeper.keep_log(&command.log);
+        }
+    }
+}
+
 /// Runs the given tests `threads` at a time (and, with `permits`, only
 /// while one is free), with a progress bar on stderr (hidden when stderr
-/// is not a terminal or `progress` is off).
+/// is not a terminal or `progress` is off); after each, `kept` sweeps
+/// what it wrote into the report folder.
 pub(super) fn run_all(
     plans: &[Plan],
     jobs: &[(usize, usize)],
     threads: usize,
     permits: Option<&Permits>,
     progress: bool,
+    kept: &Kept,
 ) -> Result<Vec<Finished>> {
     crate::sandbox::stop_all_on_interrupt();
     let bar = if progress {
@@ -91,7 +120,12 @@ pub(super) fn run_all(
                     };
                     let plan = &plans[p];
                     let test = &plan.tests[t];
-                    bar.set_message(format!("{} {}", plan.topic.name, test.name));
+                    // (A test's name is what its program listed: escaped.)
+                    bar.set_message(format!(
+                        "{} {}",
+                        plan.topic.name,
+                        super::table::shown(&test.name)
+                    ));
                     let command = test.command.as_ref().expect("only runnable tests are jobs");
                     let key = (p, test.task);
                     let skip = timed_out.lock().expect("no worker panics").contains(&key);
@@ -101,6 +135,7 @@ pub(super) fn run_all(
                         let _permit = permits.map(Permits::take);
                         command.run()
                     };
+                    kept.sweep_after(test);
                     if result.as_ref().is_ok_and(|f| f.exit.timed_out) {
                         timed_out.lock().expect("no worker panics").insert(key);
                     }

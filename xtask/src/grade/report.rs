@@ -7,7 +7,8 @@
 //!     TaskReport { id, title, points, bonus, score, status, error,
 //!                  passed, failed, ignored, tests: [
 //!       TestReport { name, status, reason, panic_location, minimal_input,
-//!                    raster_diff, snapshot_diff, duration_s, exit, output, log, images_dir, images }
+//!                    raster_diff, snapshot_diff, reviewed, snapshot_mismatches,
+//!                    duration_s, exit, output, log, images_dir, images }
 //! ]}]}]}
 //! ```
 //!
@@ -74,6 +75,12 @@ pub struct Report {
     /// empty when no topic of the viewer was graded.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub pipeline: Vec<super::pipeline::PipelinePicture>,
+    /// What the tests left in the report folder that it does not keep, one
+    /// line each with why: links and other entries that are no plain file,
+    /// folders nested too deep, files past the grade's budget (see
+    /// `files::Keeper`). Removed before the report was written.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub left_out: Vec<String>,
 }
 
 impl Report {
@@ -227,6 +234,11 @@ pub struct TestReport {
     /// test failed only on it, and passes by that verdict.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub reviewed: Option<String>,
+    /// The official snapshots this failed test was found to differ from,
+    /// as the grader recorded them after the run (see `grade::reviewed`):
+    /// the only thing a tutor's review acts on, never the test's reason.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub snapshot_mismatches: Vec<SnapshotMismatch>,
     /// Wall-clock seconds.
     pub duration_s: f64,
     /// How the process ended.
@@ -239,6 +251,19 @@ pub struct TestReport {
     pub images_dir: Option<PathBuf>,
     /// Files the test wrote there (PNGs), relative to `images_dir`.
     pub images: Vec<PathBuf>,
+}
+
+/// An official snapshot a failed test compared its result with and found
+/// different, as the grader recorded it (see `grade::reviewed`).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SnapshotMismatch {
+    /// The official snapshot's path in the course
+    /// (`exercises/01-lines/tests/snapshots/dda__lines_in_all_octants.snap`).
+    pub snapshot: String,
+    /// The test's result as the grader captured it after the run: the body
+    /// of its pending snapshot (without insta's header), which differs
+    /// from the official body. What a tutor accepts or rejects.
+    pub captured: String,
 }
 
 impl TestReport {
@@ -373,6 +398,7 @@ pub(crate) mod tests {
             raster_diff: None,
             snapshot_diff: None,
             reviewed: None,
+            snapshot_mismatches: Vec::new(),
             duration_s: 0.0,
             exit: Exit::default(),
             output: None,
@@ -422,6 +448,7 @@ pub(crate) mod tests {
             containment: Containment::default(),
             topics: vec![topic],
             pipeline: Vec::new(),
+            left_out: Vec::new(),
         }
     }
 

@@ -73,6 +73,9 @@ pub fn gradescope(report: &Report) -> Gradescope {
     if !report.sandboxed {
         let _ = write!(output, "\nunsandboxed: the tests ran without bubblewrap");
     }
+    if let Some(note) = report.containment.on_purpose_note(report.sandboxed) {
+        let _ = write!(output, "\n{note}");
+    }
     for topic in &report.topics {
         for error in &topic.errors {
             let _ = write!(output, "\n{}: {error}", topic.name);

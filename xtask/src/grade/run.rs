@@ -158,7 +158,7 @@ impl TestCommand {
         let record_dir = scratch.with_extension("record");
         let transcript = record_dir.join("transcript");
         for dir in [scratch, &record_dir] {
-            remove_tree(dir);
+            let _ = crate::files::remove_tree(dir);
             fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
         }
         let mut env: Vec<(OsString, OsString)> = self
@@ -192,12 +192,12 @@ impl TestCommand {
             stderr: None,
         };
         let recorded = Jail::get().run(&job)?;
-        remove_tree(scratch);
+        let _ = crate::files::remove_tree(scratch);
         let recorded_output = read_tail(&recorded_log)?;
         // Stopped by a limit or killed by a signal (a stack overflow, an
         // abort): nothing to replay, and its own output says why.
         if recorded.exit.stopped() || recorded.exit.signal.is_some() {
-            remove_tree(&record_dir);
+            let _ = crate::files::remove_tree(&record_dir);
             let _ = fs::rename(&recorded_log, &self.log);
             return Ok(Finished {
                 exit: recorded.exit,
@@ -208,7 +208,7 @@ impl TestCommand {
             });
         }
         let replayed = self.run_with_token(replay, Some(&transcript));
-        remove_tree(&record_dir);
+        let _ = crate::files::remove_tree(&record_dir);
         self.move_replayed_snapshots();
         let mut replayed = replayed?;
         replayed.duration += recorded.duration;
@@ -337,7 +337,7 @@ impl TestCommand {
         // that never started its body leaves behind): what a test wrote
         // there is not kept, so a class leaves no gigabytes behind.
         if let Some(scratch) = self.writable.first() {
-            remove_tree(scratch);
+            let _ = crate::files::remove_tree(scratch);
         }
         let _ = fs::remove_file(&self.verdict_file);
         let mut output = read_tail(&self.log)?;
@@ -369,11 +369,6 @@ impl TestCommand {
             evidence: None,
         })
     }
-}
-
-/// Removes a folder a test wrote, if it is there.
-fn remove_tree(dir: &Path) {
-    let _ = fs::remove_dir_all(dir);
 }
 
 /// 128 random bits from the operating system, in hex: a token no test can

@@ -110,19 +110,62 @@ fn indented(text: &str, indent: &str) -> String {
     text.lines().map(line).collect()
 }
 
-/// Text from a test or the compiler (which quotes student code) as it may
-/// reach a terminal: every control character but tab and line break
-/// written as its escape (`\u{1b}`), so that student code cannot move the
-/// cursor, clear the screen or recolour the table.
+/// Text from a submission as it may reach a terminal, on one line: every
+/// control character, line breaks and tabs too, and every mark that
+/// reorders or breaks the text after it (bidirectional overrides, Unicode's
+/// line and paragraph separators) written as a visible escape (`\n`,
+/// `\r`, `\t`, `\u{1b}`, `\u{202e}`).
+///
+/// The grader's one escaping function for the terminal. A file name, a
+/// test's name, a panic message or a line of compiler output (which quotes
+/// student code) is the submission's text: written raw, a line break in it
+/// prints a line the grader never wrote (`total 20.0 / 20 ok` under the
+/// real total), and an escape sequence moves the cursor, clears the screen
+/// or recolours the table. Text of many lines is split at its line breaks
+/// first and each line passed through here ([`indented`], [`continued`]).
 #[must_use]
 pub fn shown(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
-        if c.is_control() && c != '\n' && c != '\t' {
-            out.push_str(&c.escape_unicode().to_string());
-        } else {
-            out.push(c);
+        match c {
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if c.is_control() || reorders(c) => {
+                out.extend(c.escape_unicode());
+            }
+            c => out.push(c),
         }
+    }
+    out
+}
+
+/// Whether `c` is an invisible mark that reorders the text around it or
+/// breaks its line (the "Trojan Source" characters, CVE-2021-42574, and
+/// U+2028/U+2029, which some terminals and editors break lines at).
+fn reorders(c: char) -> bool {
+    matches!(
+        c,
+        '\u{061c}'
+            | '\u{200e}'
+            | '\u{200f}'
+            | '\u{2028}'
+            | '\u{2029}'
+            | '\u{202a}'..='\u{202e}'
+            | '\u{2066}'..='\u{2069}'
+    )
+}
+
+/// Text of many lines after a label: its first line as it is, each later
+/// one on a line of its own indented by `indent`; every line [`shown`].
+#[must_use]
+pub fn continued(text: &str, indent: &str) -> String {
+    let mut lines = text.lines();
+    let mut out = shown(lines.next().unwrap_or_default());
+    for line in lines {
+        out.push('\n');
+        out.push_str(indent);
+        out.push_str(&shown(line));
     }
     out
 }
@@ -151,12 +194,12 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
             let bonus = if task.bonus { " (bonus)" } else { "" };
             rows.push([
                 if i == 0 {
-                    topic.name.clone()
+                    shown(&topic.name)
                 } else {
                     String::new()
                 },
-                task.id.clone(),
-                cut(&format!("{}{bonus}", task.title), TITLE_WIDTH),
+                shown(&task.id),
+                cut(&shown(&format!("{}{bonus}", task.title)), TITLE_WIDTH),
                 points_text(task.score, task.points),
                 status_text(task).to_owned(),
             ]);
@@ -219,7 +262,7 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
                 "{}",
                 style.bad(&format!(
                     "{}: compile error, so all its tasks score 0",
-                    topic.name
+                    shown(&topic.name)
                 ))
             );
             let lines: Vec<&str> = errors.lines().collect();
@@ -241,7 +284,11 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
             let _ = writeln!(
                 text,
                 "{}",
-                style.warn(&format!("{}: {}", topic.name, shown(error)))
+                style.warn(&format!(
+                    "{}: {}",
+                    shown(&topic.name),
+                    continued(error, "  ")
+                ))
             );
         }
         for task in &topic.tasks {
@@ -251,7 +298,12 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
                 let _ = writeln!(
                     text,
                     "{}",
-                    style.warn(&format!("{} / {}: {}", topic.name, task.id, shown(error)))
+                    style.warn(&format!(
+                        "{} / {}: {}",
+                        shown(&topic.name),
+                        shown(&task.id),
+                        continued(error, "  ")
+                    ))
                 );
             }
             let wanted = match details {
@@ -303,13 +355,32 @@ pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> St
             style.warn(&format!("FLAGGED: {}", shown(&integrity.summary())))
         );
     }
+    if !report.left_out.is_empty() {
+        let _ = writeln!(text);
+        let _ = writeln!(
+            text,
+            "{}",
+            style.warn(&format!(
+                "left out of the report ({} entries the tests left that are no plain file, or past the {} it keeps; report.html names them all): {}",
+                report.left_out.len(),
+                crate::files::size(crate::files::KEPT_BUDGET),
+                report
+                    .left_out
+                    .iter()
+                    .take(3)
+                    .map(|line| shown(line))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ))
+        );
+    }
     let _ = writeln!(text);
     let _ = writeln!(
         text,
         "{}",
         style.dim(&format!(
             "report: {} (pictures side by side; also report.json, results.json, junit.xml)",
-            out.join("report.html").display()
+            shown(&out.join("report.html").display().to_string())
         ))
     );
     text
@@ -325,8 +396,10 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
         text,
         "{}",
         style.bad(&format!(
-            "{topic} / {}: {} of {counted} tests failed",
-            task.id, task.failed
+            "{} / {}: {} of {counted} tests failed",
+            shown(topic),
+            shown(&task.id),
+            task.failed
         ))
     );
     let _ = writeln!(text, "  test:    {}", style.bold(&shown(&test.name)));
@@ -357,21 +430,26 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
         text.push_str(&indented(diff, "    "));
     }
     if let Some(dir) = &test.images_dir {
-        let _ = writeln!(text, "  images:  {}", out.join(dir).display());
+        let _ = writeln!(
+            text,
+            "  images:  {}",
+            shown(&out.join(dir).display().to_string())
+        );
     }
     if !task.hints.is_empty() {
         let _ = writeln!(
             text,
-            "  hint:    cargo xtask hint {topic}/{}  ({} hints, one more each time)",
-            task.id,
+            "  hint:    cargo xtask hint {}/{}  ({} hints, one more each time)",
+            shown(topic),
+            shown(&task.id),
             task.hints.len()
         );
     }
-    let others: Vec<&str> = task
+    let others: Vec<String> = task
         .tests
         .iter()
         .filter(|t| t.status == TestStatus::Failed && t.name != test.name)
-        .map(|t| t.name.as_str())
+        .map(|t| shown(&t.name))
         .collect();
     if !others.is_empty() {
         let names = if others.len() <= 3 {
@@ -393,10 +471,59 @@ fn failure(text: &mut String, out: &Path, topic: &str, task: &TaskReport, style:
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::grade::report::tests::{report_of, test};
+
+    /// What a hostile submission names can hold: a line break, a fake
+    /// table line after it, and a terminal's "clear the screen".
+    const PLANTED: &str = "x\ntotal 20.0 / 20 ok\r\u{1b}[2J\u{202e}";
+
+    /// The table of a report whose every text from the submission (a
+    /// grading file's name, a test's name, its reason, its panic place, a
+    /// topic's error, a compiler message, what was left out, the report's
+    /// folder) holds [`PLANTED`]: no line of its own appears, and no
+    /// control character reaches the terminal.
+    #[test]
+    fn text_from_a_submission_prints_no_line_of_its_own() {
+        let mut failed = test(&format!("t::{PLANTED}"), TestStatus::Failed);
+        failed.reason = Some(format!("assertion failed: {PLANTED}"));
+        failed.panic_location = Some(PLANTED.to_owned());
+        failed.images_dir = Some(std::path::PathBuf::from(PLANTED));
+        let mut report = report_of(20.0, vec![failed, test(PLANTED, TestStatus::Failed)]);
+        report.integrity = Some(crate::grade::submission::Integrity {
+            changed: vec![PLANTED.into()],
+            not_graded: vec![PLANTED.into()],
+            ..Default::default()
+        });
+        report.topics[0]
+            .errors
+            .push(format!("cannot list {PLANTED}"));
+        report.topics[0].compile_error = Some(format!("error: {PLANTED}\n  --> {PLANTED}"));
+        report
+            .left_out
+            .push(format!("images/{PLANTED}: a symbolic link"));
+        let text = render(
+            &report,
+            std::path::Path::new(PLANTED),
+            Style { colour: false },
+            Details::EveryTask,
+        );
+        // (Text of many lines, a compiler's message or a reason, keeps its
+        // lines, each indented under its label: none starts a line.)
+        let totals: Vec<&str> = text.lines().filter(|l| l.starts_with("total")).collect();
+        assert_eq!(totals, ["total           0.0 / 20"], "{text}");
+        assert!(!text.contains(['\r', '\u{1b}', '\u{202e}']), "{text}");
+        assert!(
+            text.contains("x\\ntotal 20.0 / 20 ok\\r\\u{1b}[2J"),
+            "{text}"
+        );
+    }
 
     #[test]
     fn control_characters_reach_the_terminal_escaped() {
-        assert_eq!(shown("a\u{1b}[2Jb\tc\nd\u{7}"), "a\\u{1b}[2Jb\tc\nd\\u{7}");
+        assert_eq!(
+            shown("a\u{1b}[2Jb\tc\nd\u{7}"),
+            "a\\u{1b}[2Jb\\tc\\nd\\u{7}"
+        );
         assert_eq!(indented("x\u{1b}[H", "  "), "  x\\u{1b}[H\n");
     }
 }

@@ -61,6 +61,8 @@ pub(super) fn topic_report(
         }
         task.tests.push(report);
     }
+    // What a tutor's review may act on, recorded by the grader itself.
+    super::reviewed::record_mismatches(out, topic, &mut tasks);
     for task in &mut tasks {
         let counted = task.passed + task.failed;
         if task.status == TaskStatus::Ok && counted == 0 {
@@ -99,6 +101,7 @@ fn ignored_test(name: String) -> TestReport {
         raster_diff: None,
         snapshot_diff: None,
         reviewed: None,
+        snapshot_mismatches: Vec::new(),
         duration_s: 0.0,
         exit: Exit::default(),
         output: None,
@@ -132,6 +135,7 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         raster_diff: verdict.raster_diff,
         snapshot_diff: verdict.snapshot_diff,
         reviewed: None,
+        snapshot_mismatches: Vec::new(),
         duration_s: report::round2(run.duration.as_secs_f64()),
         exit: run.exit,
         output: (status == TestStatus::Failed).then(|| match &run.evidence {

@@ -1,7 +1,18 @@
 //! The command line of a job: the `sh` script that sets its limits and
 //! `exec`s bwrap, bwrap's binds (the system's folders, the toolchain, the
-//! course, the job's own folders), and running as nobody where the grader
-//! is root without a sandbox.
+//! course, the job's own folders), and running student code as `nobody`
+//! where the grader is root, in the sandbox or without one.
+//!
+//! **Never root inside.** bwrap started by root maps root to root in its
+//! user namespace, so a test would run as the host's uid 0: a way out of
+//! the sandbox would be a way to root. A user namespace mapping another
+//! uid inside to root outside (`--uid 65534`) only renames it — the
+//! kernel still checks files against uid 0. So for a grader that is root
+//! the test's sandbox has no user namespace at all (bwrap's privileges do
+//! its mounts), keeps `CAP_SETUID` and `CAP_SETGID` alone, and runs
+//! `setpriv` to become `nobody` for real before `exec`ing the test: from
+//! then on the process has no capability and cannot get one back
+//! (`no_new_privs`). Its writable folders are given to `nobody` first.
 
 use std::ffi::{OsStr, OsString};
 use std::fs;
@@ -48,23 +59,38 @@ impl Jail {
         if let Some(bwrap) = &self.bwrap {
             inner.push(bwrap.into());
             inner.extend(self.bwrap_args(job)?);
-            if self.seccomp.is_some() {
-                inner.extend(["--seccomp".into(), "3".into()]);
+            if let Some(seccomp) = &self.seccomp {
+                for (fd, _) in (SECCOMP_FD..).zip(seccomp.files()) {
+                    inner.extend(["--add-seccomp-fd".into(), fd.to_string().into()]);
+                }
             }
             inner.extend(["--chdir".into(), job.cwd.clone().into(), "--".into()]);
         }
-        if self.bwrap.is_none() && job.purpose == Purpose::Run && running_as_root() {
-            // Unsandboxed as root (Gradescope's container without
-            // namespaces): student code runs as nobody, never as root.
+        if as_nobody(job) {
+            // As root, in the sandbox or without one (Gradescope's
+            // container without namespaces): student code runs as nobody,
+            // never as root.
             for dir in &job.writable {
                 give_to_nobody(dir)?;
             }
+            // No supplementary group but, for a GPU topic, those that may
+            // open the GPU's device files (`render`, `video`).
+            let groups = if job.gpu { gpu_groups() } else { Vec::new() };
+            let groups = if groups.is_empty() {
+                "--clear-groups".to_owned()
+            } else {
+                let ids: Vec<String> = groups.iter().map(u32::to_string).collect();
+                format!("--groups={}", ids.join(","))
+            };
             inner.extend(
                 [
                     "setpriv",
                     &format!("--reuid={NOBODY}"),
                     &format!("--regid={NOBODY}"),
-                    "--clear-groups",
+                    &groups,
+                    // Nothing inheritable either: the process keeps no
+                    // capability of its own across the `exec`.
+                    "--inh-caps=-all",
                     "--",
                 ]
                 .map(OsString::from),
@@ -114,7 +140,9 @@ impl Jail {
         }
         script += "exec \"$@\"";
         if let (Some(seccomp), true) = (&self.seccomp, self.sandboxed()) {
-            script += &format!(" 3< {}", shell_quoted(seccomp));
+            for (fd, filter) in (SECCOMP_FD..).zip(seccomp.files()) {
+                script += &format!(" {fd}< {}", shell_quoted(filter));
+            }
         }
         script
     }
@@ -129,8 +157,11 @@ impl Jail {
             args.ro_try(&Path::new("/etc").join(file));
         }
         args.words(["--dev", "/dev"]);
-        // Shared memory is files too: a small tmpfs of its own.
-        args.words(["--size", SHM_BYTES, "--tmpfs", "/dev/shm"]);
+        // Shared memory is files too: a small tmpfs of its own, which
+        // everyone may write (as `/dev/shm` always is), nobody included.
+        args.words([
+            "--perms", "1777", "--size", SHM_BYTES, "--tmpfs", "/dev/shm",
+        ]);
         if job.gpu {
             for device in GPU_DEVICES {
                 args.dev_try(Path::new(device));
@@ -153,6 +184,7 @@ impl Jail {
         } else {
             1 << 30
         };
+        args.words(["--perms".to_owned(), "1777".to_owned()]);
         args.words(["--size".to_owned(), tmp_bytes.to_string()]);
         args.words(["--tmpfs", "/tmp"]);
         for entry in course_entries(&job.course)? {
@@ -173,20 +205,52 @@ impl Jail {
         // bound, so that `/tmp`, `/dev/shm` and the writable folders are
         // all a job can write.
         args.words(["--remount-ro", "/dev", "--remount-ro", "/"]);
-        args.words([
-            "--unshare-all",
-            "--die-with-parent",
-            "--new-session",
-            "--cap-drop",
-            "ALL",
-        ]);
+        if as_nobody(job) {
+            // Every namespace but the user's (see the module
+            // documentation), and of root's capabilities only the two
+            // that `setpriv` needs to become nobody and then drops.
+            args.words([
+                "--unshare-ipc",
+                "--unshare-pid",
+                "--unshare-net",
+                "--unshare-uts",
+                "--unshare-cgroup-try",
+                "--cap-drop",
+                "ALL",
+                "--cap-add",
+                "CAP_SETUID",
+                "--cap-add",
+                "CAP_SETGID",
+            ]);
+        } else {
+            args.words(["--unshare-all", "--cap-drop", "ALL"]);
+        }
+        args.words(["--die-with-parent", "--new-session"]);
         Ok(args.0)
     }
 }
 
-/// The user and group student code runs as where the grader is root and
-/// there is no sandbox: `nobody`, `nogroup`.
+/// The user and group student code runs as where the grader is root:
+/// `nobody`, `nogroup`.
 const NOBODY: u32 = 65534;
+
+/// The first file descriptor the seccomp filters are opened on for bwrap
+/// (`--add-seccomp-fd`): after stdin, stdout and stderr.
+const SECCOMP_FD: u32 = 3;
+
+/// Whether `job` runs as [`NOBODY`]: student code (a test, the viewer) of
+/// a grader that is root. A build stays the grader's: the compiler and
+/// cargo, which write the shared build folder.
+fn as_nobody(job: &Job) -> bool {
+    job.purpose == Purpose::Run && running_as_root()
+}
+
+/// Whether tests run as a user other than root (the grader's own, or
+/// [`NOBODY`]) — on Unix always; elsewhere as whoever runs the grader.
+#[must_use]
+pub(super) fn tests_run_unprivileged() -> bool {
+    cfg!(unix)
+}
 
 /// Whether the grader runs as root.
 #[cfg(unix)]
@@ -197,6 +261,37 @@ fn running_as_root() -> bool {
 #[cfg(not(unix))]
 fn running_as_root() -> bool {
     false
+}
+
+/// The groups that own the GPU's device files ([`GPU_DEVICES`] and what is
+/// in `/dev/dri`), root's excepted: a GPU topic's tests, run as
+/// [`NOBODY`], are in them, so that they may open a render node that only
+/// its group may (`crw-rw---- root render`), as the grader could.
+#[cfg(unix)]
+fn gpu_groups() -> Vec<u32> {
+    use std::os::unix::fs::MetadataExt as _;
+    let dri = fs::read_dir("/dev/dri")
+        .into_iter()
+        .flatten()
+        .flatten()
+        .map(|entry| entry.path());
+    let mut groups: Vec<u32> = GPU_DEVICES
+        .iter()
+        .map(PathBuf::from)
+        .chain(dri)
+        .filter_map(|path| fs::metadata(path).ok())
+        .filter(|meta| !meta.is_dir())
+        .map(|meta| meta.gid())
+        .filter(|&gid| gid != 0)
+        .collect();
+    groups.sort_unstable();
+    groups.dedup();
+    groups
+}
+
+#[cfg(not(unix))]
+fn gpu_groups() -> Vec<u32> {
+    Vec::new()
 }
 
 /// Makes `dir` (created if missing) and what is in it [`NOBODY`]'s, so that
@@ -257,7 +352,11 @@ const GPU_DEVICES: [&str; 5] = [
 
 /// bwrap's arguments, built up.
 #[derive(Default)]
-struct Args(Vec<OsString>);
+struct Args(Vec<OsString>, std::collections::BTreeSet<PathBuf>);
+
+/// The mode of the folders bwrap makes on the way to a bound path: bwrap
+/// makes them `0700`, root's, which `nobody` could not pass through.
+const PATH_FOLDER_MODE: &str = "0755";
 
 impl Args {
     fn words<S: AsRef<OsStr>>(&mut self, words: impl IntoIterator<Item = S>) {
@@ -266,6 +365,24 @@ impl Args {
     }
 
     fn bind(&mut self, option: &str, path: &Path) {
+        // The folders above it, outermost first, each made once (a
+        // folder that is there already, bound or a tmpfs, is left as it is).
+        let mut above: Vec<&Path> = path
+            .ancestors()
+            .skip(1)
+            .filter(|dir| dir.parent().is_some())
+            .collect();
+        above.reverse();
+        for dir in above {
+            if self.1.insert(dir.to_path_buf()) {
+                self.words([
+                    OsStr::new("--perms"),
+                    OsStr::new(PATH_FOLDER_MODE),
+                    OsStr::new("--dir"),
+                    dir.as_os_str(),
+                ]);
+            }
+        }
         self.words([OsStr::new(option), path.as_os_str(), path.as_os_str()]);
     }
 

@@ -105,9 +105,35 @@ impl Environment {
         "PROCESSOR_ARCHITECTURE",
     ];
 
+    /// The test tools' settings, set in every job so that no file can
+    /// set them: insta reads each of these from the variable when it is
+    /// set and non-empty, and only otherwise from an `insta.yaml` (or
+    /// `.config/insta.yaml`, `.insta.yaml`) in the workspace root, so a
+    /// configuration file anywhere (a submission's, one in a folder above
+    /// the course or the stage) is never consulted (insta 1.49, `env.rs`,
+    /// `ToolConfig::from_workspace`). Snapshots fail (no forced pass), are
+    /// compared by their contents (metadata aside), show insta's diff (the
+    /// grader reads it into the report) and are never written in place; a
+    /// test's plan sets `INSTA_UPDATE=new` and `INSTA_PENDING_DIR`, so a
+    /// failed one is left as `.snap.new` in the report folder, and
+    /// `INSTA_WORKSPACE_ROOT` to the graded course. proptest reads only
+    /// `PROPTEST_*` variables, none passed on but the grader's
+    /// `PROPTEST_RNG_SEED`; no failure is persisted (no
+    /// `proptest-regressions` file read or written). Every other variable
+    /// of theirs (`INSTA_DIFF_TOOL`, `INSTA_GLOB_FILTER`, `PROPTEST_CASES`,
+    /// …) is unset: the environment is an allowlist.
+    pub const TOOL_SETTINGS: &[(&str, &str)] = &[
+        ("INSTA_FORCE_PASS", "0"),
+        ("INSTA_REQUIRE_FULL_MATCH", "0"),
+        ("INSTA_OUTPUT", "diff"),
+        ("INSTA_UPDATE", "no"),
+        ("INSTA_GLOB_FAIL_FAST", "0"),
+        ("PROPTEST_DISABLE_FAILURE_PERSISTENCE", "1"),
+    ];
+
     /// The variables every job gets: the grader's [`Self::PASSED_ON`] ones,
-    /// a `PATH` of the system's programs, a `HOME` and `TMPDIR` of its own
-    /// (`home`), a UTF-8 locale.
+    /// the tools' [`Self::TOOL_SETTINGS`], a `PATH` of the system's
+    /// programs, a `HOME` and `TMPDIR` of its own (`home`), a UTF-8 locale.
     #[must_use]
     pub fn base(home: &Path, extra_path: Option<&Path>) -> Vec<(OsString, OsString)> {
         let mut env: Vec<(OsString, OsString)> = std::env::vars_os()
@@ -141,6 +167,11 @@ impl Environment {
         }
         env.push(("TMPDIR".into(), home.into()));
         env.push(("LANG".into(), "C.UTF-8".into()));
+        env.extend(
+            Self::TOOL_SETTINGS
+                .iter()
+                .map(|(name, value)| (OsString::from(name), OsString::from(value))),
+        );
         env
     }
 }
@@ -161,6 +192,7 @@ mod tests {
         for name in &names {
             assert!(
                 ["PATH", "HOME", "TMPDIR", "LANG"].contains(&name.as_str())
+                    || Environment::TOOL_SETTINGS.iter().any(|(n, _)| n == name)
                     || Environment::PASSED_ON.contains(&name.as_str())
                     || Environment::PASSED_ON_PREFIXES
                         .iter()
@@ -171,5 +203,28 @@ mod tests {
         }
         let home = env.iter().find(|(n, _)| n == "TMPDIR").unwrap();
         assert_eq!(home.1, "/scratch");
+    }
+
+    #[test]
+    fn every_insta_setting_a_file_could_make_is_set_by_the_grader() {
+        // insta 1.49 resolves these five from the environment first and
+        // from `insta.yaml` only when the variable is unset or empty.
+        let env = Environment::base(Path::new("/scratch"), None);
+        for name in [
+            "INSTA_FORCE_PASS",
+            "INSTA_REQUIRE_FULL_MATCH",
+            "INSTA_OUTPUT",
+            "INSTA_UPDATE",
+            "INSTA_GLOB_FAIL_FAST",
+            "PROPTEST_DISABLE_FAILURE_PERSISTENCE",
+        ] {
+            let value = env.iter().rev().find(|(n, _)| n == name).map(|(_, v)| v);
+            assert!(
+                value.is_some_and(|v| !v.is_empty()),
+                "{name} is left to a configuration file"
+            );
+        }
+        let force = env.iter().rev().find(|(n, _)| n == "INSTA_FORCE_PASS");
+        assert_eq!(force.map(|(_, v)| v.to_str()), Some(Some("0")));
     }
 }

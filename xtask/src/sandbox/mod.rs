@@ -19,21 +19,44 @@
 //! Not `/`, not `$HOME`, not the course checkout's history or solutions,
 //! not another checkout. The environment is an allowlist too
 //! ([`Environment`]): nothing of the grader's reaches student code unless
-//! named here. Every process runs under a seccomp filter (built with
-//! [`seccompiler`]) that denies the system calls with which one process
-//! reads or changes another's memory (`ptrace`, `process_vm_readv`,
-//! `process_vm_writev` and their kin): the test that holds a verdict
-//! token cannot be read by the processes it starts. The sandbox has its
-//! own process, network, IPC and user namespaces, no capabilities and no
-//! terminal.
+//! named here. The sandbox has its own process, network, IPC and UTS
+//! namespaces, no capabilities and no terminal.
+//!
+//! **Never root.** Where the grader is root, a test still runs as
+//! `nobody`: bwrap makes its namespaces with root's privileges and
+//! `setpriv` drops them before the test starts (see `command.rs` for why
+//! a user namespace's mapping would not do). Builds stay the grader's
+//! user: they are the compiler's processes, and write the shared build
+//! folder.
+//!
+//! **Denied system calls.** Every process runs under seccomp filters
+//! (built with [`seccompiler`], listed with a reason each in
+//! `platform.rs`, as Flatpak does for bwrap) that deny what no test needs:
+//! the calls with which one process reads or changes another's memory
+//! (`ptrace`, `process_vm_readv`, …: the test that holds a verdict token
+//! cannot be read by the processes it starts), making a user namespace,
+//! mounting, the kernel's keyrings, modules, `bpf`, `perf_event_open`,
+//! `userfaultfd`, `io_uring` and the machine's administration.
 //!
 //! **Limits.** Each process has the wall-clock limit, an address-space
 //! limit per process, a file-size limit, no core files; where the machine
-//! lets the grader make a memory and a pids cgroup (Linux, as root: CI,
-//! Gradescope), the memory of all its processes together and their count
-//! are limited as well. What the processes write into their writable
-//! folders is measured while they run and stops them past
-//! [`Limits::written_mib`]; `/tmp` is a tmpfs of that size.
+//! lets the grader make memory and pids cgroups — v1 or v2, as root or in
+//! a delegated subtree (`cgroup.rs`) — the memory of all its processes
+//! together and their count are limited as well, and the reports name the
+//! hierarchy ([`Containment`]). What the processes write into their
+//! writable folders is measured while they run and stops them past
+//! [`Limits::written_mib`]; `/tmp` is a tmpfs of that size. A build has
+//! 8 GiB ([`Limits::build`]): a `const` array past it stops rustc at
+//! once; an endless `const` is refused before it is built
+//! ([`const_eval`]).
+//!
+//! **The grade of record fails closed.** A student's own grade runs with
+//! what the machine has and says what was missing; `--submission`, a
+//! class and the Classroom workflow refuse to run student code unless
+//! bubblewrap, its seccomp filters and the cgroups can all be had
+//! ([`Policy`], [`enforce`]), or a tutor says `--unsandboxed-on-purpose`
+//! (Gradescope's container, see `gradescope.rs`), which every report then
+//! says.
 //!
 //! **Cleanup.** The process leads a process group of its own; when it ends
 //! or is stopped, the group, the sandbox's process namespace and the
@@ -43,8 +66,9 @@
 //!
 //! Where bubblewrap cannot run (macOS, Windows, a container that forbids
 //! namespaces) the same runner runs the process unsandboxed, with the
-//! scrubbed environment, the limits the platform has, and the process
-//! group killed at the end; every report then says `unsandboxed`.
+//! scrubbed environment, the limits the platform has, as `nobody` where
+//! the grader is root, and the process group killed at the end; every
+//! report then says `unsandboxed`.
 
 use std::collections::BTreeSet;
 use std::ffi::OsString;
@@ -61,10 +85,12 @@ use crate::grade::report::Exit;
 
 mod cgroup;
 mod command;
+pub mod const_eval;
 mod environment;
 mod platform;
 
-use cgroup::Cgroup;
+use cgroup::{Cgroup, Hierarchy};
+pub use cgroup::{CgroupVersion, delegate_script};
 pub use environment::{Environment, Toolchain};
 use platform::{contain, kill, kill_group, seccomp_filter, signal};
 
@@ -136,7 +162,9 @@ impl Limits {
     }
 
     /// The limits of a build of student code: `time`, 8 GiB of memory
-    /// (rustc on the whole course needs about 2), as many processes as a
+    /// (rustc on the whole course needs about 2; a `const` array past it
+    /// stops rustc at once with "tried to allocate more memory than
+    /// available to compiler"), as many processes as a
     /// parallel build starts, its build folder's growth unmeasured (it is
     /// the dependencies' too) and 64 MiB of compiler messages.
     #[must_use]
@@ -215,13 +243,102 @@ impl Ended {
 
 /// What held in a grading run beyond the sandbox itself.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
 pub struct Containment {
     /// Every sandboxed process ran under the seccomp filter (wherever the
     /// sandbox runs on x86-64 or AArch64).
     pub seccomp: bool,
     /// The memory and the processes of all of a test's processes together
-    /// were limited (a cgroup: Linux, as root).
+    /// were limited (a cgroup: Linux, as root or in a delegated subtree).
     pub aggregate_limits: bool,
+    /// The cgroup hierarchy those limits were set on (`v1` or `v2`);
+    /// `None` where they were not.
+    pub cgroup: Option<CgroupVersion>,
+    /// Tests ran as a user other than root: the grader's own where it is
+    /// not root, else `nobody` (see `command.rs`). Builds of a grader that
+    /// is root run as root, in the sandbox: the compiler's, not student
+    /// code's, processes.
+    pub unprivileged: bool,
+    /// A tutor chose to grade for the record with less than the sandbox,
+    /// its seccomp filter and its aggregate limits
+    /// (`--unsandboxed-on-purpose`): what did not hold is named by the
+    /// fields above.
+    pub on_purpose: bool,
+}
+
+impl Containment {
+    /// For a grade of record graded with less on purpose, the line every
+    /// report says it in: what did not hold (`sandboxed`: whether
+    /// bubblewrap ran); `None` for any other grade.
+    #[must_use]
+    pub fn on_purpose_note(&self, sandboxed: bool) -> Option<String> {
+        if !self.on_purpose {
+            return None;
+        }
+        let lacking: Vec<&str> = [
+            (!sandboxed, "bubblewrap"),
+            (!self.seccomp, "its seccomp filters"),
+            (!self.aggregate_limits, "cgroups"),
+        ]
+        .into_iter()
+        .filter_map(|(lacked, what)| lacked.then_some(what))
+        .collect();
+        Some(if lacking.is_empty() {
+            "graded with --unsandboxed-on-purpose; everything held all the same".to_owned()
+        } else {
+            format!(
+                "graded on purpose (--unsandboxed-on-purpose) without {}",
+                lacking.join(", ")
+            )
+        })
+    }
+}
+
+/// How a grading run treats containment it cannot fully have.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Policy {
+    /// A student's own grade: student code runs with whatever this machine
+    /// has, and the reports say what was missing. It is the student's own
+    /// code on the student's own machine.
+    #[default]
+    BestEffort,
+    /// The grade of record (`--submission`, a class, the Classroom
+    /// workflow): student code runs only inside bubblewrap, under the
+    /// seccomp filter and in cgroups, else none of it runs — someone
+    /// else's code, next to the tutor's files and tokens.
+    Required,
+    /// The grade of record with less, on purpose (`--unsandboxed-on-purpose`,
+    /// and Gradescope's container, which is a sandbox of its own): graded as
+    /// [`Policy::BestEffort`], and every report says so.
+    OnPurpose,
+}
+
+/// The policy of this run, set once by [`enforce`].
+static POLICY: OnceLock<Policy> = OnceLock::new();
+
+/// Makes `policy` this run's: for [`Policy::Required`], fails with what is
+/// missing and how to get it unless the sandbox, its seccomp filter and
+/// its aggregate limits can all be had here. Called before any student code
+/// runs; [`Jail::run`] refuses as well where the policy is not met.
+pub fn enforce(policy: Policy) -> Result<()> {
+    let policy = *POLICY.get_or_init(|| policy);
+    if policy != Policy::Required {
+        return Ok(());
+    }
+    let missing = Jail::get().missing();
+    anyhow::ensure!(
+        missing.is_empty(),
+        "refusing to run student code for the record without its containment:\n  - {}\n\
+         A grade of record runs someone else's code beside your files: it needs bubblewrap, \
+         its seccomp filter and cgroups. Get what is missing, or grade anyway with \
+         --unsandboxed-on-purpose (every report then says so).",
+        missing.join("\n  - ")
+    );
+    Ok(())
+}
+
+fn policy() -> Policy {
+    POLICY.get().copied().unwrap_or_default()
 }
 
 /// The sandbox of a grading run: bubblewrap where it runs, the seccomp
@@ -230,11 +347,12 @@ pub struct Containment {
 pub struct Jail {
     /// `bwrap`, where it runs.
     pub bwrap: Option<PathBuf>,
-    /// The compiled seccomp filter (raw `struct sock_filter`s), where one
+    /// The compiled seccomp filters (raw `struct sock_filter`s), where they
     /// can be built for this machine's architecture.
-    seccomp: Option<PathBuf>,
-    /// cgroups can be made here (see [`Cgroup`]).
-    cgroups: bool,
+    seccomp: Option<platform::Filters>,
+    /// The hierarchy cgroups can be made on here (see [`Cgroup`]), or why
+    /// none can.
+    cgroups: std::result::Result<Hierarchy, String>,
     /// The toolchain, where one was found (builds need it).
     toolchain: Option<Toolchain>,
 }
@@ -255,10 +373,14 @@ impl Jail {
                     None
                 }
             });
+            let cgroups = Hierarchy::detect()
+                .context("neither cgroup hierarchy has the memory and pids controllers here")
+                .and_then(|hierarchy| Cgroup::available(&hierarchy).map(|()| hierarchy))
+                .map_err(|error| format!("{error:#}"));
             Jail {
                 bwrap,
                 seccomp,
-                cgroups: Cgroup::available(),
+                cgroups,
                 toolchain: Toolchain::find().ok(),
             }
         })
@@ -273,10 +395,45 @@ impl Jail {
     /// What held beyond the sandbox itself, for the reports.
     #[must_use]
     pub fn containment(&self) -> Containment {
+        let cgroup = self.cgroups.as_ref().ok().map(Hierarchy::version);
         Containment {
             seccomp: self.seccomp.is_some() && self.sandboxed(),
-            aggregate_limits: self.cgroups,
+            aggregate_limits: cgroup.is_some(),
+            cgroup,
+            unprivileged: command::tests_run_unprivileged(),
+            on_purpose: policy() == Policy::OnPurpose,
         }
+    }
+
+    /// What of the grade of record's containment cannot be had here, each
+    /// with how to get it; empty where all can.
+    #[must_use]
+    pub fn missing(&self) -> Vec<String> {
+        let mut missing = Vec::new();
+        if !self.sandboxed() {
+            missing.push(format!(
+                "bubblewrap cannot run here{}: install it (`apt-get install bubblewrap`) where it \
+                 may make namespaces (as root, or a user where the kernel allows unprivileged user \
+                 namespaces; not a container that forbids them)",
+                if std::env::var_os(crate::setup::NO_SANDBOX_VAR).is_some() {
+                    format!(" ({} is set)", crate::setup::NO_SANDBOX_VAR)
+                } else {
+                    String::new()
+                }
+            ));
+        } else if self.seccomp.is_none() {
+            missing.push(
+                "no seccomp filter: it is built for Linux on x86-64 and AArch64 only".to_owned(),
+            );
+        }
+        if let Err(why) = &self.cgroups {
+            missing.push(format!(
+                "no cgroup for the memory and processes of a test together: {why} \
+                 (grade as root, e.g. with sudo, or in a delegated cgroup v2 scope: \
+                 systemd-run --user --scope -p Delegate=yes cargo xtask grade ...)"
+            ));
+        }
+        missing
     }
 
     /// The toolchain builds use.
@@ -288,6 +445,14 @@ impl Jail {
 
     /// Runs `job` to its end or its limit.
     pub fn run(&self, job: &Job) -> Result<Ended> {
+        if policy() == Policy::Required {
+            let missing = self.missing();
+            anyhow::ensure!(
+                missing.is_empty(),
+                "student code is not run for the record without {}",
+                missing.join("; ")
+            );
+        }
         for dir in &job.writable {
             fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
         }
@@ -297,10 +462,17 @@ impl Jail {
             // Both streams share one file description, so they interleave in order.
             None => stdout.try_clone().context("cannot share the log file")?,
         };
-        let cgroup = if self.cgroups {
-            Cgroup::new(&job.limits).ok()
-        } else {
-            None
+        let cgroup = match &self.cgroups {
+            Ok(hierarchy) => Some(Cgroup::new(hierarchy, &job.limits)),
+            Err(_) => None,
+        };
+        let cgroup = match cgroup {
+            Some(Ok(cgroup)) => Some(cgroup),
+            // Promised for the record, it must hold for every job.
+            Some(Err(error)) if policy() == Policy::Required => {
+                return Err(error.context("cannot make the cgroup of a job"));
+            }
+            Some(Err(_)) | None => None,
         };
         let mut command = self.command(job, cgroup.as_ref())?;
         command.stdin(Stdio::null()).stdout(stdout).stderr(stderr);

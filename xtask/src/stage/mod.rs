@@ -157,9 +157,10 @@ pub fn is_student_file(relative: &Path) -> bool {
 /// The task files of the course at `root` (paths relative to it): the
 /// files of `exercises/*/src` that hold a task, i.e. those with a solution
 /// in `reference/`; in an edition without `reference/`, those whose stub
-/// holds a `todo!`, and every `.wgsl` file (WGSL there is always the
-/// student's: given WGSL lives in Rust). These alone are a student's in a
-/// submission.
+/// holds the stub of a task of its topic, as `cargo xtask stubs` writes it
+/// ([`crate::stubs::holds_task_stub`]: decided by the course's markers,
+/// never by a mention of `todo!()` in a given file's comments). These
+/// alone are a student's in a submission.
 pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
     let reference = root.join("reference");
     let mut tasks = Vec::new();
@@ -171,10 +172,17 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
             }
         }
     } else {
+        let topics = crate::topics::discover(root)?;
         for file in files_under(root)? {
             let stub = |file: &Path| {
-                crate::files::is_wgsl(file)
-                    || fs::read_to_string(root.join(file)).is_ok_and(|text| text.contains("todo!("))
+                let topic = file.components().nth(1).map(|c| c.as_os_str());
+                let ids: Vec<&str> = topics
+                    .iter()
+                    .filter(|t| Some(t.name.as_ref()) == topic)
+                    .flat_map(|t| t.sheet.tasks.iter().map(|task| task.id.as_str()))
+                    .collect();
+                fs::read_to_string(root.join(file))
+                    .is_ok_and(|text| crate::stubs::holds_task_stub(file, &text, &ids))
             };
             if is_student_file(&file) && stub(&file) {
                 tasks.push(file);

@@ -46,6 +46,38 @@ pub const END_MARKER: &str = "// END SOLUTION";
 /// The hand-written crate root of every exercise crate.
 const CRATE_ROOT: &str = "lib.rs";
 
+/// Whether `text`, the official copy of `file` in a topic whose tasks are
+/// `task_ids`, holds the stub of one of them as [`generate`] writes it:
+/// `todo!("<task id>: …")` in Rust code (not in a comment, not inside a
+/// string), a line `// TODO <task id>: …` in WGSL. This is what makes a
+/// file a task file in an edition (which has no `reference/` to say so):
+/// a given file whose doc comment mentions `todo!()` holds no such call,
+/// and stays the course's.
+#[must_use]
+pub fn holds_task_stub(file: &Path, text: &str, task_ids: &[&str]) -> bool {
+    let names_a_task = |rest: &str| {
+        task_ids
+            .iter()
+            .any(|id| rest.strip_prefix(id).is_some_and(|r| r.starts_with(':')))
+    };
+    if is_wgsl(file) {
+        return text.lines().any(|line| {
+            line.trim_start()
+                .strip_prefix("// TODO ")
+                .is_some_and(names_a_task)
+        });
+    }
+    let masked = quiet::mask(text);
+    masked.match_indices("todo!(").any(|(at, call)| {
+        let word_start = !masked[..at].ends_with(|c: char| c.is_alphanumeric() || c == '_');
+        let after = at + call.len();
+        let open = after + (masked[after..].len() - masked[after..].trim_start().len());
+        // The mask keeps a string's quotes and blanks what is between
+        // them: the task id is read from the text itself.
+        word_start && masked[open..].starts_with('"') && names_a_task(&text[open + 1..])
+    })
+}
+
 /// The number of the first line where `a` and `b` differ.
 fn first_difference(a: &str, b: &str) -> usize {
     let mut a_lines = a.lines();

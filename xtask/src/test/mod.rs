@@ -33,7 +33,6 @@
 //! Every step runs even when an earlier one failed, so that one CI log
 //! shows everything that is wrong.
 
-use std::fs;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -295,10 +294,8 @@ pub(super) fn grade_planted<T>(
 
 /// `folder`, emptied (what an earlier round left there goes).
 pub(super) fn empty_folder(folder: PathBuf) -> Result<PathBuf> {
-    if folder.exists() {
-        fs::remove_dir_all(&folder)
-            .with_context(|| format!("cannot clear {}", folder.display()))?;
-    }
+    crate::files::remove_tree(&folder)
+        .with_context(|| format!("cannot clear {}", folder.display()))?;
     Ok(folder)
 }
 

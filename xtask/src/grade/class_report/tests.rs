@@ -72,6 +72,7 @@ fn report(member: &str, topics: Vec<TopicReport>) -> Report {
         containment: Default::default(),
         topics,
         pipeline: Vec::new(),
+        left_out: Vec::new(),
     }
 }
 

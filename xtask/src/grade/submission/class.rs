@@ -2,12 +2,13 @@
 //! built into one build cache.
 
 use std::fs;
+use std::panic::AssertUnwindSafe;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::report::Report;
@@ -103,14 +104,30 @@ pub(super) fn grade_class(
                         bar.set_message(
                             busy.iter()
                                 .filter(|b| !b.is_empty())
-                                .cloned()
+                                .map(|name| table::shown(name))
                                 .collect::<Vec<_>>()
                                 .join(", "),
                         );
                     }
-                    let result = grade_one(official, submission, &one, Some(&slot));
+                    // A member is the unit of failure: whatever grading it
+                    // meets, a panic of the grader's own included, is its
+                    // result, and the slot goes on with the next member.
+                    let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                        grade_one(official, submission, &one, Some(&slot))
+                    }))
+                    .unwrap_or_else(|panic| {
+                        Err(anyhow!(
+                            "the grader failed on this member: {}",
+                            panic_message(panic.as_ref())
+                        ))
+                    });
                     let n = done.fetch_add(1, Ordering::Relaxed) + 1;
                     let shown = match &result {
+                        Ok(report) if !report.left_out.is_empty() => format!(
+                            "{} · {} left out of its report (links, pipes, past the budget: see it)",
+                            one_line(report, &one.out),
+                            report.left_out.len()
+                        ),
                         Ok(report) => one_line(report, &one.out),
                         Err(error) => {
                             format!(
@@ -130,11 +147,14 @@ pub(super) fn grade_class(
                         let each = started.elapsed().as_secs_f64() / n as f64;
                         format!(" (about {} left)", minutes(each * left as f64))
                     };
+                    // Every part escaped: a member's folder name, and so
+                    // the path of its report, is the submission's text.
                     bar.suspend(|| {
                         println!(
-                            "[{n}/{}] {}: {shown}{estimate}",
+                            "[{n}/{}] {}: {}{estimate}",
                             submissions.len(),
-                            table::shown(&name)
+                            table::shown(&name),
+                            table::shown(&shown)
                         );
                     });
                     bar.inc(1);
@@ -153,6 +173,15 @@ pub(super) fn grade_class(
         .collect())
 }
 
+/// What a panic said (its message, when it has one that is text).
+fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
+    panic
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic without a message".to_owned())
+}
+
 /// `seconds` for people: `40 s`, `3 min`, `1 h 5 min`.
 fn minutes(seconds: f64) -> String {
     let seconds = seconds.max(0.0).round() as u64;
@@ -166,6 +195,12 @@ fn minutes(seconds: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::minutes;
+
+    #[test]
+    fn a_panic_says_what_it_said() {
+        let panic = std::panic::catch_unwind(|| panic!("slot {}", 3)).unwrap_err();
+        assert_eq!(super::panic_message(panic.as_ref()), "slot 3");
+    }
 
     #[test]
     fn times_are_said_in_the_largest_unit_that_fits() {

@@ -17,6 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use super::Integrity;
 use super::report::{self, Report};
+use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped, remove_tree};
 
 /// A member's row, in its report folder.
 pub const ROW_FILE: &str = "gradebook-row.json";
@@ -125,13 +126,22 @@ impl Class {
                 .unwrap_or_default();
             let row_path = member.join(ROW_FILE);
             if row_path.is_file() {
-                let text = fs::read_to_string(&row_path)
-                    .with_context(|| format!("cannot read {}", row_path.display()))?;
-                let row: GradebookRow = serde_json::from_str(&text)
-                    .with_context(|| format!("cannot read {}", row_path.display()))?;
-                class.rows.push(row);
-            } else if let Ok(why) = fs::read_to_string(member.join(NOT_GRADED_FILE)) {
-                class.not_graded.push((name, why));
+                // A row that cannot be read is that member's problem, named
+                // with why; the gradebook holds the others.
+                let row = read_capped(&row_path, MAX_SUBMITTED_FILE).and_then(|bytes| {
+                    serde_json::from_slice::<GradebookRow>(&bytes)
+                        .with_context(|| format!("cannot read {}", row_path.display()))
+                });
+                match row {
+                    Ok(row) => class.rows.push(row),
+                    Err(error) => class
+                        .not_graded
+                        .push((name, format!("its gradebook row is unreadable: {error:#}"))),
+                }
+            } else if let Ok(why) = read_capped(&member.join(NOT_GRADED_FILE), MAX_SUBMITTED_FILE) {
+                class
+                    .not_graded
+                    .push((name, String::from_utf8_lossy(&why).into_owned()));
             }
         }
         Ok(class)
@@ -152,14 +162,17 @@ impl Class {
 }
 
 /// The folders of `out` that hold a member (a row or why it has none),
-/// sorted by name.
+/// sorted by name. A link is no member's folder: it could name any folder
+/// of the machine, which a merge would then copy.
 fn member_folders(out: &Path) -> Result<Vec<PathBuf>> {
     let mut found = Vec::new();
     for entry in fs::read_dir(out).with_context(|| format!("cannot read {}", out.display()))? {
-        let path = entry
-            .with_context(|| format!("cannot read {}", out.display()))?
-            .path();
-        if path.join(ROW_FILE).is_file() || path.join(NOT_GRADED_FILE).is_file() {
+        let entry = entry.with_context(|| format!("cannot read {}", out.display()))?;
+        let path = entry.path();
+        let folder = entry.file_type().is_ok_and(|kind| kind.is_dir());
+        let holds =
+            |file: &str| fs::symlink_metadata(path.join(file)).is_ok_and(|meta| meta.is_file());
+        if folder && (holds(ROW_FILE) || holds(NOT_GRADED_FILE)) {
             found.push(path);
         }
     }
@@ -195,11 +208,20 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
             }
             let to = out.join(&name);
             if to != member {
-                if to.exists() {
-                    fs::remove_dir_all(&to)
-                        .with_context(|| format!("cannot replace {}", to.display()))?;
+                remove_tree(&to).with_context(|| format!("cannot replace {}", to.display()))?;
+                // A member whose folder cannot be copied is that member's
+                // problem: named in the gradebook as not graded, with why,
+                // and the merge goes on.
+                if let Err(error) = copy_tree(&member, &to) {
+                    let _ = remove_tree(&to);
+                    save_not_graded(
+                        &to,
+                        &format!(
+                            "its report folder in {} could not be copied: {error:#}",
+                            part.display()
+                        ),
+                    )?;
                 }
-                copy_tree(&member, &to)?;
             }
             seen.push((name, part.clone()));
         }
@@ -207,11 +229,16 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
     Class::read(out)
 }
 
-/// Copies the folder `from` to `to`, files and folders (links are not
-/// followed: a report folder holds none).
+/// Copies the report folder `from` to `to`: its plain files, by the
+/// bounded walk of `files_under` (no link followed or copied, no deeper
+/// than `files::MAX_DEPTH`: a grade keeps its report within that, see
+/// `files::Keeper`), the member's row last, so that a copy cut short
+/// holds no row.
 fn copy_tree(from: &Path, to: &Path) -> Result<()> {
     fs::create_dir_all(to).with_context(|| format!("cannot create {}", to.display()))?;
-    for file in crate::files::files_under(from)? {
+    let mut files = files_under(from)?;
+    files.sort_by_key(|file| file == Path::new(ROW_FILE));
+    for file in files {
         let target = to.join(&file);
         if let Some(parent) = target.parent() {
             fs::create_dir_all(parent)
@@ -321,6 +348,59 @@ mod tests {
              anna,5,5,0,true,false,2,3,2,3,\n\
              ben,1,5,0,true,false,,1,,1,01-a: the submission has no exercises/01-a\n"
         );
+    }
+
+    /// A part whose member's picture folder holds a chain of 2,100
+    /// folders (its path far past `PATH_MAX`; an older grade kept it), a
+    /// member whose row is torn, and a link posing as a member: the merge
+    /// copies the honest member, names the other two as not graded with
+    /// why, copies nothing through the link, and is written.
+    #[test]
+    fn a_merge_goes_on_past_a_member_it_cannot_copy() {
+        use crate::files::tests::{chain, scratch};
+        let dir = scratch("merge-hostile");
+        let part = dir.join("part");
+        let row = |name: &str| GradebookRow {
+            submission: name.to_owned(),
+            score: 1.0,
+            max_score: 1.0,
+            bonus: 0.0,
+            complete: true,
+            flagged: false,
+            integrity: None,
+            topics: Vec::new(),
+            tasks: Vec::new(),
+            not_graded: Vec::new(),
+            report: format!("{name}/report.html"),
+        };
+        for name in ["anna", "deep"] {
+            fs::create_dir_all(part.join(name).join("images")).unwrap();
+            row(name).save(&part.join(name)).unwrap();
+        }
+        chain(&part.join("deep/images"), "t", 2_100, "d");
+        fs::create_dir_all(part.join("torn")).unwrap();
+        fs::write(part.join("torn").join(ROW_FILE), "{ not json").unwrap();
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(part.join("anna"), part.join("linked")).unwrap();
+        let out = dir.join("merged");
+        let class = merge(&[part], &out).expect("the merge is written");
+        let names: Vec<&str> = class.rows.iter().map(|r| r.submission.as_str()).collect();
+        assert_eq!(names, ["anna"]);
+        assert_eq!(class.not_graded.len(), 2, "{:?}", class.not_graded);
+        assert_eq!(class.not_graded[0].0, "deep");
+        assert!(
+            class.not_graded[0].1.contains("could not be copied"),
+            "{:?}",
+            class.not_graded
+        );
+        assert_eq!(class.not_graded[1].0, "torn");
+        assert!(
+            class.not_graded[1].1.contains("row is unreadable"),
+            "{:?}",
+            class.not_graded
+        );
+        assert!(!out.join("linked").exists(), "a link is no member");
+        crate::files::remove_tree(&dir).unwrap();
     }
 
     #[test]

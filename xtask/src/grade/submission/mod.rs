@@ -1,18 +1,21 @@
 //! `cargo xtask grade --submission DIR`: grading a student's checkout, or a
 //! folder of them, with the course's official tests.
 //!
-//! Only `exercises/*/src/` belongs to the student. Everything else that
-//! takes part in grading — the course library (`crates/`), the tests and
-//! snapshots, the task sheets (they hold the points), the manifests, the
-//! tooling — is the course's. So a submission is never built where it
-//! lies: its `src/` folders are laid over a copy of the official course,
-//! the *stage* (see `stage`, which also stages the reference), and the
-//! stage is graded.
+//! Only the task files belong to the student: the files of
+//! `exercises/*/src/` the official course names as tasks (see
+//! `stage::task_files`), each read once through a handle that follows no
+//! link ([`take_task_files`]). Everything else that takes part in
+//! grading — the given code beside them, the course library (`crates/`),
+//! the tests and snapshots, the task sheets (they hold the points), the
+//! manifests, the tooling — is the course's. So a submission is never
+//! built where it lies: its task files are laid over a copy of the
+//! official course, the *stage* (see `stage`, which also stages the
+//! reference), and the stage is graded.
 //!
 //! ```text
 //!   official course ──(no target/, .git/, reference/)──┐
 //!                                                      ├──sync──> stage ──grade──> report
-//!   submission ──exercises/*/src/ only─────────────────┘
+//!   submission ──its task files only, read once────────┘
 //! ```
 //!
 //! The grading files of the submission are compared with the official ones
@@ -57,6 +60,7 @@ use crate::topics;
 mod class;
 mod gradebook;
 mod integrity;
+pub(crate) mod nofollow;
 mod resume;
 mod tampering;
 
@@ -114,63 +118,8 @@ fn grade_one(
         .map(|topic| topic.name.clone())
         .collect();
     let options = &options;
-    // A task file that reaches other files at compile time is not
-    // compiled: its stub is staged instead, and its topic scores 0. (The
-    // sandbox shows the build nothing but the stage; this says why
-    // early, and in words.)
-    let mut files = stage::plan(official, Overlay::Submission(submission))?;
-    let mut refused: Vec<(String, Vec<String>)> = Vec::new();
-    let mut unreadable: Vec<(String, String)> = Vec::new();
-    let topic_of = |task_file: &Path| {
-        task_file
-            .components()
-            .nth(1)
-            .map(|c| c.as_os_str().to_string_lossy().into_owned())
-            .unwrap_or_default()
-    };
-    for task_file in stage::task_files(official)? {
-        match crate::files::plain_file(submission, &task_file) {
-            Ok(()) => {}
-            Err(why)
-                if fs::symlink_metadata(submission.join(&task_file)).is_err()
-                    && !why.contains("symbolic link") =>
-            {
-                continue;
-            }
-            Err(why) => {
-                unreadable.push((
-                    topic_of(&task_file),
-                    format!(
-                        "{}: not graded ({why}); the stub was used",
-                        slashed(&task_file)
-                    ),
-                ));
-                continue;
-            }
-        }
-        let Some(text) = crate::files::read_plain(submission, &task_file)
-            .and_then(|bytes| String::from_utf8(bytes).ok())
-        else {
-            continue;
-        };
-        // WGSL reaches no files; Rust may, by macros.
-        let uses = if crate::files::is_wgsl(&task_file) {
-            Vec::new()
-        } else {
-            super::forbidden::uses(&text)
-        };
-        if uses.is_empty() {
-            continue;
-        }
-        let shown = task_file.display().to_string();
-        refused.push((
-            topic_of(&task_file),
-            uses.iter().map(|u| format!("{shown}:{u}")).collect(),
-        ));
-        files.retain(|(to, _)| *to != task_file);
-        files.push((task_file.clone(), Source::File(official.join(&task_file))));
-    }
-    files.sort();
+    let (files, taken) = staged_files(official, submission)?;
+    let (refused, unreadable) = (taken.refused, taken.unreadable);
     let course_before = contents_of(official)?;
     let planned: Vec<(PathBuf, Vec<u8>)> = files
         .iter()
@@ -237,6 +186,100 @@ fn grade_one(
     report.integrity = Some(integrity);
     super::export::write_all(&report, &options.out)?;
     Ok(report)
+}
+
+/// A submission's task files as the grader took them.
+#[derive(Debug, Default)]
+struct Taken {
+    /// Every task file of the course (see `stage::task_files`): the
+    /// submission's copy, read once, or the official stub where the
+    /// submission's is missing, unreadable or refused.
+    files: stage::Files,
+    /// Per topic, the uses of what a task file may not do (see
+    /// `forbidden`): the topic is not compiled.
+    refused: Vec<(String, Vec<String>)>,
+    /// Per topic, the task files not read and why (a link, a pipe, a
+    /// flood): their stubs were used.
+    unreadable: Vec<(String, String)>,
+}
+
+/// Takes the task files of `submission`: the files the official course at
+/// `official` names as tasks (`stage::task_files`), nothing else of it.
+/// Each is read once, through a handle opened without following a link at
+/// any component ([`nofollow`]); that copy in memory is what is checked
+/// for forbidden constructs and what is staged, so a file swapped for a
+/// link to a solution after this read changes nothing. Every other file
+/// of the submission (given code, `lib.rs`, its manifests) is the
+/// course's in the stage.
+fn take_task_files(official: &Path, submission: &Path) -> Result<Taken> {
+    let mut taken = Taken::default();
+    let topic_of = |task_file: &Path| {
+        task_file
+            .components()
+            .nth(1)
+            .map(|c| c.as_os_str().to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    let stub = |task_file: &Path| {
+        (
+            task_file.to_path_buf(),
+            Source::File(official.join(task_file)),
+        )
+    };
+    for task_file in stage::task_files(official)? {
+        let bytes = match nofollow::read(submission, &task_file, crate::files::MAX_SUBMITTED_FILE) {
+            Ok(bytes) => bytes,
+            Err(nofollow::Missing) => {
+                taken.files.push(stub(&task_file));
+                continue;
+            }
+            Err(nofollow::Refusal::Refused(why)) => {
+                taken.unreadable.push((
+                    topic_of(&task_file),
+                    format!(
+                        "{}: not graded ({why}); the stub was used",
+                        slashed(&task_file)
+                    ),
+                ));
+                taken.files.push(stub(&task_file));
+                continue;
+            }
+        };
+        // A task file that reaches other files at compile time (or uses a
+        // known soundness hole, see `forbidden`) is not compiled: its stub
+        // is staged instead, and its topic scores 0. WGSL reaches no
+        // files; Rust may, by macros. Text that is not UTF-8 is staged as
+        // it is, and does not compile.
+        let uses = match std::str::from_utf8(&bytes) {
+            Ok(text) if !crate::files::is_wgsl(&task_file) => super::forbidden::uses(text),
+            _ => Vec::new(),
+        };
+        if uses.is_empty() {
+            taken.files.push((task_file, Source::Text(bytes)));
+        } else {
+            let shown = task_file.display().to_string();
+            taken.refused.push((
+                topic_of(&task_file),
+                uses.iter().map(|u| format!("{shown}:{u}")).collect(),
+            ));
+            taken.files.push(stub(&task_file));
+        }
+    }
+    Ok(taken)
+}
+
+/// The files of the stage of `submission`: the edition of the official
+/// course with the submission's task files as [`take_task_files`] took
+/// them (each read once, held in memory), and what it found. Nothing of
+/// the submission is left to be read later: no staged file is a path
+/// into it.
+fn staged_files(official: &Path, submission: &Path) -> Result<(stage::Files, Taken)> {
+    let taken = take_task_files(official, submission)?;
+    let mut files = stage::plan(official, Overlay::Submission(submission))?;
+    files.retain(|(to, _)| !taken.files.iter().any(|(task_file, _)| task_file == to));
+    files.extend(taken.files.iter().cloned());
+    files.sort();
+    Ok((files, taken))
 }
 
 /// The table of a graded submission, as `cargo xtask grade` prints it.
@@ -482,7 +525,7 @@ fn report_class(class: &Class, out: &Path) -> Result<()> {
         let lines: Vec<String> = class
             .not_graded
             .iter()
-            .map(|(name, why)| format!("{}: {why}", table::shown(name)))
+            .map(|(name, why)| format!("{}: {}", table::shown(name), table::continued(why, "  ")))
             .collect();
         bail!(
             "{} submission(s) could not be graded and are not in the gradebook:\n{}",
@@ -507,4 +550,189 @@ fn slashed(path: &Path) -> String {
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
         .collect::<Vec<_>>()
         .join("/")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The course this tooling ships with.
+    fn course() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+    }
+
+    #[test]
+    fn the_course_markers_name_exactly_the_files_with_a_solution() {
+        // In an edition (no `reference/`) the task files are found by the
+        // stubs' markers; here, where `reference/` says which they are,
+        // both must agree, and the given files that mention `todo!()` in
+        // their doc comments are not tasks.
+        let root = course();
+        for topic in topics::discover(&root).unwrap() {
+            let ids: Vec<&str> = topic.sheet.tasks.iter().map(|t| t.id.as_str()).collect();
+            let src = topic.dir.join("src");
+            for file in crate::files::files_under(&src).unwrap() {
+                let text = fs::read_to_string(src.join(&file)).unwrap();
+                let solved = root
+                    .join("reference")
+                    .join(&topic.name)
+                    .join("src")
+                    .join(&file)
+                    .is_file();
+                assert_eq!(
+                    crate::stubs::holds_task_stub(&file, &text, &ids),
+                    solved,
+                    "exercises/{}/src/{}",
+                    topic.name,
+                    file.display()
+                );
+            }
+        }
+        for given in [
+            "exercises/06-csg/src/raster.rs",
+            "exercises/10-gpu-tessellation/src/wgsl.rs",
+        ] {
+            let text = fs::read_to_string(root.join(given)).unwrap();
+            assert!(
+                text.contains("todo!()"),
+                "{given} no longer mentions todo!()"
+            );
+        }
+    }
+
+    /// An edition of one topic (no `reference/`): a task file `classify.rs`
+    /// and a given file `raster.rs` whose doc comment mentions `todo!()`.
+    fn edition(dir: &Path) -> PathBuf {
+        let official = dir.join("official");
+        let topic = official.join("exercises/06-x");
+        let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
+        write(topic.join("Cargo.toml"), "[package]\nname = \"x\"\n");
+        write(
+            topic.join("tasks.toml"),
+            "[[tasks]]\nid = \"classify\"\ntitle = \"Classify\"\npoints = 3\n",
+        );
+        write(
+            topic.join("src/lib.rs"),
+            "pub mod classify;\npub mod raster;\n",
+        );
+        write(
+            topic.join("src/raster.rs"),
+            "//! Given: a stage at `todo!()` is named on screen.\npub fn raster() -> u8 { 1 }\n",
+        );
+        write(
+            topic.join("src/classify.rs"),
+            "pub fn classify() -> u8 {\n    todo!(\"classify: say inside or outside\")\n}\n",
+        );
+        official
+    }
+
+    #[test]
+    fn a_modified_given_file_changes_nothing_and_task_files_are_read_once() {
+        let dir = std::env::temp_dir().join(format!("xtask-taken-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let official = edition(&dir);
+        let classify = PathBuf::from("exercises/06-x/src/classify.rs");
+        let raster = PathBuf::from("exercises/06-x/src/raster.rs");
+        assert_eq!(
+            stage::task_files(&official).unwrap(),
+            std::slice::from_ref(&classify)
+        );
+        let submission = dir.join("anna");
+        let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
+        write(
+            submission.join(&classify),
+            "pub fn classify() -> u8 { 2 }\n",
+        );
+        write(
+            submission.join(&raster),
+            "//! Mine now: todo!(\"classify: x\")\npub fn raster() -> u8 { 42 }\n",
+        );
+        let taken = take_task_files(&official, &submission).unwrap();
+        assert!(taken.refused.is_empty() && taken.unreadable.is_empty());
+        // Only the task file is the student's; raster.rs stays the course's.
+        let files: Vec<&PathBuf> = taken.files.iter().map(|(to, _)| to).collect();
+        assert_eq!(files, [&classify]);
+        let checked = Source::Text(b"pub fn classify() -> u8 { 2 }\n".to_vec());
+        assert_eq!(taken.files[0].1, checked);
+        // A watcher swaps the task file for a link to a solution after the
+        // check: what was taken is what is staged and graded.
+        let solution = dir.join("solution.rs");
+        write(solution.clone(), "pub fn classify() -> u8 { 1 }\n");
+        fs::remove_file(submission.join(&classify)).unwrap();
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(&solution, submission.join(&classify)).unwrap();
+            assert_eq!(
+                taken.files[0].1.read().unwrap(),
+                b"pub fn classify() -> u8 { 2 }\n"
+            );
+            // Taken again, the link is refused and the stub staged.
+            let again = take_task_files(&official, &submission).unwrap();
+            assert_eq!(again.unreadable.len(), 1, "{:?}", again.unreadable);
+            assert!(again.unreadable[0].1.contains("symbolic link"));
+            assert_eq!(again.files[0].1, Source::File(official.join(&classify)));
+        }
+        let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_submissions_tool_configuration_is_never_staged_nor_read_later() {
+        // insta reads `insta.yaml`, `.config/insta.yaml` or `.insta.yaml`
+        // in the workspace root, proptest `proptest-regressions/` beside
+        // a test: a submission's are not the course's, and stay behind.
+        let dir = std::env::temp_dir().join(format!("xtask-staged-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let submission = dir.join("anna");
+        let dda = PathBuf::from("exercises/01-lines/src/dda.rs");
+        let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
+        write(submission.join(&dda), "// mine\n");
+        for config in ["insta.yaml", ".config/insta.yaml", ".insta.yaml"] {
+            write(submission.join(config), "behavior:\n  force_pass: true\n");
+        }
+        write(
+            submission.join("exercises/01-lines/tests/proptest-regressions/dda.txt"),
+            "cc 0\n",
+        );
+        let (files, _) = staged_files(&course(), &submission).unwrap();
+        for (to, from) in &files {
+            let name = to.to_string_lossy();
+            assert!(
+                !name.contains("insta.yaml") && !name.contains("proptest-regressions"),
+                "{name} is staged"
+            );
+            assert!(
+                !matches!(from, Source::File(path) if path.starts_with(&submission)),
+                "{name} would be read from the submission later"
+            );
+        }
+        let staged = files
+            .iter()
+            .find(|(to, _)| *to == dda)
+            .map(|(_, from)| from);
+        assert_eq!(staged, Some(&Source::Text(b"// mine\n".to_vec())));
+        let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_task_file_using_the_soundness_hole_is_refused_and_its_stub_staged() {
+        let dir = std::env::temp_dir().join(format!("xtask-taken-hole-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let official = edition(&dir);
+        let classify = PathBuf::from("exercises/06-x/src/classify.rs");
+        let submission = dir.join("ben");
+        crate::files::write_file(
+            &submission.join(&classify),
+            "fn t<'a, 'b, T>(_: &'a &'b (), v: &'b T) -> &'a T { v }\npub fn classify() -> u8 { 0 }\n",
+        )
+        .unwrap();
+        let taken = take_task_files(&official, &submission).unwrap();
+        assert_eq!(taken.refused.len(), 1);
+        assert!(
+            taken.refused[0].1[0].contains("rust-lang/rust#25860"),
+            "{:?}",
+            taken.refused
+        );
+        assert_eq!(taken.files[0].1, Source::File(official.join(&classify)));
+        let _ = fs::remove_dir_all(&dir);
+    }
 }

@@ -15,14 +15,15 @@ use std::path::Path;
 use anyhow::{Context, Result, bail, ensure};
 
 use super::gradebook::ROW_FILE;
-use crate::files::files_under;
+use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped};
 
 /// The fingerprint of what a member's grade was made from, in its report
 /// folder.
 pub const FINGERPRINT_FILE: &str = "graded-from.txt";
 
 /// The contents of every file under `root` (its paths and bytes, as
-/// `files_under` lists them: no build output, no `.git`), hashed.
+/// `files_under` lists them: no build output, no `.git`), hashed: the
+/// official course's, where anything unreadable is an error.
 pub fn tree_hash(root: &Path) -> Result<u64> {
     let mut hasher = DefaultHasher::new();
     for file in files_under(root)? {
@@ -34,12 +35,49 @@ pub fn tree_hash(root: &Path) -> Result<u64> {
     Ok(hasher.finish())
 }
 
+/// A member's checkout hashed as [`tree_hash`] hashes the course, but
+/// never failing and never without bound: the walk is the bounded one of
+/// `files_under`, and a file is read only when it is a plain file of at
+/// most [`MAX_SUBMITTED_FILE`] bytes. What it cannot read stands in the
+/// hash by what can be said of it: a file too large (a sparse terabyte
+/// costs no disk) or no plain file by its size and time, a walk that
+/// failed (folders too deep, a path longer than `PATH_MAX`, too many
+/// files) by its error. So the same checkout always gives the same hash,
+/// and an unreadable one is that member's grade to explain (its grade
+/// fails on the same walk, with the reason), never the end of the class.
+fn member_hash(root: &Path) -> u64 {
+    let mut hasher = DefaultHasher::new();
+    let files = match files_under(root) {
+        Ok(files) => files,
+        Err(error) => {
+            format!("unreadable: {error:#}").hash(&mut hasher);
+            return hasher.finish();
+        }
+    };
+    for file in files {
+        file.hash(&mut hasher);
+        let path = root.join(&file);
+        match read_capped(&path, MAX_SUBMITTED_FILE) {
+            Ok(bytes) => bytes.hash(&mut hasher),
+            Err(_) => {
+                let meta = fs::symlink_metadata(&path).ok();
+                "not read".hash(&mut hasher);
+                meta.as_ref().map(fs::Metadata::len).hash(&mut hasher);
+                meta.and_then(|m| m.modified().ok()).hash(&mut hasher);
+            }
+        }
+    }
+    hasher.finish()
+}
+
 /// The fingerprint of grading `submission` against the course whose
-/// [`tree_hash`] is `official`, with this grader.
+/// [`tree_hash`] is `official`, with this grader. Whatever the checkout
+/// holds, this is `Ok` (see [`member_hash`]): one member's files never
+/// stop a class before it starts.
 pub fn fingerprint(official: u64, submission: &Path) -> Result<String> {
     Ok(format!(
         "course {official:016x} submission {:016x} grader {}",
-        tree_hash(submission)?,
+        member_hash(submission),
         env!("CARGO_PKG_VERSION")
     ))
 }
@@ -140,5 +178,33 @@ mod tests {
         fs::write(dir.join("exercises/01-a/src/a.rs"), "fn a() { }").unwrap();
         assert_ne!(first, fingerprint(1, &dir).unwrap(), "the student's change");
         let _ = fs::remove_dir_all(&dir);
+    }
+
+    /// What stopped a class before its first member was graded: a sparse
+    /// terabyte (read whole, out of memory), a path longer than
+    /// `PATH_MAX` and a chain of folders deeper than any walk goes (the
+    /// walk failed, and `?` ended the class). Each gives a fingerprint,
+    /// the same one each time, and one that differs from the clean
+    /// checkout's.
+    #[test]
+    fn a_hostile_checkout_has_a_fingerprint_and_stops_nothing() {
+        use crate::files::tests::{chain, scratch};
+        let dir = scratch("fingerprint-hostile");
+        fs::create_dir_all(dir.join("exercises/01-a/src")).unwrap();
+        fs::write(dir.join("exercises/01-a/src/a.rs"), "fn a() {}").unwrap();
+        let clean = fingerprint(1, &dir).unwrap();
+        let huge = fs::File::create(dir.join("huge.bin")).unwrap();
+        huge.set_len(1 << 40).unwrap();
+        let sparse = fingerprint(1, &dir).unwrap();
+        assert_ne!(sparse, clean);
+        assert_eq!(sparse, fingerprint(1, &dir).unwrap());
+        chain(&dir, "long", 20, &"n".repeat(250));
+        let long = fingerprint(1, &dir).unwrap();
+        assert_ne!(long, sparse);
+        assert_eq!(long, fingerprint(1, &dir).unwrap());
+        crate::files::remove_tree(&dir.join("long")).unwrap();
+        chain(&dir, "deep", 2_100, "d");
+        assert_ne!(fingerprint(1, &dir).unwrap(), sparse);
+        crate::files::remove_tree(&dir).unwrap();
     }
 }
