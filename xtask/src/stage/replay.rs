@@ -53,6 +53,9 @@ pub fn package_name(topic: &Topic) -> String {
 /// Adds the replay package of every replayed topic of the course at
 /// `root` to `files`, and makes them members of the staged workspace.
 pub fn add_packages(root: &Path, files: &mut Files) -> Result<()> {
+    if !root.join("exercises").is_dir() {
+        return Ok(());
+    }
     let topics = crate::topics::discover(root)?;
     let replayed: Vec<&Topic> = topics
         .iter()
