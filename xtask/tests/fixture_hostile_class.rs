@@ -7,6 +7,7 @@
 //! | `deep-folders` | a chain of 16,000 folders in a test's scratch folder, 2,100 in its picture folder | the grader's recursive removal overflowed its stack (exit 134); `gradebook merge` failed, "File name too long" |
 //! | `long-path` | a path of 5,000 bytes (past `PATH_MAX`) in its checkout | the fingerprint's walk failed and `?` ended the class |
 //! | `floods-pictures` | a sparse file of 1 TiB in its checkout; 360 MiB of pictures | `fs::read` of it: out of memory; every byte kept in the report |
+//! | `sparse-task-file` | its task file a sparse file of 1 TiB | (read whole, as any task file) |
 //! | `leaves-links` | a link to a solution, and a pipe, in its picture and pending-snapshot folders | `zip -r` of the report follows the link |
 //! | `evil⏎total 20.0 ∕ 20 ok␛[2J` | its name, and a grading file's, hold a line break and a terminal escape | a fake total line in the tutor's terminal |
 //!
@@ -107,8 +108,10 @@ mod linux {
     fn write_class(official: &Path, class: &Path) {
         member(official, class, "a-honest", Some(&ops("x * 2", "-x")));
 
+        // (The picture chain first: the sandbox stops a test whose folders
+        // nest past the walks' bound when it next measures what was written.)
         let deep = "    let back = std::env::current_dir().unwrap();\n\
-             for (dir, depth, name) in [(\"TMPDIR\", 16_000, \"a\"), (\"TESTKIT_OUTPUT_DIR\", 2_100, \"d\")] {\n\
+             for (dir, depth, name) in [(\"TESTKIT_OUTPUT_DIR\", 2_100, \"d\"), (\"TMPDIR\", 16_000, \"a\")] {\n\
                  let dir = std::env::var(dir).unwrap();\n\
                  let _ = std::fs::create_dir_all(&dir);\n\
                  std::env::set_current_dir(&dir).unwrap();\n\
@@ -131,6 +134,11 @@ mod linux {
         let flooding = member(official, class, "floods-pictures", Some(&planting(floods)));
         let sparse = fs::File::create(flooding.join("notes.bin")).unwrap();
         sparse.set_len(1 << 40).unwrap();
+
+        // Its task file itself a sparse terabyte: refused by its size.
+        let sparse_task = member(official, class, "sparse-task-file", None);
+        let task_file = fs::File::create(sparse_task.join("exercises/01-tiny/src/ops.rs")).unwrap();
+        task_file.set_len(1 << 40).unwrap();
 
         let solution = official.join("reference/01-tiny/src/ops.rs");
         let links = format!(
@@ -201,6 +209,12 @@ mod linux {
                 "{name:?} was graded: {text}\n{errors}"
             );
         }
+        let sparse_task = read_json(&out.join("sparse-task-file/report.json"));
+        assert_eq!(
+            sparse_task["score"], 0.0,
+            "the stub was graded: {sparse_task:#}"
+        );
+
         let long = out.join("long-path");
         let graded = long.join("report.json").is_file();
         let why = fs::read_to_string(long.join("not-graded.txt")).unwrap_or_default();
@@ -232,6 +246,13 @@ mod linux {
                 .any(|l| l.contains("leaves-links: 3 / 3 points")
                     && l.contains("left out of its report")),
             "the class's line says what was left out: {text}"
+        );
+        let deep = read_json(&out.join("deep-folders/report.json"));
+        assert!(
+            deep["left_out"]
+                .to_string()
+                .contains("folders nested deeper than 32"),
+            "the picture chain was cut at the bound: {deep:#}"
         );
         let links = read_json(&out.join("leaves-links/report.json"));
         assert_eq!(links["score"], 3.0, "{links:#}");

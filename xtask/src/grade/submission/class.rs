@@ -124,7 +124,7 @@ pub(super) fn grade_class(
                     let n = done.fetch_add(1, Ordering::Relaxed) + 1;
                     let shown = match &result {
                         Ok(report) if !report.left_out.is_empty() => format!(
-                            "{} · {} left out of its report (links, pipes, past the budget: see it)",
+                            "{} · {} left out of its report (links, pipes, deep folders, past the budget: see it)",
                             one_line(report, &one.out),
                             report.left_out.len()
                         ),
