@@ -8,6 +8,7 @@ use glam::Vec4;
 ///
 /// Depth travels in `position.z` (divided by `w` later), so interpolating
 /// the position interpolates depth too.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
     /// Homogeneous clip-space position.

@@ -19,6 +19,12 @@
 //!   `/proc/self/mem`, no `/proc/self/environ`) and shows each test only
 //!   its own scratch folder.
 //!
+//! Safe code *can* reach it through a soundness hole of the compiler
+//! (rust-lang/rust#25860, the `cve-rs` crate), so for a topic decided by
+//! replay the grader gives the token only to a second process, which
+//! replays a record of the student's code and never ran it (see the
+//! `transcript` crate); this macro is the same in both.
+//!
 //! A test whose process exits early (a forged summary and `exit(0)`), whose
 //! assertions fail, or that is not wrapped prints no token and fails. Run
 //! outside the grader (`cargo test`), the variable is unset and the test

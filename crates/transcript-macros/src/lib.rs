@@ -275,7 +275,8 @@ fn record(
                             quote! { &#wrapped }
                         };
                         quote! {
-                            let #inner = #name;
+                            #[allow(unused_mut)]
+                            let mut #inner = #name;
                             #[allow(unused_mut)]
                             let mut #wrapped = #wrapper;
                             let #name = #borrow;
@@ -310,7 +311,8 @@ fn record(
         let __transcript_call = ::transcript::__private::Call::enter(#label);
         let __transcript_recording = __transcript_call.recording();
         #(#prologue)*
-        let __transcript_body = |#(#mutated_names: #mutated_types),*| -> #output {
+        #[allow(unused_mut)]
+        let mut __transcript_body = |#(#mutated_names: #mutated_types),*| -> #output {
             #(#bindings)*
             #block
         };

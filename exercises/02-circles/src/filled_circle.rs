@@ -49,6 +49,7 @@ use canvas::{MAX_COORD, Pixel};
 /// A negative radius, or a circle reaching beyond ±[`MAX_COORD`]
 /// (`|centre.x| + radius > MAX_COORD`, or the same for y), plots nothing.
 /// The work grows with the area, `πR²` pixels.
+#[transcript::task]
 pub fn filled_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&centre, &radius, &mut plot);

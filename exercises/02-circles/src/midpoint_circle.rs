@@ -33,6 +33,7 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Meant for offsets of the second octant, `0 ≤ x ≤ y`, whose pixels lie
 /// within ±[`MAX_COORD`] (which [`midpoint_circle`] guarantees).
+#[transcript::task]
 pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&centre, &x, &y, &plot);
@@ -69,6 +70,7 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 /// - Radius 0 plots the centre. A negative radius, or a circle that reaches
 ///   beyond ±[`MAX_COORD`] (`|centre.x| + radius > MAX_COORD`, or the same
 ///   for y), plots nothing.
+#[transcript::task]
 pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&centre, &radius, &mut plot);

@@ -77,6 +77,7 @@ pub const MAX_SEMI_AXIS: i32 = 1 << 20;
 /// the centre). A negative semi-axis, one beyond [`MAX_SEMI_AXIS`], or an
 /// ellipse reaching beyond ±[`MAX_COORD`] plots nothing. The arithmetic is
 /// `i128`: `a²b²` alone needs 80 bits.
+#[transcript::task]
 pub fn midpoint_ellipse(centre: Pixel, a: i32, b: i32, mut plot: impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&centre, &a, &b, &mut plot);

@@ -32,6 +32,7 @@ pub fn snap(v: f32) -> Option<i64> {
 }
 
 /// How a block's corners classify it, before any pixel of it is tested.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Coverage {
     /// Some edge has `O_i + bias_i > 0` at all four corners: skipped.
@@ -44,6 +45,7 @@ pub enum Coverage {
 
 /// One block of the clipped bounding box: pixels `min` to `max`, corners
 /// included (8 × 8, less at the box's right and top ends).
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Block {
     /// The lower left pixel.
@@ -80,6 +82,7 @@ pub struct Block {
 ///
 /// Zero area, or a position NaN, infinite or beyond ±[`MAX_COORD`], plots
 /// nothing.
+#[transcript::task]
 pub fn fill_triangle_blocked(
     positions: [Vec2; 3],
     viewport: Viewport,

@@ -87,6 +87,7 @@ pub fn snap(v: f32) -> Option<i64> {
 ///
 /// A triangle of zero area (after snapping), or with a position that is
 /// NaN, infinite or beyond ±[`MAX_COORD`], plots nothing.
+#[transcript::task]
 pub fn fill_triangle(
     vertices: [Vertex; 3],
     viewport: Viewport,

@@ -49,6 +49,7 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// parity of every pixel right of it changes all the same). Fewer than
 /// three vertices, a NaN or infinite coordinate, or a buffer of more than
 /// [`Canvas::MAX_PIXELS`] pixels (no canvas is that large) fill nothing.
+#[transcript::task]
 pub fn parity_fill(
     vertices: &[Vec2],
     viewport: Viewport,

@@ -38,6 +38,7 @@ use canvas::{Pixel, Vec2, Viewport};
 /// coordinate plots nothing. Infinite or huge corners are fine: the box is
 /// clipped to `viewport` (inclusive bounds) before any pixel is visited, so
 /// the work is at most the number of pixels plotted.
+#[transcript::task]
 pub fn fill_rectangle(min: Vec2, max: Vec2, viewport: Viewport, mut plot: impl FnMut(Pixel)) {
     // Unused until you write the body:
     let _ = (&min, &max, &viewport, &mut plot);

@@ -33,6 +33,7 @@ use crate::plane::{CLIP_NUDGE, ClipPlane};
 /// order right, left, top, bottom, far, near (`+x`, `−x`, `+y`, `−y`,
 /// `+z`, `−z`).
 #[must_use]
+#[transcript::task]
 pub fn clip_planes() -> [ClipPlane; 6] {
     todo!(
         "clip_planes: list the six planes (n, -d) of the cube -w <= x, y, z <= w, outward normals, in the order +x, -x, +y, -y, +z, -z"
@@ -46,6 +47,7 @@ impl ClipPlane {
     /// a polygon lying in a face of the cube survives clipping. A point
     /// with a NaN coordinate is not inside (the comparison is false).
     #[must_use]
+    #[transcript::task]
     pub fn inside(self, v: Vec4) -> bool {
         // Unused until you write the body:
         let _ = &v;
@@ -73,6 +75,7 @@ impl ClipPlane {
     /// `None` also for non-finite endpoints or distances (NaN, infinities,
     /// overflow).
     #[must_use]
+    #[transcript::task]
     pub fn intersect(self, a: Vec4, b: Vec4) -> Option<f32> {
         // Unused until you write the body:
         let _ = (&a, &b);

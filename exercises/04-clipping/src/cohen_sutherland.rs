@@ -31,6 +31,7 @@ use crate::window::{ClipWindow, Segment};
 /// Two endpoints whose codes share a bit lie beyond the same border: the
 /// segment misses the window (trivial reject). Two zero codes: it lies
 /// inside (trivial accept).
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Outcode(pub u8);
 
@@ -85,6 +86,7 @@ pub const MAX_ROUNDS: usize = 8;
 /// no bit for it. NaN compares false everywhere and gets `INSIDE`: check
 /// finiteness before.
 #[must_use]
+#[transcript::task]
 pub fn outcode(p: Vec2, window: ClipWindow) -> Outcode {
     // Unused until you write the body:
     let _ = (&p, &window);
@@ -117,6 +119,7 @@ pub fn outcode(p: Vec2, window: ClipWindow) -> Outcode {
 /// [`ClipError::NonFinite`] for an endpoint with a NaN or infinite
 /// coordinate, [`ClipError::OutOfRange`] for one beyond ±[`MAX_COORD`]
 /// (`index` 0 for `from`, 1 for `to`).
+#[transcript::task]
 pub fn cohen_sutherland(
     segment: Segment,
     window: ClipWindow,

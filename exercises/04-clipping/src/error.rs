@@ -4,6 +4,7 @@
 ///
 /// Clipping never panics: input it cannot give a meaningful answer for is
 /// reported with the index of the first offending vertex or endpoint.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum ClipError {
     /// A coordinate is NaN or infinite.

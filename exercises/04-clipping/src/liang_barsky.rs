@@ -43,6 +43,7 @@ use crate::window::{ClipWindow, Segment};
 /// [`ClipError::NonFinite`] for an endpoint with a NaN or infinite
 /// coordinate, [`ClipError::OutOfRange`] for one beyond ±[`MAX_COORD`]
 /// (`index` 0 for `from`, 1 for `to`).
+#[transcript::task]
 pub fn liang_barsky(segment: Segment, window: ClipWindow) -> Result<Option<Segment>, ClipError> {
     // Unused until you write the body:
     let _ = (&segment, &window);

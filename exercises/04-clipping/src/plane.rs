@@ -46,6 +46,7 @@ pub const MAX_CLIP_COORD: f32 = 1e18;
 /// product with the point's own `w` tests the point *before* the division
 /// by `w` (the sheet writes `1` for the last component, which holds only
 /// after homogenization): `x − w ≤ 0` is `x / w ≤ 1` for `w > 0`.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipPlane {
     /// `(n_x, n_y, n_z, −d)`: the outward normal and the negative distance.

@@ -57,6 +57,7 @@ use scene::ClipVertex;
 /// [`ClipError::NonFinite`] or [`ClipError::OutOfRange`] for the first
 /// vertex with a non-finite coordinate or one beyond ±[`MAX_CLIP_COORD`];
 /// [`ClipError::InvalidPlane`] (index 0) for a non-finite plane.
+#[transcript::task]
 pub fn clip_against_plane(
     polygon: &[ClipVertex],
     plane: ClipPlane,
@@ -80,6 +81,7 @@ pub fn clip_against_plane(
 ///
 /// As [`clip_against_plane`]; [`ClipError::InvalidPlane`] names the first
 /// non-finite plane.
+#[transcript::task]
 pub fn clip_polygon(
     polygon: &[ClipVertex],
     planes: &[ClipPlane],

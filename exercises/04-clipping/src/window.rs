@@ -8,6 +8,7 @@ use canvas::{MAX_COORD, Vec2, Viewport};
 /// A line segment from `from` to `to`, in pixel coordinates (pixel centres
 /// at integers, y up; see `canvas`). Its points are
 /// `P(t) = from + t · (to − from)` for `t ∈ [0, 1]`.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
     /// Start point, `P(0)`.
@@ -45,6 +46,7 @@ impl Segment {
 ///   min.y +-----------+
 ///       min.x       max.x
 /// ```
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipWindow {
     min: Vec2,

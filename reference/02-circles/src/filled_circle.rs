@@ -48,6 +48,7 @@ use canvas::{MAX_COORD, Pixel};
 /// A negative radius, or a circle reaching beyond ±[`MAX_COORD`]
 /// (`|centre.x| + radius > MAX_COORD`, or the same for y), plots nothing.
 /// The work grows with the area, `πR²` pixels.
+#[transcript::task]
 pub fn filled_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
     // BEGIN SOLUTION filled_circle: walk the octant; fill rows ±x at each step, rows ±y as you leave them
     let reach = |c: i32| i64::from(c).abs() + i64::from(radius);

@@ -40,6 +40,7 @@ use canvas::{MAX_COORD, Pixel};
 /// so the loop adds only, without a single multiplication. On a walk of a
 /// circle the three variables keep their closed forms (below), but the
 /// walk never computes those: it adds what it holds.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Walk {
     /// The pixel's column, relative to the centre.
@@ -60,6 +61,7 @@ impl Walk {
     /// `ΔSE = 5 − 2R`. (`radius` is at most [`MAX_COORD`] here: `i64`
     /// holds every value of the walk with room to spare.)
     #[must_use]
+    #[transcript::task]
     pub fn start(radius: i32) -> Self {
         // BEGIN SOLUTION integer_circle: the state at (0, R): h = 1 − R, ΔE = 3, ΔSE = 5 − 2R
         let r = i64::from(radius);
@@ -84,6 +86,7 @@ impl Walk {
     /// integers. The tests step states that no circle has (`h` near
     /// ±2⁶⁰, increments far from `2x + 3`), where anything else gives
     /// other numbers.
+    #[transcript::task]
     pub fn step(&mut self) {
         // BEGIN SOLUTION integer_circle: h < 0: E (h += ΔE), else SE (h += ΔSE, y − 1); then ΔE += 2, ΔSE += 2 after E or 4 after SE, x + 1 — add what the state holds, recompute nothing
         if self.h < 0 {

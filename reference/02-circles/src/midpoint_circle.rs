@@ -32,6 +32,7 @@ use canvas::{MAX_COORD, Pixel};
 ///
 /// Meant for offsets of the second octant, `0 ≤ x ≤ y`, whose pixels lie
 /// within ±[`MAX_COORD`] (which [`midpoint_circle`] guarantees).
+#[transcript::task]
 pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)) {
     // BEGIN SOLUTION midpoint_circle: plot (±x, ±y) and (±y, ±x) once each: no −0, no swap when x = y
     let mut four = |a: i32, b: i32| {
@@ -83,6 +84,7 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 /// - Radius 0 plots the centre. A negative radius, or a circle that reaches
 ///   beyond ±[`MAX_COORD`] (`|centre.x| + radius > MAX_COORD`, or the same
 ///   for y), plots nothing.
+#[transcript::task]
 pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
     // BEGIN SOLUTION midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64
     let reach = |c: i32| i64::from(c).abs() + i64::from(radius);

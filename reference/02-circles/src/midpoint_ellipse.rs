@@ -76,6 +76,7 @@ pub const MAX_SEMI_AXIS: i32 = 1 << 20;
 /// the centre). A negative semi-axis, one beyond [`MAX_SEMI_AXIS`], or an
 /// ellipse reaching beyond ±[`MAX_COORD`] plots nothing. The arithmetic is
 /// `i128`: `a²b²` alone needs 80 bits.
+#[transcript::task]
 pub fn midpoint_ellipse(centre: Pixel, a: i32, b: i32, mut plot: impl FnMut(Pixel)) {
     // BEGIN SOLUTION midpoint_ellipse: region 1 by columns from (0, b), region 2 by rows from (a, 0)
     let reach = |c: i32, r: i32| i64::from(c).abs() + i64::from(r);

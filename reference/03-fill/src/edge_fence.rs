@@ -11,6 +11,7 @@ use canvas::{Canvas, Pixel, Vec2, Viewport};
 /// Where the edge `a–b` crosses row `y`: the same formula, evaluated in
 /// the same order, as `scanline::crossing` (lower endpoint first, `f64`).
 #[must_use]
+#[transcript::task]
 pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
     let (lo, hi) = if a.y < b.y { (a, b) } else { (b, a) };
     let (lo_x, lo_y) = (f64::from(lo.x), f64::from(lo.y));
@@ -91,6 +92,7 @@ fn for_each_crossing(
 /// a NaN or infinite coordinate, or a buffer of more than
 /// [`Canvas::MAX_PIXELS`] pixels (no canvas is that large) fill nothing and
 /// return 0.
+#[transcript::task]
 pub fn edge_fill(
     vertices: &[Vec2],
     viewport: Viewport,
@@ -148,6 +150,7 @@ pub fn edge_fill(
 /// fence through a vertex ("Vertikale Gerade durch Schnittpunkt zweier
 /// Polygonkanten"), the column `⌈v.x⌉`; it may lie anywhere, also outside
 /// the polygon or the viewport.
+#[transcript::task]
 pub fn fence_fill(
     vertices: &[Vec2],
     fence: i32,

@@ -71,6 +71,7 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// Fewer than three vertices, or any NaN or infinite coordinate, fill
 /// nothing and report no row. Huge coordinates are fine: rows and spans are
 /// clipped to `viewport` before any pixel is visited.
+#[transcript::task]
 pub fn fill_spans(
     vertices: &[Vec2],
     viewport: Viewport,
@@ -153,6 +154,7 @@ pub fn fill_spans(
 
 /// An entry of the active edge table as [`fill_spans`] reports it: which
 /// edge, and where it crosses the row.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ActiveEdge {
     /// The edge from `vertices[edge]` to `vertices[edge + 1]` (the last

@@ -58,6 +58,7 @@ pub fn snap(v: f32) -> Option<i64> {
 
 /// One batch: up to [`LANES`] consecutive pixels of a row of the clipped
 /// bounding box, every lane computed on its own.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Batch {
     /// The row.
@@ -108,6 +109,7 @@ pub struct Batch {
 ///
 /// A position that is NaN, infinite or beyond ±[`MAX_COORD`] plots nothing
 /// and reports no batch.
+#[transcript::task]
 pub fn fill_triangle_vectorised(
     vertices: [Vertex; 3],
     viewport: Viewport,

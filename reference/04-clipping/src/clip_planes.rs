@@ -32,6 +32,7 @@ use crate::plane::{CLIP_NUDGE, ClipPlane};
 /// order right, left, top, bottom, far, near (`+x`, `−x`, `+y`, `−y`,
 /// `+z`, `−z`).
 #[must_use]
+#[transcript::task]
 pub fn clip_planes() -> [ClipPlane; 6] {
     // BEGIN SOLUTION clip_planes: list the six planes (n, -d) of the cube -w <= x, y, z <= w, outward normals, in the order +x, -x, +y, -y, +z, -z
     [
@@ -53,6 +54,7 @@ impl ClipPlane {
     /// a polygon lying in a face of the cube survives clipping. A point
     /// with a NaN coordinate is not inside (the comparison is false).
     #[must_use]
+    #[transcript::task]
     pub fn inside(self, v: Vec4) -> bool {
         // BEGIN SOLUTION clip_planes: the inside test v · p <= 0, on the plane included
         self.distance(v) <= 0.0
@@ -80,6 +82,7 @@ impl ClipPlane {
     /// `None` also for non-finite endpoints or distances (NaN, infinities,
     /// overflow).
     #[must_use]
+    #[transcript::task]
     pub fn intersect(self, a: Vec4, b: Vec4) -> Option<f32> {
         // BEGIN SOLUTION clip_planes: t = la / (la - lb) when exactly one endpoint is inside, nudged by CLIP_NUDGE towards the inside one and kept in [0, 1]
         let (la, lb) = (self.distance(a), self.distance(b));

@@ -42,6 +42,7 @@ use crate::window::{ClipWindow, Segment};
 /// [`ClipError::NonFinite`] for an endpoint with a NaN or infinite
 /// coordinate, [`ClipError::OutOfRange`] for one beyond ±[`MAX_COORD`]
 /// (`index` 0 for `from`, 1 for `to`).
+#[transcript::task]
 pub fn liang_barsky(segment: Segment, window: ClipWindow) -> Result<Option<Segment>, ClipError> {
     // BEGIN SOLUTION liang_barsky: check the endpoints, then narrow [t_in, t_out] = [0, 1] with p_k t <= q_k for the four borders
     for (index, p) in [segment.from, segment.to].into_iter().enumerate() {

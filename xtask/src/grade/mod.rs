@@ -22,6 +22,9 @@
 //! exited with status 0 and printed the random token the grader made for
 //! that run ([`outcome::judge`]; the test side is `crates/testkit-macros`),
 //! so student code that prints a passing summary and exits has not passed.
+//! In a topic decided by replay, graded from a stage, that process is not
+//! the one that ran the student's code ([`run`], `crates/transcript`): no
+//! process that ran it ever holds a token.
 
 mod build;
 pub mod class_report;
