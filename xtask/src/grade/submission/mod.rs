@@ -602,6 +602,15 @@ mod tests {
 
     /// An edition of one topic (no `reference/`): a task file `classify.rs`
     /// and a given file `raster.rs` whose doc comment mentions `todo!()`.
+    /// Copies the plain files under `from` to `to`.
+    fn copy_tree(from: &Path, to: &Path) {
+        for file in crate::files::files_under(from).unwrap() {
+            let text = fs::read(from.join(&file)).unwrap();
+            fs::create_dir_all(to.join(&file).parent().unwrap()).unwrap();
+            fs::write(to.join(&file), text).unwrap();
+        }
+    }
+
     fn edition(dir: &Path) -> PathBuf {
         let official = dir.join("official");
         let topic = official.join("exercises/06-x");
@@ -683,17 +692,27 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("xtask-staged-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         let submission = dir.join("anna");
-        let dda = PathBuf::from("exercises/01-lines/src/dda.rs");
+        // The tiny fixture course, whose `reference/` names its task file
+        // wherever this test runs (in a stage the course's own solutions
+        // hold no stub).
+        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let tiny = dir.join("tiny");
+        copy_tree(&manifest.join("tests/fixtures/tiny"), &tiny);
+        copy_tree(
+            &manifest.join("../crates/testkit-macros"),
+            &tiny.join("crates/testkit-macros"),
+        );
+        let dda = PathBuf::from("exercises/01-tiny/src/ops.rs");
         let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
         write(submission.join(&dda), "// mine\n");
         for config in ["insta.yaml", ".config/insta.yaml", ".insta.yaml"] {
             write(submission.join(config), "behavior:\n  force_pass: true\n");
         }
         write(
-            submission.join("exercises/01-lines/tests/proptest-regressions/dda.txt"),
+            submission.join("exercises/01-tiny/tests/proptest-regressions/double.txt"),
             "cc 0\n",
         );
-        let (files, _) = staged_files(&course(), &submission).unwrap();
+        let (files, _) = staged_files(&tiny, &submission).unwrap();
         for (to, from) in &files {
             let name = to.to_string_lossy();
             assert!(
