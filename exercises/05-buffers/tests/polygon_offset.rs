@@ -263,6 +263,54 @@ fn edges_behind_another_triangle_stay_hidden() {
     assert_the_front_triangle_hides_the_edges_behind(HiddenLineOffset::Fill(PolygonOffset::SLIDES));
 }
 
+/// The order of the passes: every fill first, then every outline. It
+/// shows where depths tie: a quad facing the viewer (depth 0.5 everywhere)
+/// cut along its diagonal, without an offset, so each outline fragment
+/// ties the fill under it and fails `LESS`. With all fills first, only the
+/// outline pixels outside both fills show, and the shared diagonal is
+/// hidden. Filling and outlining one triangle at a time lets the first
+/// triangle's outline onto the second's pixels before that fill comes,
+/// and the fill then ties and loses.
+///
+/// ```text
+///   3 +-------+ 2    first  [0, 1, 2]
+///     |     / |      second [0, 2, 3]
+///     |   /   |      the diagonal 0–2 lies in both fills
+///     | /     |
+///   0 +-------+ 1
+/// ```
+#[testkit::test]
+fn every_fill_comes_before_every_outline() {
+    let corners = [
+        grey(1.3, 1.2, 0.5),
+        grey(14.6, 1.4, 0.5),
+        grey(14.4, 9.7, 0.5),
+        grey(1.5, 9.6, 0.5),
+    ];
+    let halves = [
+        [corners[0], corners[1], corners[2]],
+        [corners[0], corners[2], corners[3]],
+    ];
+    let mut canvas = Canvas::new(16, 11);
+    hidden_line(&mut canvas, &halves, STYLE, HiddenLineOffset::None);
+    let mut filled = Vec::new();
+    for half in halves {
+        fill_triangle(half, canvas.viewport(), |f| filled.push(f.pixel));
+    }
+    let mut expected: Vec<Pixel> = halves
+        .iter()
+        .flat_map(|&half| outline_pixels(&canvas, half))
+        .filter(|p| !filled.contains(p))
+        .collect();
+    expected.dedup();
+    testkit::assert_pixels_eq(
+        &expected,
+        &canvas.pixels_not(Rgba::BLACK),
+        "every fill first, then every outline: without an offset an outline at depth 0.5 \
+         ties the fill under it and fails LESS, so only outline pixels outside both fills show",
+    );
+}
+
 #[testkit::test]
 fn degenerate_triangles_are_outlined_only_and_hostile_ones_ignored() {
     let mut canvas = Canvas::new(8, 8);
