@@ -124,12 +124,33 @@ fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
         DVec3::new(4.0, 4.0, 3.0),
     ];
     let top = span_at(flat_top, 4.0).expect("the top scanline of a flat top");
-    assert!(top.a.is_finite() && top.b.is_finite(), "{top:?}");
+    assert!(
+        top.a.is_finite() && top.b.is_finite(),
+        "a flat top at its own scanline y = 4: edge 1–2 is horizontal (y1 − y2 = 0), so `a` \
+         is vertex 2 (mid) itself, not the seed's formula divided by zero; yours a = (x {}, z \
+         {}), b = (x {}, z {})",
+        top.a.x,
+        top.a.y,
+        top.b.x,
+        top.b.y
+    );
     let xs = [top.a.x.min(top.b.x), top.a.x.max(top.b.x)];
-    assert_eq!(xs, [-4.0, 4.0], "the span is the top edge");
+    assert_eq!(
+        xs,
+        [-4.0, 4.0],
+        "the span of a flat top's top scanline is the top edge"
+    );
     let flat_bottom = flat_top.map(|v| DVec3::new(v.x, -v.y, v.z));
     let bottom = span_at(flat_bottom, -4.0).expect("the bottom scanline of a flat bottom");
-    assert!(bottom.a.is_finite() && bottom.b.is_finite(), "{bottom:?}");
+    assert!(
+        bottom.a.is_finite() && bottom.b.is_finite(),
+        "a flat bottom at its own scanline y = −4: from mid up vertex 1 is hi, so no edge \
+         1–2 is horizontal; yours a = (x {}, z {}), b = (x {}, z {})",
+        bottom.a.x,
+        bottom.a.y,
+        bottom.b.x,
+        bottom.b.y
+    );
 }
 
 #[testkit::test]
