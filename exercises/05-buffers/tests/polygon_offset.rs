@@ -86,7 +86,11 @@ fn slope_is_the_larger_partial_derivative() {
         grey(4.0, 0.0, 0.3),
         grey(0.0, 4.0, 0.5),
     ];
-    assert!((max_depth_slope(tri).unwrap() - 0.05).abs() < 1e-7);
+    let m = max_depth_slope(tri).unwrap();
+    assert!(
+        (m - 0.05).abs() < 1e-7,
+        "z = 0.5 − 0.05·x: m is the magnitude 0.05; yours {m}"
+    );
     // A triangle of constant depth has no slope.
     let tri = [
         grey(0.0, 0.0, 0.5),
@@ -188,7 +192,7 @@ fn offset_moves_the_fill_back_by_o() {
             let stored = canvas.depth(f.pixel).unwrap();
             assert!(
                 (stored - (f.depth + m)).abs() < 1e-6,
-                "{}: {stored} vs {} + {m}",
+                "{}: the fill pushed back by factor 1 stores z + m = {} + {m}; yours {stored}",
                 f.pixel,
                 f.depth
             );
@@ -509,6 +513,38 @@ fn a_coplanar_decal_fights_the_floor_without_an_offset() {
         ),
         testkit::image::Tolerance::EXACT,
     );
+    // Pixel by pixel: without an offset the decal shows exactly where its
+    // own interpolated depth is less than the floor's (LESS).
+    let (floor, decal) = floor_and_decal();
+    let mut floor_depth = std::collections::HashMap::new();
+    for triangle in floor {
+        fill_triangle(triangle, canvas.viewport(), |f| {
+            floor_depth.entry(f.pixel).or_insert(f.depth);
+        });
+    }
+    for triangle in decal {
+        fill_triangle(triangle, canvas.viewport(), |f| {
+            let under = floor_depth[&f.pixel];
+            let wins = f.depth < under;
+            let shows = canvas
+                .get(f.pixel)
+                .is_some_and(|c| c.approx_eq(DECAL, 0.01));
+            assert!(
+                shows == wins,
+                "{}: the decal's depth {} is {} the floor's {under}, so LESS must {}; yours \
+                 shows the {}",
+                f.pixel,
+                f.depth,
+                if wins { "less than" } else { "not less than" },
+                if wins {
+                    "draw the decal"
+                } else {
+                    "keep the floor"
+                },
+                if shows { "decal" } else { "floor" },
+            );
+        });
+    }
     let shown = covered
         .iter()
         .filter(|&&p| canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)))
