@@ -231,6 +231,11 @@ pub fn blend(src: Rgba, dst: Rgba) -> Rgba {
 /// multiplied by `c`, over the canvas's colour there. Pixels outside the
 /// canvas are ignored; the depth plane is untouched.
 ///
+/// Blend with this module's [`blend`], not the course's
+/// [`Canvas::blend`]: that one is a coverage write with another alpha,
+/// `s + old.a · (1 − s)` (1 over an opaque background, where `blend`
+/// gives `s·s + 1 − s`, e.g. 0.89 for `s = 1/8`), and rounds `s` to 8 bits.
+///
 /// On a black canvas a white triangle comes out as jittered accumulation
 /// draws it; two triangles sharing an edge do not (the seam).
 pub fn smooth_triangle(canvas: &mut Canvas, vertices: [Vec2; 3], colour: Rgba) {

@@ -92,9 +92,11 @@ pub enum PresentError {
 /// renderer finished by tick `refreshes · period` (a frame finishing at
 /// exactly that tick counts).
 ///
-/// Step through the ticks `0, 1, …, refreshes · period`; at each tick `t`
-/// first let the renderer finish a frame due at `t` and the swap of
-/// `mode` happen, then scan the row of `t` (if `t` is not in a blank).
+/// Step through the ticks `0, 1, …, refreshes · period` (the last one
+/// included); at each tick `t`, in this order: the renderer finishes a
+/// frame due at `t`; the swap of `mode` happens; the renderer starts the
+/// next frame if it has a free buffer; the row of `t` is scanned (if `t`
+/// is not in a blank).
 ///
 /// # Errors
 /// [`PresentError::Empty`] for a `height`, `vblank` or `render` of 0.

@@ -121,12 +121,16 @@ impl StencilState {
     /// Whether the stencil test passes against the `stored` value:
     /// `(reference & value_mask) OP (stored & value_mask)`, the masked
     /// reference on the left.
+    ///
+    /// The eight comparisons are written out here, one arm per [`Compare`],
+    /// not taken from Task 1's `Compare::passes`: each task is graded on
+    /// its own, and on two `u8`s each comparison is one operator.
     #[must_use]
     pub fn test(&self, stored: u8) -> bool {
         // Unused until you write the body:
         let _ = &stored;
         todo!(
-            "stencil: mask both the reference and the stored value, then compare reference OP stored"
+            "stencil: mask the reference and the stored value, then one arm per Compare: reference OP stored (do not call Task 1's Compare::passes)"
         )
     }
 }

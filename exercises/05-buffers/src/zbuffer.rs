@@ -71,9 +71,9 @@ impl Compare {
         Self::Always,
     ];
 
-    /// Whether `incoming OP stored` holds: a fragment's depth against the
-    /// stored depth, or a masked stencil reference against the masked
-    /// stored stencil value.
+    /// Whether `incoming OP stored` holds: here a fragment's depth against
+    /// the stored depth (Task 5's stencil test writes the same eight
+    /// comparisons out for its masked `u8` values).
     ///
     /// The comparisons are those of `PartialOrd`: for floats NaN compares
     /// unequal to everything, so only `NotEqual` and `Always` pass a NaN

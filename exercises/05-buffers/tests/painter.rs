@@ -147,16 +147,26 @@ fn paint_leaves_the_depth_plane_alone_and_skips_bad_triangles() {
         &mut canvas,
         &[bad, far_away, flat(0.0, 0.0, 3.0, 0.4, Rgba::GREEN)],
     );
+    let drawn = canvas.pixels_not(Rgba::BLACK);
+    let red = drawn.iter().find(|&&p| canvas.get(p) != Some(Rgba::GREEN));
     assert!(
-        canvas
-            .pixels_not(Rgba::BLACK)
-            .iter()
-            .all(|&p| canvas.get(p) == Some(Rgba::GREEN))
+        red.is_none(),
+        "the red triangles (one with a NaN depth, one beyond the canvas) must be skipped; \
+         yours drew something other than the green one at {}",
+        red.map_or(String::new(), |p| p.to_string())
     );
-    assert!(!canvas.pixels_not(Rgba::BLACK).is_empty());
     assert!(
-        canvas
-            .enumerate()
-            .all(|(p, _)| canvas.depth(p) == Some(1.0))
+        !drawn.is_empty(),
+        "the good green triangle must still be drawn after the bad ones"
     );
+    let written = canvas
+        .enumerate()
+        .find(|&(p, _)| canvas.depth(p) != Some(1.0));
+    if let Some((p, _)) = written {
+        panic!(
+            "paint uses no depth buffer, so the depth plane must stay at its clear value 1; \
+             yours holds {} at {p}",
+            canvas.depth(p).unwrap_or(f32::NAN)
+        );
+    }
 }

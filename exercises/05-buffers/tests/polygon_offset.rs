@@ -86,7 +86,11 @@ fn slope_is_the_larger_partial_derivative() {
         grey(4.0, 0.0, 0.3),
         grey(0.0, 4.0, 0.5),
     ];
-    assert!((max_depth_slope(tri).unwrap() - 0.05).abs() < 1e-7);
+    let m = max_depth_slope(tri).unwrap();
+    assert!(
+        (m - 0.05).abs() < 1e-7,
+        "z = 0.5 − 0.05·x: m is the magnitude 0.05; yours {m}"
+    );
     // A triangle of constant depth has no slope.
     let tri = [
         grey(0.0, 0.0, 0.5),
@@ -188,7 +192,7 @@ fn offset_moves_the_fill_back_by_o() {
             let stored = canvas.depth(f.pixel).unwrap();
             assert!(
                 (stored - (f.depth + m)).abs() < 1e-6,
-                "{}: {stored} vs {} + {m}",
+                "{}: the fill pushed back by factor 1 stores z + m = {} + {m}; yours {stored}",
                 f.pixel,
                 f.depth
             );
@@ -261,6 +265,54 @@ fn assert_the_front_triangle_hides_the_edges_behind(offset: HiddenLineOffset) {
 #[testkit::test]
 fn edges_behind_another_triangle_stay_hidden() {
     assert_the_front_triangle_hides_the_edges_behind(HiddenLineOffset::Fill(PolygonOffset::SLIDES));
+}
+
+/// The order of the passes: every fill first, then every outline. It
+/// shows where depths tie: a quad facing the viewer (depth 0.5 everywhere)
+/// cut along its diagonal, without an offset, so each outline fragment
+/// ties the fill under it and fails `LESS`. With all fills first, only the
+/// outline pixels outside both fills show, and the shared diagonal is
+/// hidden. Filling and outlining one triangle at a time lets the first
+/// triangle's outline onto the second's pixels before that fill comes,
+/// and the fill then ties and loses.
+///
+/// ```text
+///   3 +-------+ 2    first  [0, 1, 2]
+///     |     / |      second [0, 2, 3]
+///     |   /   |      the diagonal 0–2 lies in both fills
+///     | /     |
+///   0 +-------+ 1
+/// ```
+#[testkit::test]
+fn every_fill_comes_before_every_outline() {
+    let corners = [
+        grey(1.3, 1.2, 0.5),
+        grey(14.6, 1.4, 0.5),
+        grey(14.4, 9.7, 0.5),
+        grey(1.5, 9.6, 0.5),
+    ];
+    let halves = [
+        [corners[0], corners[1], corners[2]],
+        [corners[0], corners[2], corners[3]],
+    ];
+    let mut canvas = Canvas::new(16, 11);
+    hidden_line(&mut canvas, &halves, STYLE, HiddenLineOffset::None);
+    let mut filled = Vec::new();
+    for half in halves {
+        fill_triangle(half, canvas.viewport(), |f| filled.push(f.pixel));
+    }
+    let mut expected: Vec<Pixel> = halves
+        .iter()
+        .flat_map(|&half| outline_pixels(&canvas, half))
+        .filter(|p| !filled.contains(p))
+        .collect();
+    expected.dedup();
+    testkit::assert_pixels_eq(
+        &expected,
+        &canvas.pixels_not(Rgba::BLACK),
+        "every fill first, then every outline: without an offset an outline at depth 0.5 \
+         ties the fill under it and fails LESS, so only outline pixels outside both fills show",
+    );
 }
 
 #[testkit::test]
@@ -461,6 +513,38 @@ fn a_coplanar_decal_fights_the_floor_without_an_offset() {
         ),
         testkit::image::Tolerance::EXACT,
     );
+    // Pixel by pixel: without an offset the decal shows exactly where its
+    // own interpolated depth is less than the floor's (LESS).
+    let (floor, decal) = floor_and_decal();
+    let mut floor_depth = std::collections::HashMap::new();
+    for triangle in floor {
+        fill_triangle(triangle, canvas.viewport(), |f| {
+            floor_depth.entry(f.pixel).or_insert(f.depth);
+        });
+    }
+    for triangle in decal {
+        fill_triangle(triangle, canvas.viewport(), |f| {
+            let under = floor_depth[&f.pixel];
+            let wins = f.depth < under;
+            let shows = canvas
+                .get(f.pixel)
+                .is_some_and(|c| c.approx_eq(DECAL, 0.01));
+            assert!(
+                shows == wins,
+                "{}: the decal's depth {} is {} the floor's {under}, so LESS must {}; yours \
+                 shows the {}",
+                f.pixel,
+                f.depth,
+                if wins { "less than" } else { "not less than" },
+                if wins {
+                    "draw the decal"
+                } else {
+                    "keep the floor"
+                },
+                if shows { "decal" } else { "floor" },
+            );
+        });
+    }
     let shown = covered
         .iter()
         .filter(|&&p| canvas.get(p).is_some_and(|c| c.approx_eq(DECAL, 0.01)))

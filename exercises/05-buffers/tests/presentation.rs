@@ -44,7 +44,8 @@ fn without_vsync_the_swap_tears_the_refresh() {
     );
     assert_eq!(
         presented.finished, 5,
-        "without VSYNC the renderer never waits: frames at ticks 7, 14, 21, 28, 35 ≤ 40"
+        "without VSYNC the renderer never waits: frames done at ticks 7, 14, 21, 28, 35, \
+         counted up to tick 4 · 10 = 40 inclusive"
     );
 }
 
@@ -216,7 +217,14 @@ proptest! {
                 prop_assert_eq!(frame, newest_by(t, timing.render), "refresh {}, row {} (tick {})", r, row, t);
             }
         }
-        prop_assert_eq!(u64::from(presented.finished), refreshes as u64 * period / u64::from(timing.render), "the renderer never waits");
+        let end = u64::from(refreshes) * period;
+        let expected = end / u64::from(timing.render);
+        prop_assert!(
+            u64::from(presented.finished) == expected,
+            "`finished` counts the frames done by tick refreshes · period = {} inclusive; without \
+             VSYNC the renderer never waits, so ⌊{} / {}⌋ = {}; yours {}",
+            end, end, timing.render, expected, presented.finished
+        );
     }
 
     /// Triple buffering: the renderer never waits, and each refresh shows
@@ -229,7 +237,14 @@ proptest! {
             let expected = (r as u64 * period).checked_sub(1).and_then(|b| newest_by(b, timing.render));
             prop_assert!(rows.iter().all(|&f| f == expected), "refresh {}: {:?}, expected every row {:?}", r, rows, expected);
         }
-        prop_assert_eq!(u64::from(presented.finished), refreshes as u64 * period / u64::from(timing.render), "the renderer never waits");
+        let end = u64::from(refreshes) * period;
+        let expected = end / u64::from(timing.render);
+        prop_assert!(
+            u64::from(presented.finished) == expected,
+            "`finished` counts the frames done by tick refreshes · period = {} inclusive; with a \
+             third buffer the renderer never waits, so ⌊{} / {}⌋ = {}; yours {}",
+            end, end, timing.render, expected, presented.finished
+        );
     }
 
     /// VSYNC: no refresh is torn, frames appear in order, and the renderer
@@ -243,7 +258,11 @@ proptest! {
         let free = run(SwapMode::Immediate, timing, refreshes);
         prop_assert_eq!(presented.rows.len(), refreshes as usize, "one list of rows per refresh");
         prop_assert!(presented.rows.iter().all(|rows| rows.len() == timing.height as usize), "height rows per refresh");
-        prop_assert!(presented.finished <= free.finished);
+        prop_assert!(
+            presented.finished <= free.finished,
+            "the VSYNC renderer waits, so it finishes no more frames than without VSYNC ({}); yours {}",
+            free.finished, presented.finished
+        );
         let (period, height, render) = (timing.period(), u64::from(timing.height), u64::from(timing.render));
         let first_swap = if render % period >= height { render } else { render / period * period + height };
         for (r, rows) in presented.rows.iter().enumerate() {
@@ -252,7 +271,8 @@ proptest! {
         }
         prop_assert!(
             u64::from(presented.finished) >= u64::from(render <= refreshes as u64 * period),
-            "frame 0 is finished at tick {} ≤ {}", render, refreshes as u64 * period
+            "frame 0 is due at tick {} ≤ refreshes · period = {}, and `finished` counts the frames \
+             done by that tick inclusive; yours {}", render, refreshes as u64 * period, presented.finished
         );
         let mut last = None;
         for (r, rows) in presented.rows.iter().enumerate() {

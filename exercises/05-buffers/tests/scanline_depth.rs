@@ -65,7 +65,13 @@ fn span_above_the_middle_vertex_has_vertex_1_at_the_top() {
     );
     // At the middle vertex's own scanline, a is that vertex.
     let at_mid = span_at(known_triangle(), 2.0).unwrap();
-    assert!(close(at_mid.a.x, 8.0, 1e-15) && close(at_mid.a.y, plane_z(8.0, 2.0), 1e-15));
+    assert!(
+        close(at_mid.a.x, 8.0, 1e-15) && close(at_mid.a.y, plane_z(8.0, 2.0), 1e-15),
+        "at the middle vertex's own scanline y = 2, a is that vertex (8, z = 23); yours \
+         (x {}, z {})",
+        at_mid.a.x,
+        at_mid.a.y
+    );
 }
 
 #[testkit::test]
@@ -95,12 +101,20 @@ fn depth_in_span_follows_the_zp_formula() {
         b: DVec2::new(10.0, 0.1),
     };
     // z_p = z_b − (z_b − z_a)(x_b − x_p)/(x_b − x_a)
-    assert_eq!(depth_in_span(&span, 10.0), 0.1);
-    assert!(close(depth_in_span(&span, 2.0), 0.5, 1e-15));
-    assert!(close(depth_in_span(&span, 6.0), 0.3, 1e-15));
+    for (x_p, expected) in [(10.0, 0.1), (2.0, 0.5), (6.0, 0.3)] {
+        let yours = depth_in_span(&span, x_p);
+        assert!(
+            close(yours, expected, 1e-15),
+            "z_p at x_p = {x_p} between a = (2, 0.5) and b = (10, 0.1): {expected}; yours {yours}"
+        );
+    }
     // On the known triangle, the span gives the plane: z(3, 1) = 10.
     let known = span_at(known_triangle(), 1.0).unwrap();
-    assert!(close(depth_in_span(&known, 3.0), 10.0, 1e-14));
+    let yours = depth_in_span(&known, 3.0);
+    assert!(
+        close(yours, 10.0, 1e-14),
+        "on the plane z = 2x + 3y + 1, z_p at (3, 1) is 10; yours {yours}"
+    );
     // A span of zero width (at a vertex) gives z_a, never NaN.
     let point = SpanEnds {
         y: 0.0,
@@ -124,12 +138,33 @@ fn flat_top_and_flat_bottom_have_spans_on_every_scanline() {
         DVec3::new(4.0, 4.0, 3.0),
     ];
     let top = span_at(flat_top, 4.0).expect("the top scanline of a flat top");
-    assert!(top.a.is_finite() && top.b.is_finite(), "{top:?}");
+    assert!(
+        top.a.is_finite() && top.b.is_finite(),
+        "a flat top at its own scanline y = 4: edge 1–2 is horizontal (y1 − y2 = 0), so `a` \
+         is vertex 2 (mid) itself, not the seed's formula divided by zero; yours a = (x {}, z \
+         {}), b = (x {}, z {})",
+        top.a.x,
+        top.a.y,
+        top.b.x,
+        top.b.y
+    );
     let xs = [top.a.x.min(top.b.x), top.a.x.max(top.b.x)];
-    assert_eq!(xs, [-4.0, 4.0], "the span is the top edge");
+    assert_eq!(
+        xs,
+        [-4.0, 4.0],
+        "the span of a flat top's top scanline is the top edge"
+    );
     let flat_bottom = flat_top.map(|v| DVec3::new(v.x, -v.y, v.z));
     let bottom = span_at(flat_bottom, -4.0).expect("the bottom scanline of a flat bottom");
-    assert!(bottom.a.is_finite() && bottom.b.is_finite(), "{bottom:?}");
+    assert!(
+        bottom.a.is_finite() && bottom.b.is_finite(),
+        "a flat bottom at its own scanline y = −4: from mid up vertex 1 is hi, so no edge \
+         1–2 is horizontal; yours a = (x {}, z {}), b = (x {}, z {})",
+        bottom.a.x,
+        bottom.a.y,
+        bottom.b.x,
+        bottom.b.y
+    );
 }
 
 #[testkit::test]
@@ -158,7 +193,11 @@ fn scanlines_outside_and_bad_triangles_have_no_span() {
 #[testkit::test]
 fn plane_of_the_known_triangle() {
     let plane = DepthPlane::try_from_triangle(known_triangle()).unwrap();
-    assert!(close(plane.depth_at(DVec2::new(3.0, 1.0)), 10.0, 1e-15));
+    let yours = plane.depth_at(DVec2::new(3.0, 1.0));
+    assert!(
+        close(yours, 10.0, 1e-15),
+        "the plane z = 2x + 3y + 1 at (3, 1) is 10; yours {yours}"
+    );
     assert!(close(
         plane.depth_at(DVec2::new(-7.0, 11.0)),
         plane_z(-7.0, 11.0),

@@ -6,7 +6,7 @@ use buffers::raster::fill_triangle;
 use buffers::stencil::{StencilOp, StencilOutcome, StencilState, stencil_fragment, write_masked};
 use buffers::zbuffer::Compare;
 use canvas::{Canvas, Pixel, Rgba, Vertex};
-use common::{fragment, fragments_of, vertex};
+use common::{assert_same_canvas, fragment, fragments_of, vertex};
 use proptest::prelude::*;
 
 #[testkit::test]
@@ -66,8 +66,19 @@ fn functions_compare_the_masked_reference_with_the_masked_stored_value() {
         "mask 0xF0"
     );
     // The reference is on the left: LESS passes where ref < stored.
-    assert!(passes(Less, 1, 2, 0xFF) && !passes(Less, 2, 1, 0xFF));
-    assert!(passes(Greater, 2, 1, 0xFF) && !passes(Greater, 1, 2, 0xFF));
+    for (func, reference, stored, expected) in [
+        (Less, 1, 2, true),
+        (Less, 2, 1, false),
+        (Greater, 2, 1, true),
+        (Greater, 1, 2, false),
+    ] {
+        assert_eq!(
+            passes(func, reference, stored, 0xFF),
+            expected,
+            "{func:?} with reference {reference} and stored {stored}: the reference is on the \
+             left, `reference OP stored`"
+        );
+    }
     assert_eq!(StencilState::DEFAULT.func, Always);
 }
 
@@ -153,77 +164,94 @@ fn telling_state(func: Compare) -> StencilState {
     }
 }
 
+/// What one pixel holds, named for the messages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Held {
+    stencil: u8,
+    colour: Rgba,
+    depth: f32,
+}
+
+fn held(canvas: &Canvas, p: Pixel) -> Held {
+    Held {
+        stencil: canvas.stencil(p).unwrap(),
+        colour: canvas.get(p).unwrap(),
+        depth: canvas.depth(p).unwrap(),
+    }
+}
+
 #[testkit::test]
 fn each_outcome_applies_its_own_operation() {
     let p = Pixel::new(0, 0);
+    // Stored: stencil 10, depth 0.5, colour black. The three ops give
+    // sfail → 0, dpfail → 11, dppass → 42.
     let setup = || {
         let mut canvas = Canvas::new(1, 1);
         canvas.set_stencil(p, 10);
         canvas.set_depth(p, 0.5);
         canvas
     };
-    // Stencil fails: sfail, no colour, no depth.
-    let mut c = setup();
-    let out = stencil_fragment(
-        &mut c,
-        fragment(0, 0, 0.1, Rgba::RED),
-        &telling_state(Compare::Never),
-        true,
-    );
-    assert_eq!(out, Some(StencilOutcome::StencilFail));
-    assert_eq!(
-        (c.stencil(p), c.get(p), c.depth(p)),
-        (Some(0), Some(Rgba::BLACK), Some(0.5))
-    );
-    // Stencil passes, depth fails (0.9 is behind 0.5): dpfail.
-    let mut c = setup();
-    let out = stencil_fragment(
-        &mut c,
-        fragment(0, 0, 0.9, Rgba::RED),
-        &telling_state(Compare::Always),
-        true,
-    );
-    assert_eq!(out, Some(StencilOutcome::DepthFail));
-    assert_eq!(
-        (c.stencil(p), c.get(p), c.depth(p)),
-        (Some(11), Some(Rgba::BLACK), Some(0.5))
-    );
-    // Both pass: dppass, colour and depth written.
-    let mut c = setup();
-    let out = stencil_fragment(
-        &mut c,
-        fragment(0, 0, 0.1, Rgba::RED),
-        &telling_state(Compare::Always),
-        true,
-    );
-    assert_eq!(out, Some(StencilOutcome::DepthPass));
-    assert_eq!(
-        (c.stencil(p), c.get(p), c.depth(p)),
-        (Some(42), Some(Rgba::RED), Some(0.1))
-    );
-    // Depth test off: the farther fragment passes, and no depth is written.
-    let mut c = setup();
-    let out = stencil_fragment(
-        &mut c,
-        fragment(0, 0, 0.9, Rgba::RED),
-        &telling_state(Compare::Always),
-        false,
-    );
-    assert_eq!(out, Some(StencilOutcome::DepthPass));
-    assert_eq!(
-        (c.stencil(p), c.get(p), c.depth(p)),
-        (Some(42), Some(Rgba::RED), Some(0.5))
-    );
-    // Equal depth fails LESS.
-    let mut c = setup();
-    let out = stencil_fragment(
-        &mut c,
-        fragment(0, 0, 0.5, Rgba::RED),
-        &telling_state(Compare::Always),
-        true,
-    );
-    assert_eq!(out, Some(StencilOutcome::DepthFail));
-    // Outside the canvas: nothing.
+    let cases = [
+        (
+            "the stencil test fails (NEVER): sfail (ZERO), nothing drawn",
+            Compare::Never,
+            0.1,
+            true,
+            StencilOutcome::StencilFail,
+            (0, Rgba::BLACK, 0.5),
+        ),
+        (
+            "the stencil test passes, depth 0.9 is behind the stored 0.5: dpfail (INCR), nothing drawn",
+            Compare::Always,
+            0.9,
+            true,
+            StencilOutcome::DepthFail,
+            (11, Rgba::BLACK, 0.5),
+        ),
+        (
+            "the stencil test passes, depth 0.5 equals the stored 0.5 and fails LESS: dpfail (INCR)",
+            Compare::Always,
+            0.5,
+            true,
+            StencilOutcome::DepthFail,
+            (11, Rgba::BLACK, 0.5),
+        ),
+        (
+            "both tests pass (depth 0.1 before 0.5): dppass (REPLACE 42), colour and depth written",
+            Compare::Always,
+            0.1,
+            true,
+            StencilOutcome::DepthPass,
+            (42, Rgba::RED, 0.1),
+        ),
+        (
+            "the depth test is off, so depth 0.9 passes: dppass (REPLACE 42), colour written, depth not",
+            Compare::Always,
+            0.9,
+            false,
+            StencilOutcome::DepthPass,
+            (42, Rgba::RED, 0.5),
+        ),
+    ];
+    for (rule, func, depth, depth_test, outcome, (stencil, colour, stored_depth)) in cases {
+        let mut c = setup();
+        let out = stencil_fragment(
+            &mut c,
+            fragment(0, 0, depth, Rgba::RED),
+            &telling_state(func),
+            depth_test,
+        );
+        assert!(
+            out == Some(outcome),
+            "{rule}: the outcome is {outcome:?}; yours {out:?}"
+        );
+        let expected = Held {
+            stencil,
+            colour,
+            depth: stored_depth,
+        };
+        assert_eq!(held(&c, p), expected, "{rule}: the pixel afterwards");
+    }
     let mut c = setup();
     let out = stencil_fragment(
         &mut c,
@@ -231,23 +259,144 @@ fn each_outcome_applies_its_own_operation() {
         &telling_state(Compare::Always),
         true,
     );
-    assert_eq!(out, None);
-    assert_eq!(c, setup());
+    assert_eq!(out, None, "a pixel outside the canvas has no outcome");
+    assert_same_canvas(&setup(), &c, "a pixel outside the canvas changes nothing");
 }
 
+/// OpenGL's eight stencil operations, written out for the oracle.
+fn op_result(op: StencilOp, stored: u8, reference: u8) -> u8 {
+    match op {
+        StencilOp::Keep => stored,
+        StencilOp::Zero => 0,
+        StencilOp::Replace => reference,
+        StencilOp::Incr => stored.saturating_add(1),
+        StencilOp::IncrWrap => stored.wrapping_add(1),
+        StencilOp::Decr => stored.saturating_sub(1),
+        StencilOp::DecrWrap => stored.wrapping_sub(1),
+        StencilOp::Invert => !stored,
+    }
+}
+
+/// Which slot's operation, with or without the write mask, gives `got`:
+/// a hint for the message.
+fn explain(got: u8, state: &StencilState, stored: u8, slot: usize) -> String {
+    let slots = [
+        ("stencil_fail", state.stencil_fail),
+        ("depth_fail", state.depth_fail),
+        ("depth_pass", state.depth_pass),
+    ];
+    let (name, op) = slots[slot];
+    if op_result(op, stored, state.reference) == got {
+        return format!("which is what {name} ({op:?}) gives without the write mask");
+    }
+    for (other, (name, op)) in slots.into_iter().enumerate() {
+        let new = op_result(op, stored, state.reference);
+        if other != slot && (stored & !state.write_mask) | (new & state.write_mask) == got {
+            return format!("which is what {name} ({op:?}) gives through the write mask");
+        }
+        if other != slot && new == got {
+            return format!("which is what {name} ({op:?}) gives without the write mask");
+        }
+    }
+    "which none of the three operations gives".to_owned()
+}
+
+/// Every outcome, every operation in every slot, a partial write mask:
+/// the stored value becomes `(old & !wm) | (op(old) & wm)` with the op of
+/// the outcome. When both tests would fail, the stencil test comes first
+/// and `stencil_fail` applies.
 #[testkit::test]
-fn operations_write_through_the_write_mask() {
+fn every_outcome_writes_its_own_operation_through_the_write_mask() {
     let p = Pixel::new(0, 0);
-    let mut canvas = Canvas::new(1, 1);
-    canvas.set_stencil(p, 0b1111_0000);
-    let state = StencilState {
-        reference: 0b0101_0101,
-        write_mask: 0b0011_1100,
-        depth_pass: StencilOp::Replace,
-        ..StencilState::DEFAULT
-    };
-    stencil_fragment(&mut canvas, fragment(0, 0, 0.5, Rgba::WHITE), &state, false);
-    assert_eq!(canvas.stencil(p), Some(0b1101_0100));
+    let (stored, reference, write_mask) = (0b1010_0110, 0b0101_1001, 0b0011_1100);
+    // (what happens, stencil function, fragment depth, depth test on,
+    // outcome, slot 0 = stencil_fail, 1 = depth_fail, 2 = depth_pass)
+    let cases = [
+        (
+            "the stencil test fails (GREATER: ref 89 > stored 166 is false), the depth test would pass",
+            Compare::Greater,
+            0.1,
+            true,
+            StencilOutcome::StencilFail,
+            0,
+        ),
+        (
+            "both tests fail (the stencil test comes first)",
+            Compare::Greater,
+            0.9,
+            true,
+            StencilOutcome::StencilFail,
+            0,
+        ),
+        (
+            "the stencil test passes (LESS: 89 < 166), the depth test fails (0.9 behind 0.5)",
+            Compare::Less,
+            0.9,
+            true,
+            StencilOutcome::DepthFail,
+            1,
+        ),
+        (
+            "both tests pass (0.1 before 0.5)",
+            Compare::Less,
+            0.1,
+            true,
+            StencilOutcome::DepthPass,
+            2,
+        ),
+        (
+            "the stencil test passes, the depth test is off",
+            Compare::Less,
+            0.9,
+            false,
+            StencilOutcome::DepthPass,
+            2,
+        ),
+    ];
+    for (what, func, depth, depth_test, outcome, slot) in cases {
+        for stencil_fail in StencilOp::ALL {
+            for depth_fail in StencilOp::ALL {
+                for depth_pass in StencilOp::ALL {
+                    let state = StencilState {
+                        func,
+                        reference,
+                        value_mask: 0xFF,
+                        write_mask,
+                        stencil_fail,
+                        depth_fail,
+                        depth_pass,
+                    };
+                    let mut canvas = Canvas::new(1, 1);
+                    canvas.set_stencil(p, stored);
+                    canvas.set_depth(p, 0.5);
+                    let out = stencil_fragment(
+                        &mut canvas,
+                        fragment(0, 0, depth, Rgba::RED),
+                        &state,
+                        depth_test,
+                    );
+                    assert!(
+                        out == Some(outcome),
+                        "{what}: the outcome is {outcome:?}; yours {out:?}"
+                    );
+                    let (name, op) = [
+                        ("stencil_fail", stencil_fail),
+                        ("depth_fail", depth_fail),
+                        ("depth_pass", depth_pass),
+                    ][slot];
+                    let new = op_result(op, stored, reference);
+                    let expected = (stored & !write_mask) | (new & write_mask);
+                    let got = canvas.stencil(p).unwrap();
+                    assert!(
+                        got == expected,
+                        "{what}: {name} ({op:?}) applies through the write mask {write_mask:#010b}: \
+                         stored {stored:#010b} becomes {expected:#010b}; yours {got:#010b}, {}",
+                        explain(got, &state, stored, slot)
+                    );
+                }
+            }
+        }
+    }
 }
 
 fn at(x: f32, y: f32) -> Vertex {

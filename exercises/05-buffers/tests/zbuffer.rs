@@ -6,7 +6,7 @@ mod common;
 use buffers::raster::fill_triangle;
 use buffers::zbuffer::{Compare, DepthRange, DepthState, clear, depth_test};
 use canvas::{Canvas, Fragment, Pixel, Rgba};
-use common::{fragment, interpenetrating_triangles, nearest_fragment_picture};
+use common::{assert_same_canvas, fragment, interpenetrating_triangles, nearest_fragment_picture};
 use proptest::prelude::*;
 
 const RED: Rgba = Rgba::RED;
@@ -228,7 +228,11 @@ fn clear_sets_colour_and_clamped_depth_everywhere() {
         clear(&mut canvas, RED, f32::NAN).is_err(),
         "NaN clear depth"
     );
-    assert_eq!(canvas, before, "a failed clear changed the canvas");
+    assert_same_canvas(
+        &before,
+        &canvas,
+        "a clear with a NaN depth must change nothing",
+    );
 }
 
 #[testkit::test]
@@ -295,15 +299,53 @@ fn bad_fragments_are_discarded() {
         fragment(0, 2, 0.5, RED),
         fragment(i32::MAX, i32::MIN, 0.5, RED),
     ] {
-        assert!(!depth_test(&mut canvas, f, &always), "{f:?} passed");
+        assert!(
+            !depth_test(&mut canvas, f, &always),
+            "a fragment at {} with depth {} must be discarded (outside the canvas, or a depth \
+             that is NaN or outside [0, 1]); yours passed it",
+            f.pixel,
+            f.depth
+        );
     }
-    assert_eq!(
-        canvas,
-        Canvas::new(2, 2),
-        "a discarded fragment changed the canvas"
+    assert_same_canvas(
+        &Canvas::new(2, 2),
+        &canvas,
+        "a discarded fragment must change nothing",
     );
     // A good fragment after them passes.
     assert!(depth_test(&mut canvas, fragment(1, 1, 0.5, RED), &always));
+}
+
+/// `[0, 1]` includes both ends: a fragment exactly on the far plane
+/// (depth 1) passes `LEQUAL` against a cleared buffer (1), one exactly on
+/// the near plane (depth 0) passes `GEQUAL` against a stored 0.
+#[testkit::test]
+fn fragments_at_depth_zero_and_one_are_inside_the_range() {
+    let p = Pixel::new(0, 0);
+    for (func, depth, stored) in [
+        (Compare::LEqual, 1.0, 1.0),
+        (Compare::Equal, 1.0, 1.0),
+        (Compare::GEqual, 0.0, 0.0),
+        (Compare::Equal, 0.0, 0.0),
+    ] {
+        let mut canvas = Canvas::new(1, 1);
+        canvas.set_depth(p, stored);
+        let passed = depth_test(
+            &mut canvas,
+            fragment(0, 0, depth, RED),
+            &DepthState::with_func(func),
+        );
+        assert!(
+            passed && canvas.get(p) == Some(RED),
+            "depth {depth:.1} lies in [0, 1] (both ends included) and passes {func:?} against the \
+             stored {stored:.1}: it must be drawn; yours returned {passed} and the pixel is {}",
+            if canvas.get(p) == Some(RED) {
+                "red"
+            } else {
+                "not red"
+            }
+        );
+    }
 }
 
 fn zbuffer_scene() -> Canvas {

@@ -8,12 +8,19 @@
 //! (`DVec3` = `(x, y, z)`), so that the two ways agree to ~1e-12.
 //!
 //! ```text
-//!        1 (top)                 ys < y_mid: vertex 1 is the bottom vertex
-//!        /\                      ys ≥ y_mid: vertex 1 is the top vertex
-//!   a  /    \  b     ← scanline ys, a on the short edge 1–2, b on the
-//!     2--     \        long edge 1–3, p between them
-//!         --   \
-//!            -- 3
+//!   ys ≥ y_mid: vertex 1 is hi           ys < y_mid: vertex 1 is lo
+//!   (y up: the top of the drawing is the largest y)
+//!
+//!          1 = hi                               3 = hi
+//!         / \                                  / \
+//!      a /-p-\ b   ← ys                       /   \
+//!       /     \                              /     \
+//!      2 .     \                            2 .     \
+//!   = mid  .    \                        = mid  . a-p-\ b   ← ys
+//!             .  3 = lo                            .  1 = lo
+//!
+//!   a on the short edge 1–2, b on the long edge 1–3, p between them;
+//!   the dotted edge is the one the scanline does not cross.
 //! ```
 
 use glam::{DVec2, DVec3};

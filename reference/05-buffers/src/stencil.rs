@@ -130,11 +130,24 @@ impl StencilState {
     /// Whether the stencil test passes against the `stored` value:
     /// `(reference & value_mask) OP (stored & value_mask)`, the masked
     /// reference on the left.
+    ///
+    /// The eight comparisons are written out here, one arm per [`Compare`],
+    /// not taken from Task 1's `Compare::passes`: each task is graded on
+    /// its own, and on two `u8`s each comparison is one operator.
     #[must_use]
     pub fn test(&self, stored: u8) -> bool {
-        // BEGIN SOLUTION stencil: mask both the reference and the stored value, then compare reference OP stored
-        self.func
-            .passes(self.reference & self.value_mask, stored & self.value_mask)
+        // BEGIN SOLUTION stencil: mask the reference and the stored value, then one arm per Compare: reference OP stored (do not call Task 1's Compare::passes)
+        let (reference, stored) = (self.reference & self.value_mask, stored & self.value_mask);
+        match self.func {
+            Compare::Never => false,
+            Compare::Less => reference < stored,
+            Compare::Equal => reference == stored,
+            Compare::LEqual => reference <= stored,
+            Compare::Greater => reference > stored,
+            Compare::NotEqual => reference != stored,
+            Compare::GEqual => reference >= stored,
+            Compare::Always => true,
+        }
         // END SOLUTION
     }
 }

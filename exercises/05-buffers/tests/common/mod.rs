@@ -86,3 +86,40 @@ pub fn interpenetrating_triangles() -> [[Vertex; 3]; 2] {
         ],
     ]
 }
+
+/// Asserts that two canvases of equal size hold the same colour (8-bit),
+/// depth and stencil value at every pixel. On failure it names `what`,
+/// counts the pixels that differ and shows the first three with both
+/// values, rather than dumping two canvases.
+#[track_caller]
+pub fn assert_same_canvas(expected: &Canvas, yours: &Canvas, what: &str) {
+    let (size, your_size) = (
+        (expected.width(), expected.height()),
+        (yours.width(), yours.height()),
+    );
+    assert_eq!(size, your_size, "{what}: the canvas size");
+    let held = |c: &Canvas, p: Pixel| (c.get(p).map(Rgba::to_rgba8), c.depth(p), c.stencil(p));
+    let differing: Vec<String> = expected
+        .enumerate()
+        .map(|(p, _)| (p, held(expected, p), held(yours, p)))
+        .filter(|(_, e, y)| e != y)
+        .map(|(p, e, y)| {
+            let show = |(c, d, s): (Option<[u8; 4]>, Option<f32>, Option<u8>)| {
+                format!(
+                    "colour {:?}, depth {}, stencil {}",
+                    c.unwrap_or_default(),
+                    d.unwrap_or(f32::NAN),
+                    s.unwrap_or_default()
+                )
+            };
+            format!("{p}: expected {}; yours {}", show(e), show(y))
+        })
+        .collect();
+    assert!(
+        differing.is_empty(),
+        "{what}: {} of {} pixels differ, first:\n  {}",
+        differing.len(),
+        size.0 * size.1,
+        differing[..differing.len().min(3)].join("\n  ")
+    );
+}
