@@ -366,7 +366,7 @@ fn replay(
                 };
                 arms.push(quote! {
                     ::transcript::__private::Step::Callback(#position, __transcript_bytes) => {
-                        let mut __transcript_input: &[u8] = &__transcript_bytes;
+                        let mut __transcript_input: &[u8] = &__transcript_bytes[..];
                         #(
                             #[allow(unused_mut)]
                             let mut #values: #decoded_types =

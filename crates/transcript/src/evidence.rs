@@ -43,58 +43,198 @@ pub fn decode<T: serde::de::DeserializeOwned>(input: &mut &[u8]) -> Result<T, St
     Ok(value)
 }
 
-macro_rules! by_serde {
+/// An unsigned integer in LEB128: seven bits a byte, low first, the high
+/// bit saying "more" (small values, the usual case, take one byte).
+fn put_varint(mut value: u128, out: &mut Vec<u8>) {
+    while value >= 0x80 {
+        out.push((value as u8 & 0x7f) | 0x80);
+        value >>= 7;
+    }
+    out.push(value as u8);
+}
+
+/// An unsigned integer of at most `bits` bits read in LEB128.
+fn take_varint(input: &mut &[u8], bits: u32) -> Result<u128, String> {
+    let mut value = 0_u128;
+    let mut shift = 0;
+    loop {
+        let (&byte, rest) = input
+            .split_first()
+            .ok_or_else(|| "the record ends inside a number".to_owned())?;
+        *input = rest;
+        if shift >= bits.max(7) + 7 {
+            return Err("a number longer than its type".to_owned());
+        }
+        value |= u128::from(byte & 0x7f) << shift;
+        if byte & 0x80 == 0 {
+            break;
+        }
+        shift += 7;
+    }
+    if bits < 128 && value >> bits != 0 {
+        return Err(format!("a number wider than {bits} bits"));
+    }
+    Ok(value)
+}
+
+/// The first `N` bytes of `input`, taken.
+fn take_bytes<const N: usize>(input: &mut &[u8]) -> Result<[u8; N], String> {
+    let (bytes, rest) = input
+        .split_first_chunk::<N>()
+        .ok_or_else(|| "the record ends inside a value".to_owned())?;
+    *input = rest;
+    Ok(*bytes)
+}
+
+macro_rules! unsigned {
     ($($ty:ty),*) => {$(
         impl Record for $ty {
+            #[inline]
             fn record(&self, out: &mut Vec<u8>) {
-                encode(self, out);
+                put_varint(*self as u128, out);
             }
         }
         impl Replay for $ty {
+            #[inline]
             fn replay(input: &mut &[u8]) -> Result<Self, String> {
-                decode(input)
+                let bits = <$ty>::BITS;
+                take_varint(input, bits).map(|value| value as $ty)
             }
         }
     )*};
 }
 
-by_serde!(
-    (),
-    bool,
-    char,
-    u8,
-    u16,
-    u32,
-    u64,
-    u128,
-    usize,
-    i8,
-    i16,
-    i32,
-    i64,
-    i128,
-    isize,
-    f32,
-    f64,
-    String,
-    // glam's vectors and matrices, the course's points and transforms.
-    glam::Vec2,
-    glam::Vec3,
-    glam::Vec4,
-    glam::DVec2,
-    glam::DVec3,
-    glam::DVec4,
-    glam::IVec2,
-    glam::UVec2,
-    glam::Mat3,
-    glam::Mat4,
-    glam::DMat3,
-    glam::DMat4
+// Signed integers zigzagged first (0, −1, 1, −2 … → 0, 1, 2, 3 …), so a
+// small negative number is a small varint too.
+macro_rules! signed {
+    ($($ty:ty => $unsigned:ty),*) => {$(
+        impl Record for $ty {
+            #[inline]
+            fn record(&self, out: &mut Vec<u8>) {
+                let zigzag = ((*self << 1) ^ (*self >> (<$ty>::BITS - 1))) as $unsigned;
+                zigzag.record(out);
+            }
+        }
+        impl Replay for $ty {
+            #[inline]
+            fn replay(input: &mut &[u8]) -> Result<Self, String> {
+                let zigzag = <$unsigned>::replay(input)?;
+                Ok(((zigzag >> 1) as $ty) ^ -((zigzag & 1) as $ty))
+            }
+        }
+    )*};
+}
+
+macro_rules! float {
+    ($($ty:ty),*) => {$(
+        impl Record for $ty {
+            #[inline]
+            fn record(&self, out: &mut Vec<u8>) {
+                out.extend_from_slice(&self.to_le_bytes());
+            }
+        }
+        impl Replay for $ty {
+            #[inline]
+            fn replay(input: &mut &[u8]) -> Result<Self, String> {
+                take_bytes(input).map(<$ty>::from_le_bytes)
+            }
+        }
+    )*};
+}
+
+unsigned!(u8, u16, u32, u64, u128, usize);
+signed!(i8 => u8, i16 => u16, i32 => u32, i64 => u64, i128 => u128, isize => usize);
+float!(f32, f64);
+
+impl Record for () {
+    fn record(&self, _: &mut Vec<u8>) {}
+}
+
+impl Replay for () {
+    fn replay(_: &mut &[u8]) -> Result<Self, String> {
+        Ok(())
+    }
+}
+
+impl Record for bool {
+    fn record(&self, out: &mut Vec<u8>) {
+        out.push(u8::from(*self));
+    }
+}
+
+impl Replay for bool {
+    fn replay(input: &mut &[u8]) -> Result<Self, String> {
+        match take_bytes::<1>(input)? {
+            [0] => Ok(false),
+            [1] => Ok(true),
+            [other] => Err(format!("a truth value of {other}")),
+        }
+    }
+}
+
+impl Record for char {
+    fn record(&self, out: &mut Vec<u8>) {
+        u32::from(*self).record(out);
+    }
+}
+
+impl Replay for char {
+    fn replay(input: &mut &[u8]) -> Result<Self, String> {
+        let code = u32::replay(input)?;
+        char::from_u32(code).ok_or_else(|| format!("no character has the code {code}"))
+    }
+}
+
+impl Record for String {
+    fn record(&self, out: &mut Vec<u8>) {
+        self.as_str().record(out);
+    }
+}
+
+impl Replay for String {
+    fn replay(input: &mut &[u8]) -> Result<Self, String> {
+        let bytes = Vec::<u8>::replay(input)?;
+        String::from_utf8(bytes).map_err(|_| "text that is not UTF-8".to_owned())
+    }
+}
+
+// glam's vectors and matrices, the course's points and transforms, as
+// their components.
+macro_rules! glam_type {
+    ($($ty:ty => $array:ident, $from:ident, $scalar:ty, $n:expr);*) => {$(
+        impl Record for $ty {
+            #[inline]
+            fn record(&self, out: &mut Vec<u8>) {
+                self.$array().record(out);
+            }
+        }
+        impl Replay for $ty {
+            #[inline]
+            fn replay(input: &mut &[u8]) -> Result<Self, String> {
+                <[$scalar; $n]>::replay(input).map(|array| <$ty>::$from(&array))
+            }
+        }
+    )*};
+}
+
+glam_type!(
+    glam::Vec2 => to_array, from_slice, f32, 2;
+    glam::Vec3 => to_array, from_slice, f32, 3;
+    glam::Vec4 => to_array, from_slice, f32, 4;
+    glam::DVec2 => to_array, from_slice, f64, 2;
+    glam::DVec3 => to_array, from_slice, f64, 3;
+    glam::DVec4 => to_array, from_slice, f64, 4;
+    glam::IVec2 => to_array, from_slice, i32, 2;
+    glam::UVec2 => to_array, from_slice, u32, 2;
+    glam::Mat3 => to_cols_array, from_cols_slice, f32, 9;
+    glam::Mat4 => to_cols_array, from_cols_slice, f32, 16;
+    glam::DMat3 => to_cols_array, from_cols_slice, f64, 9;
+    glam::DMat4 => to_cols_array, from_cols_slice, f64, 16
 );
 
 impl Record for str {
     fn record(&self, out: &mut Vec<u8>) {
-        encode(self, out);
+        self.as_bytes().record(out);
     }
 }
 
@@ -248,6 +388,17 @@ mod tests {
         let mut out = Vec::new();
         f32::NAN.record(&mut out);
         assert!(f32::replay(&mut out.as_slice()).unwrap().is_nan());
+    }
+
+    #[test]
+    fn integers_at_their_limits_and_text_come_back() {
+        round_trip((i32::MIN, i32::MAX, -1_i64, u64::MAX, i128::MIN, 0_usize));
+        round_trip(('é', "ünïcode".to_owned(), true, ()));
+        round_trip((glam::Vec2::new(1.0, -2.5), glam::DMat4::IDENTITY));
+        let mut out = Vec::new();
+        300_u32.record(&mut out);
+        assert!(u8::replay(&mut out.as_slice()).is_err(), "300 is no u8");
+        assert!(bool::replay(&mut [2_u8].as_slice()).is_err());
     }
 
     #[test]

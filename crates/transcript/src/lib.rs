@@ -72,6 +72,6 @@ pub const REPLAY_CFG: &str = "transcript_replay";
 pub mod __private {
     pub use crate::evidence::{decode, encode};
     pub use crate::record::{Call, Recording};
-    pub use crate::replay::{Replaying, Step, leak};
+    pub use crate::replay::{Bytes, Replaying, Step, leak};
     pub use serde;
 }

@@ -8,7 +8,7 @@
 use std::fs::File;
 use std::io::BufReader;
 use std::path::PathBuf;
-use std::sync::{Mutex, OnceLock, PoisonError};
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 use crate::evidence::Replay;
 
@@ -26,13 +26,28 @@ enum Player {
 struct Reader {
     input: BufReader<File>,
     /// The parameter of the batch, its calls and where the next one starts.
-    batch: Option<(u32, Vec<u8>, usize)>,
+    batch: Option<(u32, Arc<[u8]>, usize)>,
 }
 
 /// A step of the record, a batch taken apart into its calls.
 enum Next {
     Event(Event),
-    Call(u32, Vec<u8>),
+    Call(u32, Bytes),
+}
+
+/// One call's arguments: a piece of its batch, shared rather than copied
+/// (a long line's batch holds tens of thousands of calls).
+pub struct Bytes {
+    batch: Arc<[u8]>,
+    range: std::ops::Range<usize>,
+}
+
+impl std::ops::Deref for Bytes {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        &self.batch[self.range.clone()]
+    }
 }
 
 impl Player {
@@ -67,8 +82,18 @@ impl Player {
         let mut reader = reader.lock().unwrap_or_else(PoisonError::into_inner);
         loop {
             if let Some((parameter, batch, at)) = &mut reader.batch {
+                let start = *at;
                 match event::next_call(batch, at) {
-                    Ok(Some(call)) => return Some(Next::Call(*parameter, call.to_vec())),
+                    Ok(Some(call)) => {
+                        let end = *at;
+                        let range = end - call.len()..end;
+                        debug_assert!(range.start >= start);
+                        let bytes = Bytes {
+                            batch: Arc::clone(batch),
+                            range,
+                        };
+                        return Some(Next::Call(*parameter, bytes));
+                    }
                     Ok(None) => reader.batch = None,
                     Err(error) => broken(error),
                 }
@@ -76,7 +101,7 @@ impl Player {
             match event::read(&mut reader.input) {
                 Ok(Some(Event::Calls { parameter, calls })) => {
                     let batch = event::uncompress(&calls).unwrap_or_else(|e| broken(e));
-                    reader.batch = Some((parameter, batch, 0));
+                    reader.batch = Some((parameter, batch.into(), 0));
                 }
                 Ok(event) => return event.map(Next::Event),
                 Err(error) => broken(error),
@@ -88,7 +113,7 @@ impl Player {
 /// What a replayed call does next.
 pub enum Step {
     /// Call callback parameter number `.0` with the encoded arguments `.1`.
-    Callback(u32, Vec<u8>),
+    Callback(u32, Bytes),
     /// Return the encoded values (the value, then the `&mut` parameters').
     Return(Vec<u8>),
     /// Panic with this message, as the student's code did.
