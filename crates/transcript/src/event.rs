@@ -1,15 +1,20 @@
-//! The transcript's events and their framing on disk: each frame is a
-//! little-endian `u32` length followed by that many bytes of an [`Event`]
-//! in postcard's encoding (exact for every float, NaN and infinities too).
+//! The transcript's events and their framing on disk. Each frame is a
+//! little-endian `u32` length, then a kind byte and its payload:
+//!
+//! ```text
+//!   Enter   0  the task function's name (UTF-8)
+//!   Calls   1  parameter (u32 LE), batch size (u32 LE), the batch in LZ4
+//!   Return  2  the values (see `evidence`)
+//!   Panic   3  the message (UTF-8)
+//! ```
 //!
 //! Consecutive calls of one callback parameter travel together in one
-//! [`Event::Calls`] frame, compressed with LZ4: a long line hands its
-//! callback millions of fragments that differ in a byte or two, and one
-//! frame each would cost more time and disk than drawing the line.
+//! `Calls` frame, compressed with LZ4: a long line hands its callback
+//! millions of fragments that differ in a byte or two, and one frame each
+//! would cost more time and disk than drawing the line. In a batch each
+//! call's arguments follow their length (LEB128).
 
 use std::io::{self, Read, Write};
-
-use serde::{Deserialize, Serialize};
 
 /// The largest frame (and the largest batch, uncompressed) a replay reads:
 /// a bigger length is a broken file.
@@ -18,37 +23,82 @@ pub const MAX_FRAME: u32 = 1 << 30;
 /// A batch of calls is written once it holds this many bytes.
 pub const BATCH_BYTES: usize = 1 << 20;
 
-/// One step of a recorded call.
-#[derive(Debug, Serialize, Deserialize)]
+const ENTER: u8 = 0;
+const CALLS: u8 = 1;
+const RETURN: u8 = 2;
+const PANIC: u8 = 3;
+
+/// One step of a recorded call, as read back.
+#[derive(Debug)]
 pub enum Event {
     /// An outermost call of the task function with this name began.
     Enter(String),
     /// The call invoked its callback parameter number `parameter` (counted
-    /// from 0 over all parameters) one or more times: `calls` is the LZ4
-    /// block (its size prepended) of the arguments of each call, each a
-    /// tuple in postcard's encoding after its length as a postcard varint.
+    /// from 0 over all parameters) one or more times: `calls` holds the
+    /// arguments of each call after their length.
     Calls {
         /// The parameter's position.
         parameter: u32,
-        /// The compressed arguments.
+        /// The calls, uncompressed.
         calls: Vec<u8>,
     },
     /// The call returned: its value and then the final value of each of
-    /// its `&mut` parameters (a receiver first), encoded as a tuple.
+    /// its `&mut` parameters (a receiver first).
     Return(Vec<u8>),
     /// The call panicked with this message.
     Panic(String),
 }
 
-/// Writes `event` as one frame.
-pub fn write(out: &mut impl Write, event: &Event) -> io::Result<()> {
-    let bytes = postcard::to_stdvec(event).map_err(io::Error::other)?;
-    let len = u32::try_from(bytes.len())
+/// Writes one frame of `kind` whose payload is `parts` one after another.
+fn frame(out: &mut impl Write, kind: u8, parts: &[&[u8]]) -> io::Result<()> {
+    let len = 1 + parts.iter().map(|part| part.len()).sum::<usize>();
+    let len = u32::try_from(len)
         .ok()
         .filter(|len| *len <= MAX_FRAME)
-        .ok_or_else(|| io::Error::other("event too large to record"))?;
+        .ok_or_else(|| io::Error::other("a frame too large to record"))?;
     out.write_all(&len.to_le_bytes())?;
-    out.write_all(&bytes)
+    out.write_all(&[kind])?;
+    for part in parts {
+        out.write_all(part)?;
+    }
+    Ok(())
+}
+
+/// Writes an `Enter`.
+pub fn write_enter(out: &mut impl Write, name: &str) -> io::Result<()> {
+    frame(out, ENTER, &[name.as_bytes()])
+}
+
+/// Writes a `Return` of these encoded values.
+pub fn write_return(out: &mut impl Write, values: &[u8]) -> io::Result<()> {
+    frame(out, RETURN, &[values])
+}
+
+/// Writes a `Panic` with this message.
+pub fn write_panic(out: &mut impl Write, message: &str) -> io::Result<()> {
+    frame(out, PANIC, &[message.as_bytes()])
+}
+
+/// Writes a batch of calls of `parameter`, compressed into `room` (kept
+/// by the caller so that its memory is reused).
+pub fn write_calls(
+    out: &mut impl Write,
+    parameter: u32,
+    batch: &[u8],
+    room: &mut Vec<u8>,
+) -> io::Result<()> {
+    room.resize(lz4_flex::block::get_maximum_output_size(batch.len()), 0);
+    let compressed = lz4_flex::block::compress_into(batch, room).map_err(io::Error::other)?;
+    let size = u32::try_from(batch.len()).map_err(io::Error::other)?;
+    frame(
+        out,
+        CALLS,
+        &[
+            &parameter.to_le_bytes(),
+            &size.to_le_bytes(),
+            &room[..compressed],
+        ],
+    )
 }
 
 /// Reads the next frame: `Ok(None)` at a clean end of the file.
@@ -60,9 +110,9 @@ pub fn read(input: &mut impl Read) -> io::Result<Option<Event>> {
         Err(error) => return Err(error),
     }
     let len = u32::from_le_bytes(len);
-    if len > MAX_FRAME {
+    if len == 0 || len > MAX_FRAME {
         return Err(io::Error::other(format!(
-            "a frame of {len} bytes (at most {MAX_FRAME})"
+            "a frame of {len} bytes (1 to {MAX_FRAME})"
         )));
     }
     let mut bytes = Vec::new();
@@ -73,43 +123,40 @@ pub fn read(input: &mut impl Read) -> io::Result<Option<Event>> {
             "the transcript ends inside a frame",
         ));
     }
-    postcard::from_bytes(&bytes)
-        .map(Some)
-        .map_err(io::Error::other)
+    let text = |bytes: &[u8]| String::from_utf8_lossy(bytes).into_owned();
+    let payload = &bytes[1..];
+    Ok(Some(match bytes[0] {
+        ENTER => Event::Enter(text(payload)),
+        RETURN => Event::Return(payload.to_vec()),
+        PANIC => Event::Panic(text(payload)),
+        CALLS => {
+            let (head, compressed) = payload
+                .split_first_chunk::<8>()
+                .ok_or_else(|| io::Error::other("a batch of calls without its head"))?;
+            let parameter = u32::from_le_bytes([head[0], head[1], head[2], head[3]]);
+            let size = u32::from_le_bytes([head[4], head[5], head[6], head[7]]);
+            if size > MAX_FRAME {
+                return Err(io::Error::other(format!(
+                    "a batch of {size} bytes (at most {MAX_FRAME})"
+                )));
+            }
+            let calls =
+                lz4_flex::block::decompress(compressed, size as usize).map_err(io::Error::other)?;
+            Event::Calls { parameter, calls }
+        }
+        kind => return Err(io::Error::other(format!("a frame of kind {kind}"))),
+    }))
 }
 
 /// Appends one call's encoded arguments to a batch.
 pub fn push_call(batch: &mut Vec<u8>, arguments: &[u8]) {
     let mut len = arguments.len();
-    // postcard's varint: seven bits a byte, the high bit says "more".
     while len >= 0x80 {
         batch.push((len as u8 & 0x7f) | 0x80);
         len >>= 7;
     }
     batch.push(len as u8);
     batch.extend_from_slice(arguments);
-}
-
-/// The batch of calls as an [`Event::Calls`].
-pub fn calls(parameter: u32, batch: &[u8]) -> Event {
-    Event::Calls {
-        parameter,
-        calls: lz4_flex::block::compress_prepend_size(batch),
-    }
-}
-
-/// The calls of a batch, uncompressed.
-pub fn uncompress(calls: &[u8]) -> io::Result<Vec<u8>> {
-    let size = calls
-        .get(..4)
-        .map(|size| u32::from_le_bytes([size[0], size[1], size[2], size[3]]))
-        .ok_or_else(|| io::Error::other("a batch of calls without its size"))?;
-    if size > MAX_FRAME {
-        return Err(io::Error::other(format!(
-            "a batch of {size} bytes (at most {MAX_FRAME})"
-        )));
-    }
-    lz4_flex::block::decompress_size_prepended(calls).map_err(io::Error::other)
 }
 
 /// The next call's arguments in `batch` from `*at` on, moving `*at` past
@@ -125,9 +172,7 @@ pub fn next_call<'a>(batch: &'a [u8], at: &mut usize) -> io::Result<Option<&'a [
             .get(*at)
             .ok_or_else(|| io::Error::other("a batch of calls cut inside a length"))?;
         *at += 1;
-        len |= usize::from(byte & 0x7f)
-            .checked_shl(shift)
-            .ok_or_else(|| io::Error::other("a call's length out of range"))?;
+        len |= usize::from(byte & 0x7f) << shift;
         if byte & 0x80 == 0 {
             break;
         }
@@ -150,14 +195,16 @@ mod tests {
     #[test]
     fn events_and_batches_survive_the_round_trip_and_a_cut_file_says_so() {
         let mut batch = Vec::new();
-        let nan = postcard::to_stdvec(&(f32::NAN, f64::NEG_INFINITY)).unwrap();
+        let nan = [0xff_u8, 0xc0, 0x7f, 0x00];
         let long = vec![7_u8; 300];
         for call in [&nan[..], &long[..], &[][..]] {
             push_call(&mut batch, call);
         }
         let mut file = Vec::new();
-        write(&mut file, &Event::Enter("dda_line".into())).unwrap();
-        write(&mut file, &calls(2, &batch)).unwrap();
+        write_enter(&mut file, "dda_line").unwrap();
+        write_calls(&mut file, 2, &batch, &mut Vec::new()).unwrap();
+        write_return(&mut file, &[1, 2]).unwrap();
+        write_panic(&mut file, "not yet").unwrap();
         let mut input = file.as_slice();
         assert!(matches!(read(&mut input).unwrap(), Some(Event::Enter(n)) if n == "dda_line"));
         let Some(Event::Calls {
@@ -167,22 +214,25 @@ mod tests {
         else {
             panic!("the second event is the batch");
         };
-        let batch = uncompress(&calls).unwrap();
         let mut at = 0;
-        let first = next_call(&batch, &mut at).unwrap().unwrap();
-        let (a, b): (f32, f64) = postcard::from_bytes(first).unwrap();
-        assert!(a.is_nan() && b == f64::NEG_INFINITY, "floats kept exactly");
-        assert_eq!(next_call(&batch, &mut at).unwrap(), Some(&long[..]));
-        assert_eq!(next_call(&batch, &mut at).unwrap(), Some(&[][..]));
-        assert_eq!(next_call(&batch, &mut at).unwrap(), None);
+        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&nan[..]));
+        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&long[..]));
+        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&[][..]));
+        assert_eq!(next_call(&calls, &mut at).unwrap(), None);
+        assert!(matches!(read(&mut input).unwrap(), Some(Event::Return(v)) if v == [1, 2]));
+        assert!(matches!(read(&mut input).unwrap(), Some(Event::Panic(m)) if m == "not yet"));
         assert!(read(&mut input).unwrap().is_none(), "a clean end");
         let mut input = &file[..file.len() - 1];
-        read(&mut input).unwrap();
+        for _ in 0..3 {
+            read(&mut input).unwrap();
+        }
         assert!(read(&mut input).is_err(), "a frame cut short is an error");
         let mut at = 0;
         assert!(
             next_call(&[0x85, 1, 2], &mut at).is_err(),
             "a call cut short"
         );
+        let mut junk: &[u8] = &[5, 0, 0, 0, 9, 1, 2, 3, 4];
+        assert!(read(&mut junk).is_err(), "an unknown kind");
     }
 }

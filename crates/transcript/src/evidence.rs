@@ -286,10 +286,18 @@ impl<T: Record, const N: usize> Record for [T; N] {
 
 impl<T: Replay, const N: usize> Replay for [T; N] {
     fn replay(input: &mut &[u8]) -> Result<Self, String> {
-        let items: Vec<T> = (0..N).map(|_| T::replay(input)).collect::<Result<_, _>>()?;
-        items
-            .try_into()
-            .map_err(|_| "an array of the wrong length".to_owned())
+        // On the stack: a batch of lanes is replayed millions of times.
+        let mut error = None;
+        let items: [Option<T>; N] = std::array::from_fn(|_| {
+            if error.is_some() {
+                return None;
+            }
+            T::replay(input).map_err(|e| error = Some(e)).ok()
+        });
+        match error {
+            Some(error) => Err(error),
+            None => Ok(items.map(|item| item.expect("every item read"))),
+        }
     }
 }
 

@@ -8,7 +8,7 @@ use std::io::{BufWriter, Write as _};
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
-use crate::event::{self, Event};
+use crate::event;
 
 thread_local! {
     /// How many task calls are running on this thread: only a call that
@@ -26,24 +26,31 @@ struct Recorder {
 /// The file and the batch of calls not yet written to it.
 struct State {
     out: BufWriter<File>,
-    /// The parameter whose calls the batch holds, and the batch.
-    batch: Option<(u32, Vec<u8>)>,
-    /// Room to encode one call's arguments in.
+    /// The parameter whose calls the batch holds (`None`: empty).
+    parameter: Option<u32>,
+    batch: Vec<u8>,
+    /// Room to encode one call's arguments in, and to compress a batch in.
     scratch: Vec<u8>,
+    compressed: Vec<u8>,
 }
 
 impl State {
     // A write that fails leaves the transcript short, which the replay
     // reports as a call that never ended.
     fn write_batch(&mut self) {
-        if let Some((parameter, batch)) = self.batch.take() {
-            let _ = event::write(&mut self.out, &event::calls(parameter, &batch));
+        if let Some(parameter) = self.parameter.take() {
+            let _ = event::write_calls(&mut self.out, parameter, &self.batch, &mut self.compressed);
+            self.batch.clear();
         }
     }
 
-    fn write(&mut self, event: &Event, flush: bool) {
+    fn write(
+        &mut self,
+        write: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>,
+        flush: bool,
+    ) {
         self.write_batch();
-        let _ = event::write(&mut self.out, event);
+        let _ = write(&mut self.out);
         if flush {
             let _ = self.out.flush();
         }
@@ -65,9 +72,11 @@ impl Recorder {
                 });
                 Some(Recorder {
                     state: Mutex::new(State {
-                        out: BufWriter::new(file),
-                        batch: None,
+                        out: BufWriter::with_capacity(1 << 20, file),
+                        parameter: None,
+                        batch: Vec::with_capacity(event::BATCH_BYTES + 4096),
                         scratch: Vec::new(),
+                        compressed: Vec::new(),
                     }),
                 })
             })
@@ -78,8 +87,8 @@ impl Recorder {
         self.state.lock().unwrap_or_else(PoisonError::into_inner)
     }
 
-    fn write(&self, event: &Event, flush: bool) {
-        self.state().write(event, flush);
+    fn write(&self, write: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>, flush: bool) {
+        self.state().write(write, flush);
     }
 
     /// A recorded call's callback: its call recorded, and the thread
@@ -94,14 +103,14 @@ impl Recorder {
     fn call(&self, parameter: u32, encode: &mut dyn FnMut(&mut Vec<u8>)) {
         let mut state = self.state();
         let state = &mut *state;
-        if state.batch.as_ref().is_some_and(|(p, _)| *p != parameter) {
+        if state.parameter.is_some_and(|p| p != parameter) {
             state.write_batch();
         }
+        state.parameter = Some(parameter);
         state.scratch.clear();
         encode(&mut state.scratch);
-        let (_, batch) = state.batch.get_or_insert_with(|| (parameter, Vec::new()));
-        event::push_call(batch, &state.scratch);
-        if batch.len() >= event::BATCH_BYTES {
+        event::push_call(&mut state.batch, &state.scratch);
+        if state.batch.len() >= event::BATCH_BYTES {
             state.write_batch();
         }
     }
@@ -124,7 +133,7 @@ impl Call {
         let depth = DEPTH.with(|depth| depth.replace(depth.get() + 1));
         let recorder = if depth == 0 { Recorder::get() } else { None };
         if let Some(recorder) = recorder {
-            recorder.write(&Event::Enter(name.to_owned()), false);
+            recorder.write(|out| event::write_enter(out, name), false);
         }
         Call {
             recording: Recording(recorder),
@@ -144,7 +153,8 @@ impl Call {
             Ok(value) => value,
             Err(payload) => {
                 if let Some(recorder) = self.recording.0 {
-                    recorder.write(&Event::Panic(message(payload.as_ref())), true);
+                    let message = message(payload.as_ref());
+                    recorder.write(|out| event::write_panic(out, &message), true);
                 }
                 resume_unwind(payload)
             }
@@ -157,7 +167,7 @@ impl Call {
         if let Some(recorder) = self.recording.0 {
             let mut values = Vec::new();
             encode(&mut values);
-            recorder.write(&Event::Return(values), true);
+            recorder.write(|out| event::write_return(out, &values), true);
         }
     }
 }

@@ -100,8 +100,7 @@ impl Player {
             }
             match event::read(&mut reader.input) {
                 Ok(Some(Event::Calls { parameter, calls })) => {
-                    let batch = event::uncompress(&calls).unwrap_or_else(|e| broken(e));
-                    reader.batch = Some((parameter, batch.into(), 0));
+                    reader.batch = Some((parameter, calls.into(), 0));
                 }
                 Ok(event) => return event.map(Next::Event),
                 Err(error) => broken(error),
