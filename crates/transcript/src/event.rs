@@ -3,18 +3,20 @@
 //!
 //! ```text
 //!   Enter   0  the task function's name (UTF-8)
-//!   Calls   1  parameter (u32 LE), batch size (u32 LE), the batch in LZ4
+//!   Calls   1  batch size (u32 LE), the batch in LZ4
 //!   Return  2  the values (see `evidence`)
 //!   Panic   3  the message (UTF-8)
 //! ```
 //!
-//! Consecutive calls of one callback parameter travel together in one
-//! `Calls` frame, compressed with LZ4: a long line hands its callback
-//! millions of fragments that differ in a byte or two, and one frame each
-//! would cost more time and disk than drawing the line. In a batch each
-//! call's arguments follow their length (LEB128).
+//! Consecutive callback calls travel together in one `Calls` frame,
+//! compressed with LZ4: a long line hands its callbacks millions of
+//! fragments that differ in a byte or two, and one frame each would cost
+//! more time and disk than drawing the line. In a batch each call is its
+//! parameter's position and its arguments' length (both LEB128), then the
+//! arguments.
 
 use std::io::{self, Read, Write};
+use std::ops::Range;
 
 /// The largest frame (and the largest batch, uncompressed) a replay reads:
 /// a bigger length is a broken file.
@@ -33,15 +35,10 @@ const PANIC: u8 = 3;
 pub enum Event {
     /// An outermost call of the task function with this name began.
     Enter(String),
-    /// The call invoked its callback parameter number `parameter` (counted
-    /// from 0 over all parameters) one or more times: `calls` holds the
-    /// arguments of each call after their length.
-    Calls {
-        /// The parameter's position.
-        parameter: u32,
-        /// The calls, uncompressed.
-        calls: Vec<u8>,
-    },
+    /// The call invoked its callback parameters (counted from 0 over all
+    /// parameters) one or more times: `calls` holds each call's parameter,
+    /// its arguments' length and its arguments.
+    Calls(Vec<u8>),
     /// The call returned: its value and then the final value of each of
     /// its `&mut` parameters (a receiver first).
     Return(Vec<u8>),
@@ -79,26 +76,13 @@ pub fn write_panic(out: &mut impl Write, message: &str) -> io::Result<()> {
     frame(out, PANIC, &[message.as_bytes()])
 }
 
-/// Writes a batch of calls of `parameter`, compressed into `room` (kept
-/// by the caller so that its memory is reused).
-pub fn write_calls(
-    out: &mut impl Write,
-    parameter: u32,
-    batch: &[u8],
-    room: &mut Vec<u8>,
-) -> io::Result<()> {
+/// Writes a batch of calls, compressed into `room` (kept by the caller so
+/// that its memory is reused).
+pub fn write_calls(out: &mut impl Write, batch: &[u8], room: &mut Vec<u8>) -> io::Result<()> {
     room.resize(lz4_flex::block::get_maximum_output_size(batch.len()), 0);
     let compressed = lz4_flex::block::compress_into(batch, room).map_err(io::Error::other)?;
     let size = u32::try_from(batch.len()).map_err(io::Error::other)?;
-    frame(
-        out,
-        CALLS,
-        &[
-            &parameter.to_le_bytes(),
-            &size.to_le_bytes(),
-            &room[..compressed],
-        ],
-    )
+    frame(out, CALLS, &[&size.to_le_bytes(), &room[..compressed]])
 }
 
 /// Reads the next frame: `Ok(None)` at a clean end of the file.
@@ -130,11 +114,10 @@ pub fn read(input: &mut impl Read) -> io::Result<Option<Event>> {
         RETURN => Event::Return(payload.to_vec()),
         PANIC => Event::Panic(text(payload)),
         CALLS => {
-            let (head, compressed) = payload
-                .split_first_chunk::<8>()
-                .ok_or_else(|| io::Error::other("a batch of calls without its head"))?;
-            let parameter = u32::from_le_bytes([head[0], head[1], head[2], head[3]]);
-            let size = u32::from_le_bytes([head[4], head[5], head[6], head[7]]);
+            let (size, compressed) = payload
+                .split_first_chunk::<4>()
+                .ok_or_else(|| io::Error::other("a batch of calls without its size"))?;
+            let size = u32::from_le_bytes(*size);
             if size > MAX_FRAME {
                 return Err(io::Error::other(format!(
                     "a batch of {size} bytes (at most {MAX_FRAME})"
@@ -142,50 +125,65 @@ pub fn read(input: &mut impl Read) -> io::Result<Option<Event>> {
             }
             let calls =
                 lz4_flex::block::decompress(compressed, size as usize).map_err(io::Error::other)?;
-            Event::Calls { parameter, calls }
+            Event::Calls(calls)
         }
         kind => return Err(io::Error::other(format!("a frame of kind {kind}"))),
     }))
 }
 
-/// Appends one call's encoded arguments to a batch.
-pub fn push_call(batch: &mut Vec<u8>, arguments: &[u8]) {
-    let mut len = arguments.len();
+/// A LEB128 number appended to `out`.
+fn put_len(out: &mut Vec<u8>, mut len: usize) {
     while len >= 0x80 {
-        batch.push((len as u8 & 0x7f) | 0x80);
+        out.push((len as u8 & 0x7f) | 0x80);
         len >>= 7;
     }
-    batch.push(len as u8);
-    batch.extend_from_slice(arguments);
+    out.push(len as u8);
 }
 
-/// The next call's arguments in `batch` from `*at` on, moving `*at` past
-/// them; `None` at the end of the batch.
-pub fn next_call<'a>(batch: &'a [u8], at: &mut usize) -> io::Result<Option<&'a [u8]>> {
-    if *at >= batch.len() {
-        return Ok(None);
-    }
+/// A LEB128 number read from `batch` at `*at`.
+fn take_len(batch: &[u8], at: &mut usize) -> io::Result<usize> {
     let mut len = 0_usize;
     let mut shift = 0;
     loop {
         let byte = *batch
             .get(*at)
-            .ok_or_else(|| io::Error::other("a batch of calls cut inside a length"))?;
+            .ok_or_else(|| io::Error::other("a batch of calls cut inside a number"))?;
         *at += 1;
         len |= usize::from(byte & 0x7f) << shift;
         if byte & 0x80 == 0 {
-            break;
+            return Ok(len);
         }
         shift += 7;
         if shift > 28 {
-            return Err(io::Error::other("a call's length out of range"));
+            return Err(io::Error::other(
+                "a number out of range in a batch of calls",
+            ));
         }
     }
-    let call = batch
-        .get(*at..at.saturating_add(len))
-        .ok_or_else(|| io::Error::other("a batch of calls cut inside a call"))?;
-    *at += len;
-    Ok(Some(call))
+}
+
+/// Appends one call of callback parameter `parameter` to a batch.
+pub fn push_call(batch: &mut Vec<u8>, parameter: u32, arguments: &[u8]) {
+    put_len(batch, parameter as usize);
+    put_len(batch, arguments.len());
+    batch.extend_from_slice(arguments);
+}
+
+/// The next call in `batch` from `*at` on, its parameter and the range of
+/// its arguments, moving `*at` past it; `None` at the end of the batch.
+pub fn next_call(batch: &[u8], at: &mut usize) -> io::Result<Option<(u32, Range<usize>)>> {
+    if *at >= batch.len() {
+        return Ok(None);
+    }
+    let parameter = u32::try_from(take_len(batch, at)?)
+        .map_err(|_| io::Error::other("a parameter out of range"))?;
+    let len = take_len(batch, at)?;
+    let range = *at..at.saturating_add(len);
+    if range.end > batch.len() {
+        return Err(io::Error::other("a batch of calls cut inside a call"));
+    }
+    *at = range.end;
+    Ok(Some((parameter, range)))
 }
 
 #[cfg(test)]
@@ -197,28 +195,29 @@ mod tests {
         let mut batch = Vec::new();
         let nan = [0xff_u8, 0xc0, 0x7f, 0x00];
         let long = vec![7_u8; 300];
-        for call in [&nan[..], &long[..], &[][..]] {
-            push_call(&mut batch, call);
-        }
+        push_call(&mut batch, 2, &nan);
+        push_call(&mut batch, 3, &long);
+        push_call(&mut batch, 2, &[]);
         let mut file = Vec::new();
         write_enter(&mut file, "dda_line").unwrap();
-        write_calls(&mut file, 2, &batch, &mut Vec::new()).unwrap();
+        write_calls(&mut file, &batch, &mut Vec::new()).unwrap();
         write_return(&mut file, &[1, 2]).unwrap();
         write_panic(&mut file, "not yet").unwrap();
         let mut input = file.as_slice();
         assert!(matches!(read(&mut input).unwrap(), Some(Event::Enter(n)) if n == "dda_line"));
-        let Some(Event::Calls {
-            parameter: 2,
-            calls,
-        }) = read(&mut input).unwrap()
-        else {
+        let Some(Event::Calls(calls)) = read(&mut input).unwrap() else {
             panic!("the second event is the batch");
         };
         let mut at = 0;
-        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&nan[..]));
-        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&long[..]));
-        assert_eq!(next_call(&calls, &mut at).unwrap(), Some(&[][..]));
-        assert_eq!(next_call(&calls, &mut at).unwrap(), None);
+        let mut next = || {
+            next_call(&calls, &mut at)
+                .unwrap()
+                .map(|(p, range)| (p, calls[range].to_vec()))
+        };
+        assert_eq!(next(), Some((2, nan.to_vec())));
+        assert_eq!(next(), Some((3, long.clone())));
+        assert_eq!(next(), Some((2, Vec::new())));
+        assert_eq!(next(), None);
         assert!(matches!(read(&mut input).unwrap(), Some(Event::Return(v)) if v == [1, 2]));
         assert!(matches!(read(&mut input).unwrap(), Some(Event::Panic(m)) if m == "not yet"));
         assert!(read(&mut input).unwrap().is_none(), "a clean end");
@@ -229,7 +228,7 @@ mod tests {
         assert!(read(&mut input).is_err(), "a frame cut short is an error");
         let mut at = 0;
         assert!(
-            next_call(&[0x85, 1, 2], &mut at).is_err(),
+            next_call(&[0, 0x85, 1, 2], &mut at).is_err(),
             "a call cut short"
         );
         let mut junk: &[u8] = &[5, 0, 0, 0, 9, 1, 2, 3, 4];

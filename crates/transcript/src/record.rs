@@ -26,8 +26,7 @@ struct Recorder {
 /// The file and the batch of calls not yet written to it.
 struct State {
     out: BufWriter<File>,
-    /// The parameter whose calls the batch holds (`None`: empty).
-    parameter: Option<u32>,
+    /// The callback calls not yet written.
     batch: Vec<u8>,
     /// Room to encode one call's arguments in, and to compress a batch in.
     scratch: Vec<u8>,
@@ -38,8 +37,8 @@ impl State {
     // A write that fails leaves the transcript short, which the replay
     // reports as a call that never ended.
     fn write_batch(&mut self) {
-        if let Some(parameter) = self.parameter.take() {
-            let _ = event::write_calls(&mut self.out, parameter, &self.batch, &mut self.compressed);
+        if !self.batch.is_empty() {
+            let _ = event::write_calls(&mut self.out, &self.batch, &mut self.compressed);
             self.batch.clear();
         }
     }
@@ -73,7 +72,6 @@ impl Recorder {
                 Some(Recorder {
                     state: Mutex::new(State {
                         out: BufWriter::with_capacity(1 << 20, file),
-                        parameter: None,
                         batch: Vec::with_capacity(event::BATCH_BYTES + 4096),
                         scratch: Vec::new(),
                         compressed: Vec::new(),
@@ -103,13 +101,9 @@ impl Recorder {
     fn call(&self, parameter: u32, encode: &mut dyn FnMut(&mut Vec<u8>)) {
         let mut state = self.state();
         let state = &mut *state;
-        if state.parameter.is_some_and(|p| p != parameter) {
-            state.write_batch();
-        }
-        state.parameter = Some(parameter);
         state.scratch.clear();
         encode(&mut state.scratch);
-        event::push_call(&mut state.batch, &state.scratch);
+        event::push_call(&mut state.batch, parameter, &state.scratch);
         if state.batch.len() >= event::BATCH_BYTES {
             state.write_batch();
         }

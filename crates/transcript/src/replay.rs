@@ -25,8 +25,8 @@ enum Player {
 /// The file and the batch of calls being replayed.
 struct Reader {
     input: BufReader<File>,
-    /// The parameter of the batch, its calls and where the next one starts.
-    batch: Option<(u32, Arc<[u8]>, usize)>,
+    /// The batch of calls and where its next call starts.
+    batch: Option<(Arc<[u8]>, usize)>,
 }
 
 /// A step of the record, a batch taken apart into its calls.
@@ -81,27 +81,21 @@ impl Player {
         };
         let mut reader = reader.lock().unwrap_or_else(PoisonError::into_inner);
         loop {
-            if let Some((parameter, batch, at)) = &mut reader.batch {
-                let start = *at;
+            if let Some((batch, at)) = &mut reader.batch {
                 match event::next_call(batch, at) {
-                    Ok(Some(call)) => {
-                        let end = *at;
-                        let range = end - call.len()..end;
-                        debug_assert!(range.start >= start);
+                    Ok(Some((parameter, range))) => {
                         let bytes = Bytes {
                             batch: Arc::clone(batch),
                             range,
                         };
-                        return Some(Next::Call(*parameter, bytes));
+                        return Some(Next::Call(parameter, bytes));
                     }
                     Ok(None) => reader.batch = None,
                     Err(error) => broken(error),
                 }
             }
             match event::read(&mut reader.input) {
-                Ok(Some(Event::Calls { parameter, calls })) => {
-                    reader.batch = Some((parameter, calls.into(), 0));
-                }
+                Ok(Some(Event::Calls(calls))) => reader.batch = Some((calls.into(), 0)),
                 Ok(event) => return event.map(Next::Event),
                 Err(error) => broken(error),
             }
@@ -155,7 +149,7 @@ impl Replaying {
             Some(Next::Event(Event::Enter(other))) => panic!(
                 "during the call of `{name}` your code's run called `{other}` from the test's code, where the test does not: the runs differ"
             ),
-            Some(Next::Event(Event::Calls { .. })) => unreachable!("batches are taken apart"),
+            Some(Next::Event(Event::Calls(_))) => unreachable!("batches are taken apart"),
             None => panic!(
                 "your code's run ended during the call of `{name}` (it crashed, exited or was stopped: see its own output)"
             ),
@@ -203,9 +197,8 @@ pub fn leak<T>(value: T) -> &'static T {
 fn describe(next: &Next) -> String {
     match next {
         Next::Event(Event::Enter(name)) => format!("a call of `{name}`"),
-        Next::Call(parameter, _) | Next::Event(Event::Calls { parameter, .. }) => {
-            format!("a callback of parameter {parameter}")
-        }
+        Next::Call(parameter, _) => format!("a callback of parameter {parameter}"),
+        Next::Event(Event::Calls(_)) => "its callbacks".to_owned(),
         Next::Event(Event::Return(_)) => "its return".to_owned(),
         Next::Event(Event::Panic(_)) => "its panic".to_owned(),
     }
