@@ -32,6 +32,10 @@ pub const REPLAY_DIR: &str = "replay";
 /// The suffix of a replay package's name (`lines` → `lines-replay`).
 pub const REPLAY_SUFFIX: &str = "-replay";
 
+/// The optimisation of the replay packages (see [`optimise`]): level 1
+/// takes most of the gain for little compile time.
+const REPLAY_OPT_LEVEL: u8 = 1;
+
 /// The build script of a replay package: the `cfg` that turns every task
 /// function into its replayer.
 const BUILD_SCRIPT: &str = "//! Compiles the course's crate as the replayer of a recorded run.\nfn main() {\n    println!(\"cargo::rustc-cfg=transcript_replay\");\n}\n";
@@ -84,7 +88,27 @@ pub fn add_packages(root: &Path, files: &mut Files) -> Result<()> {
             Source::Text(manifest(topic)?.into()),
         ));
     }
-    add_members(files)
+    add_members(files)?;
+    optimise(files, &replayed)
+}
+
+/// Builds the replay packages with optimisation: they hold the course's
+/// code and tests only, and replaying twenty million recorded fragments
+/// through unoptimised test code costs more than the drawing did.
+fn optimise(files: &mut Files, replayed: &[&Topic]) -> Result<()> {
+    let workspace = files
+        .iter_mut()
+        .find(|(to, _)| to == Path::new("Cargo.toml"))
+        .context("the course has no Cargo.toml")?;
+    let mut text = String::from_utf8(workspace.1.read()?).context("Cargo.toml is not UTF-8")?;
+    for topic in replayed {
+        text.push_str(&format!(
+            "\n[profile.dev.package.{}]\nopt-level = {REPLAY_OPT_LEVEL}\n",
+            package_name(topic)
+        ));
+    }
+    workspace.1 = Source::Text(text.into_bytes());
+    Ok(())
 }
 
 /// Makes the replay packages members of the staged workspace.
