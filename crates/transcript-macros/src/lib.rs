@@ -27,18 +27,24 @@ use syn::{
     parse_quote,
 };
 
+/// The error for arguments given to `#[transcript::<name>]`, which takes
+/// none.
+fn arguments_given(attr: TokenStream, name: &str) -> Option<TokenStream> {
+    (!attr.is_empty()).then(|| {
+        let message = format!("`#[transcript::{name}]` takes no arguments");
+        syn::Error::new(Tokens::from(attr).span(), message)
+            .to_compile_error()
+            .into()
+    })
+}
+
 /// Marks a function a task asks for: in the student's crate its calls are
 /// recorded while the grader asks for it; in the grader's replay build
 /// they are replayed from the record (see the `transcript` crate).
 #[proc_macro_attribute]
 pub fn task(attr: TokenStream, item: TokenStream) -> TokenStream {
-    if !attr.is_empty() {
-        return syn::Error::new(
-            Tokens::from(attr).span(),
-            "`#[transcript::task]` takes no arguments",
-        )
-        .to_compile_error()
-        .into();
+    if let Some(error) = arguments_given(attr, "task") {
+        return error;
     }
     let function = parse_macro_input!(item as ItemFn);
     expand(function).unwrap_or_else(|error| error.to_compile_error().into())
@@ -51,13 +57,8 @@ pub fn task(attr: TokenStream, item: TokenStream) -> TokenStream {
 /// (reached through the `transcript` crate: no `serde` dependency needed).
 #[proc_macro_attribute]
 pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
-    if !attr.is_empty() {
-        return syn::Error::new(
-            Tokens::from(attr).span(),
-            "`#[transcript::evidence]` takes no arguments",
-        )
-        .to_compile_error()
-        .into();
+    if let Some(error) = arguments_given(attr, "evidence") {
+        return error;
     }
     let input = parse_macro_input!(item as syn::DeriveInput);
     if !input.generics.params.is_empty() {
