@@ -812,6 +812,9 @@ pub(crate) mod tests {
     /// A checkout whose folders nest past [`MAX_DEPTH`], or whose path is
     /// longer than `PATH_MAX`, is an error with its reason, not a stack
     /// overflow or an endless walk.
+    // Linux's file system, where a class is graded for the record: Windows
+    // limits paths, keeps removed files open and writes other separators.
+    #[cfg(unix)]
     #[test]
     fn a_checkout_walk_refuses_deep_folders_and_long_paths_with_a_reason() {
         let dir = scratch("deep-checkout");
@@ -846,6 +849,9 @@ pub(crate) mod tests {
 
     /// A sparse terabyte, a pipe and a link: refused by their kind and
     /// size, without reading a byte of them or waiting.
+    // Linux's file system, where a class is graded for the record: Windows
+    // limits paths, keeps removed files open and writes other separators.
+    #[cfg(unix)]
     #[test]
     fn capped_reads_refuse_floods_pipes_and_links() {
         let dir = scratch("capped");
@@ -877,6 +883,9 @@ pub(crate) mod tests {
     /// What a test leaves in its picture folder: a link to a solution, a
     /// pipe, a chain of folders and more bytes than the budget. The
     /// report keeps the plain files that fit, and names the rest.
+    // Linux's file system, where a class is graded for the record: Windows
+    // limits paths, keeps removed files open and writes other separators.
+    #[cfg(unix)]
     #[test]
     fn a_keeper_keeps_plain_files_within_its_budget_and_names_the_rest() {
         let report = scratch("keeper");

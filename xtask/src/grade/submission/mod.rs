@@ -568,6 +568,10 @@ mod tests {
         // both must agree, and the given files that mention `todo!()` in
         // their doc comments are not tasks.
         let root = course();
+        if !root.join("reference").is_dir() {
+            eprintln!("not run: an edition has no reference/ to compare its markers with");
+            return;
+        }
         for topic in topics::discover(&root).unwrap() {
             let ids: Vec<&str> = topic.sheet.tasks.iter().map(|t| t.id.as_str()).collect();
             let src = topic.dir.join("src");
@@ -602,15 +606,6 @@ mod tests {
 
     /// An edition of one topic (no `reference/`): a task file `classify.rs`
     /// and a given file `raster.rs` whose doc comment mentions `todo!()`.
-    /// Copies the plain files under `from` to `to`.
-    fn copy_tree(from: &Path, to: &Path) {
-        for file in crate::files::files_under(from).unwrap() {
-            let text = fs::read(from.join(&file)).unwrap();
-            fs::create_dir_all(to.join(&file).parent().unwrap()).unwrap();
-            fs::write(to.join(&file), text).unwrap();
-        }
-    }
-
     fn edition(dir: &Path) -> PathBuf {
         let official = dir.join("official");
         let topic = official.join("exercises/06-x");
@@ -685,6 +680,10 @@ mod tests {
     }
 
     #[test]
+    #[cfg_attr(
+        windows,
+        ignore = "stages with `cargo metadata`; there is no cargo where the Windows build runs (Wine)"
+    )]
     fn a_submissions_tool_configuration_is_never_staged_nor_read_later() {
         // insta reads `insta.yaml`, `.config/insta.yaml` or `.insta.yaml`
         // in the workspace root, proptest `proptest-regressions/` beside
@@ -692,18 +691,29 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("xtask-staged-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         let submission = dir.join("anna");
-        // The tiny fixture course, whose `reference/` names its task file
-        // wherever this test runs (in a stage the course's own solutions
-        // hold no stub).
-        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        // A little course of its own, whose stub names its task file
+        // wherever this test runs (in a stage the course's own files are
+        // the solutions, and an edition has no fixtures).
         let tiny = dir.join("tiny");
-        copy_tree(&manifest.join("tests/fixtures/tiny"), &tiny);
-        copy_tree(
-            &manifest.join("../crates/testkit-macros"),
-            &tiny.join("crates/testkit-macros"),
-        );
         let dda = PathBuf::from("exercises/01-tiny/src/ops.rs");
         let write = |path: PathBuf, text: &str| crate::files::write_file(&path, text).unwrap();
+        write(
+            tiny.join("Cargo.toml"),
+            "[workspace]\nresolver = \"3\"\nmembers = [\"exercises/*\"]\n",
+        );
+        write(
+            tiny.join("exercises/01-tiny/Cargo.toml"),
+            "[package]\nname = \"tiny\"\nversion = \"0.1.0\"\nedition = \"2024\"\n",
+        );
+        write(
+            tiny.join("exercises/01-tiny/tasks.toml"),
+            "[[tasks]]\nid = \"double\"\ntitle = \"Doubling\"\npoints = 1\n",
+        );
+        write(tiny.join("exercises/01-tiny/src/lib.rs"), "pub mod ops;\n");
+        write(
+            tiny.join(&dda),
+            "pub fn double(x: i32) -> i32 {\n    let _ = x;\n    todo!(\"double: twice x\")\n}\n",
+        );
         write(submission.join(&dda), "// mine\n");
         for config in ["insta.yaml", ".config/insta.yaml", ".insta.yaml"] {
             write(submission.join(config), "behavior:\n  force_pass: true\n");

@@ -186,6 +186,9 @@ mod tests {
     /// walk failed, and `?` ended the class). Each gives a fingerprint,
     /// the same one each time, and one that differs from the clean
     /// checkout's.
+    // Linux's file system, where a class is graded for the record: Windows
+    // limits paths, keeps removed files open and writes other separators.
+    #[cfg(unix)]
     #[test]
     fn a_hostile_checkout_has_a_fingerprint_and_stops_nothing() {
         use crate::files::tests::{chain, scratch};
