@@ -249,7 +249,14 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
         options.jobs = jobs;
         options.submissions_at_once = Some(jobs);
     }
-    options.target_dir = args.target_dir;
+    // Relative to where the command was given, as cargo's own: the build
+    // runs elsewhere (in the stage, in the sandbox).
+    options.target_dir = args
+        .target_dir
+        .map(|dir| {
+            std::path::absolute(&dir).with_context(|| format!("cannot find {}", dir.display()))
+        })
+        .transpose()?;
     if let Some(seconds) = args.build_time_limit {
         options.build_time_limit = std::time::Duration::from_secs(seconds);
     }
