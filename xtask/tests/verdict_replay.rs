@@ -172,12 +172,30 @@ fn attacks_on_the_verdict_score_nothing_and_the_honest_member_everything() {
         ),
     );
 
+    // Replaces the record with a link to the course's solution file, for
+    // the replay's sandbox to bind; the grader reads no link.
+    let solution = official.join("reference").join(TOPIC).join("src/ops.rs");
+    let link = format!(
+        r#"let path = std::env::var_os("TRANSCRIPT_RECORD").expect("recording");
+        let _ = std::fs::remove_file(&path);
+        std::os::unix::fs::symlink({:?}, &path).unwrap();
+        std::process::exit(0)"#,
+        solution.display().to_string()
+    );
+    member(&official, &class, "links-record", &ops(&link, &link, &link));
+
     let out = fresh(official.join("target/attacks"));
     let output = grade_submission(&official, &class, &out, &[]);
     assert!(output.status.success(), "{output:?}");
     let report = |name: &str| read_json(&out.join(name).join("report.json"));
     assert_eq!(score(&report("a-honest")), 4.0, "{:#}", report("a-honest"));
-    for name in ["forges", "snoops", "writes-record", "stops-inside"] {
+    for name in [
+        "forges",
+        "snoops",
+        "writes-record",
+        "stops-inside",
+        "links-record",
+    ] {
         let report = report(name);
         assert_eq!(score(&report), 0.0, "{name}: {report:#}");
     }
@@ -191,4 +209,9 @@ fn attacks_on_the_verdict_score_nothing_and_the_honest_member_everything() {
     let stopped = everything_said(&report("stops-inside"));
     assert!(stopped.contains("your code's run ended"), "{stopped}");
     assert!(everything_said(&report("forges")).contains("testkit verdict: passed 0123"));
+    let linked = everything_said(&report("links-record"));
+    assert!(
+        linked.contains("was not a plain file") && !linked.contains("BEGIN SOLUTION"),
+        "{linked}"
+    );
 }

@@ -134,6 +134,11 @@ pub const EVIDENCE_HEADER: &str = "\n--- the run of your code (its output, shown
 /// long as the drawing.
 const REPLAY_TIME_FACTOR: u32 = 3;
 
+/// What the evidence says when the record the run left was not a plain
+/// file (a link, a folder), which is then not read.
+pub const NOT_PLAIN_RECORD: &str =
+    "[the record your code's run left was not a plain file (a link?): it was not read]";
+
 /// Of a recording run's output, this much is kept in the log beside the
 /// replay's.
 const RECORDED_OUTPUT_KEPT: usize = 16 << 10;
@@ -207,6 +212,15 @@ impl TestCommand {
                 evidence: None,
             });
         }
+        // The record is read only as the plain file the run left: a link
+        // there would have the replay's sandbox bind whatever it names.
+        let left = fs::symlink_metadata(&transcript).ok();
+        let not_plain = left
+            .as_ref()
+            .is_some_and(|meta| !meta.file_type().is_file());
+        if not_plain {
+            let _ = crate::files::remove_tree(&transcript);
+        }
         let replayed = self.run_with_token(replay, Some(&transcript));
         let _ = crate::files::remove_tree(&record_dir);
         self.move_replayed_snapshots();
@@ -234,7 +248,10 @@ impl TestCommand {
         while !recorded_output.is_char_boundary(start) {
             start += 1;
         }
-        let evidence = format!("{EVIDENCE_HEADER}\n{}", &recorded_output[start..]);
+        let mut evidence = format!("{EVIDENCE_HEADER}\n{}", &recorded_output[start..]);
+        if not_plain {
+            evidence.push_str(&format!("\n{NOT_PLAIN_RECORD}"));
+        }
         let _ = fs::OpenOptions::new()
             .append(true)
             .open(&self.log)
