@@ -110,7 +110,6 @@ pub enum CanvasError {
 /// (see the crate documentation for the full convention). Every write
 /// outside the canvas is ignored, so rasterizers need not clip pixels
 /// themselves; every read outside returns `None`.
-#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Canvas {
     width: u32,
@@ -118,6 +117,9 @@ pub struct Canvas {
     colour: Vec<[u8; 4]>,
     depth: Vec<f32>,
     stencil: Vec<u8>,
+    /// The pixels written during a call the grader records (see
+    /// [`transcript::Changes`]); no part of the canvas's value.
+    changes: transcript::Changes,
 }
 
 impl Canvas {
@@ -151,6 +153,7 @@ impl Canvas {
             colour: vec![Rgba::BLACK.to_rgba8(); n as usize],
             depth: vec![DEPTH_CLEAR; n as usize],
             stencil: vec![STENCIL_CLEAR; n as usize],
+            changes: transcript::Changes::default(),
         })
     }
 
@@ -192,6 +195,7 @@ impl Canvas {
     /// Sets every pixel to `colour` and every depth to [`DEPTH_CLEAR`].
     /// The stencil plane is left as it is (see [`Canvas::clear_stencil`]).
     pub fn clear(&mut self, colour: Rgba) {
+        self.changes.note_everything();
         self.colour.fill(colour.to_rgba8());
         self.depth.fill(DEPTH_CLEAR);
     }
@@ -208,6 +212,7 @@ impl Canvas {
     #[inline]
     pub fn set(&mut self, p: Pixel, colour: Rgba) {
         if let Some(i) = self.index(p) {
+            self.changes.note(i);
             self.colour[i] = colour.to_rgba8();
         }
     }
@@ -226,6 +231,8 @@ impl Canvas {
             return;
         }
         let row = span.y as usize * self.width as usize;
+        self.changes
+            .note_range(row + x_start as usize..row + x_end as usize + 1);
         self.colour[row + x_start as usize..=row + x_end as usize].fill(colour.to_rgba8());
     }
 
@@ -238,6 +245,7 @@ impl Canvas {
     /// Sets the depth at `p`; ignored outside the canvas.
     pub fn set_depth(&mut self, p: Pixel, depth: f32) {
         if let Some(i) = self.index(p) {
+            self.changes.note(i);
             self.depth[i] = depth;
         }
     }
@@ -251,6 +259,7 @@ impl Canvas {
     /// Sets the stencil value at `p`; ignored outside the canvas.
     pub fn set_stencil(&mut self, p: Pixel, value: u8) {
         if let Some(i) = self.index(p) {
+            self.changes.note(i);
             self.stencil[i] = value;
         }
     }
@@ -259,6 +268,7 @@ impl Canvas {
     /// followed by `glClear(GL_STENCIL_BUFFER_BIT)`; [`STENCIL_CLEAR`] is
     /// the default).
     pub fn clear_stencil(&mut self, value: u8) {
+        self.changes.note_everything();
         self.stencil.fill(value);
     }
 
@@ -267,6 +277,7 @@ impl Canvas {
     #[inline]
     pub fn plot(&mut self, fragment: Fragment) {
         if let Some(i) = self.index(fragment.pixel) {
+            self.changes.note(i);
             self.colour[i] = fragment.colour.to_rgba8();
             self.depth[i] = fragment.depth;
         }
@@ -292,6 +303,7 @@ impl Canvas {
             let s = u32::from(Rgba::new(0.0, 0.0, 0.0, colour.a * coverage).to_rgba8()[3]);
             let src = colour.to_rgba8();
             let src = [src[0], src[1], src[2], 255];
+            self.changes.note(i);
             let old = &mut self.colour[i];
             for (o, c) in old.iter_mut().zip(src) {
                 let mixed = u32::from(c) * s + u32::from(*o) * (255 - s);
@@ -378,6 +390,108 @@ impl Canvas {
         ascii::ascii_grid(self.width, self.height, |p| {
             ascii::ink_char(self.get(p).map_or(0.0, Rgba::ink))
         })
+    }
+}
+
+/// A canvas in a record: its size and its three planes. The record of a
+/// call that changed it holds only the pixels written (see
+/// [`transcript::Changes`]): a depth test per fragment would otherwise
+/// write the whole canvas per fragment.
+impl transcript::Record for Canvas {
+    fn record(&self, out: &mut Vec<u8>) {
+        self.width.record(out);
+        self.height.record(out);
+        self.colour.record(out);
+        self.depth.record(out);
+        self.stencil.record(out);
+    }
+
+    fn begin_changes(&mut self) {
+        self.changes.begin();
+    }
+
+    fn record_changes(&mut self, out: &mut Vec<u8>) {
+        match self.changes.end() {
+            transcript::Changed::Whole => {
+                out.push(WHOLE);
+                self.record(out);
+            }
+            transcript::Changed::Elements(written) => {
+                out.push(PIXELS);
+                written.len().record(out);
+                let mut previous = 0;
+                for i in written {
+                    (i - previous).record(out);
+                    previous = i;
+                    let i = i as usize;
+                    self.colour[i].record(out);
+                    self.depth[i].record(out);
+                    self.stencil[i].record(out);
+                }
+            }
+        }
+    }
+}
+
+/// [`Canvas`]'s [`transcript::Record::record_changes`]: the whole canvas
+/// follows, or the pixels written, each as the step from the previous
+/// one's index and its three values.
+const WHOLE: u8 = 0;
+const PIXELS: u8 = 1;
+
+impl transcript::Replay for Canvas {
+    fn replay(input: &mut &[u8]) -> Result<Self, String> {
+        let width = u32::replay(input)?;
+        let height = u32::replay(input)?;
+        let colour = Vec::replay(input)?;
+        let depth = Vec::replay(input)?;
+        let stencil = Vec::replay(input)?;
+        let n = u64::from(width) * u64::from(height);
+        if n > Self::MAX_PIXELS
+            || [colour.len(), depth.len(), stencil.len()]
+                .iter()
+                .any(|&len| len as u64 != n)
+        {
+            return Err(format!(
+                "a {width} × {height} canvas whose planes do not have {n} pixels"
+            ));
+        }
+        Ok(Self {
+            width,
+            height,
+            colour,
+            depth,
+            stencil,
+            changes: transcript::Changes::default(),
+        })
+    }
+
+    fn replay_changes(&mut self, input: &mut &[u8]) -> Result<(), String> {
+        let (&kind, rest) = input
+            .split_first()
+            .ok_or("a canvas's changes are missing")?;
+        *input = rest;
+        match kind {
+            WHOLE => {
+                *self = Self::replay(input)?;
+                Ok(())
+            }
+            PIXELS => {
+                let count = usize::replay(input)?;
+                let mut i = 0usize;
+                for _ in 0..count {
+                    i = i
+                        .checked_add(u32::replay(input)? as usize)
+                        .filter(|&i| i < self.colour.len())
+                        .ok_or("a canvas's changes name a pixel outside it")?;
+                    self.colour[i] = <[u8; 4]>::replay(input)?;
+                    self.depth[i] = f32::replay(input)?;
+                    self.stencil[i] = u8::replay(input)?;
+                }
+                Ok(())
+            }
+            _ => Err(format!("a canvas's changes of unknown kind {kind}")),
+        }
     }
 }
 
@@ -469,5 +583,95 @@ mod tests {
     fn too_large_canvas_is_an_error() {
         assert!(Canvas::try_new(u32::MAX, u32::MAX).is_err());
         assert_eq!(Canvas::new(0, 5).pixels_not(Rgba::BLACK), vec![]);
+    }
+
+    /// What a recorded call changes, and the replay of those changes on
+    /// the canvas as it was before the call.
+    fn recorded_and_replayed(change: impl FnOnce(&mut Canvas)) -> (Vec<u8>, Canvas, Canvas) {
+        use transcript::{Record, Replay};
+        let mut before = Canvas::new(5, 4);
+        before.set(Pixel::new(1, 1), Rgba::WHITE);
+        let mut canvas = before.clone();
+        canvas.begin_changes();
+        change(&mut canvas);
+        let mut record = Vec::new();
+        canvas.record_changes(&mut record);
+        let mut replayed = before;
+        let mut input = &record[..];
+        replayed.replay_changes(&mut input).unwrap();
+        assert!(input.is_empty(), "the changes are read to their end");
+        (record, canvas, replayed)
+    }
+
+    #[test]
+    fn a_call_that_writes_a_few_pixels_records_only_those() {
+        let (record, canvas, replayed) = recorded_and_replayed(|c| {
+            c.set(Pixel::new(4, 3), Rgba::new(1.0, 0.5, 0.0, 1.0));
+            c.set_depth(Pixel::new(0, 0), 0.25);
+            c.set_stencil(Pixel::new(0, 0), 7);
+            c.plot(Fragment {
+                pixel: Pixel::new(2, 1),
+                depth: 0.5,
+                colour: Rgba::WHITE,
+            });
+            c.blend(Pixel::new(2, 1), Rgba::BLACK, 0.5);
+            c.fill_span(Span::new(2, 1, 3), Rgba::WHITE);
+            c.set(Pixel::new(9, 9), Rgba::WHITE);
+        });
+        assert_eq!(replayed, canvas);
+        assert_eq!(record[0], PIXELS);
+        // Six of the twenty pixels, each at most its index step (1 byte)
+        // and its values (a colour of four LEB128 bytes of up to 2 bytes,
+        // depth 4, stencil up to 2): less than the 20 pixels of the whole.
+        assert!(record.len() <= 2 + 6 * 15, "{} bytes", record.len());
+        let mut whole = Vec::new();
+        transcript::Record::record(&canvas, &mut whole);
+        assert!(whole.len() > 20 * 9, "{} bytes", whole.len());
+    }
+
+    #[test]
+    fn a_clear_or_a_canvas_put_in_its_place_is_recorded_whole() {
+        let (record, canvas, replayed) = recorded_and_replayed(|c| c.clear(Rgba::WHITE));
+        assert_eq!((record[0], replayed), (WHOLE, canvas));
+        let (record, canvas, replayed) = recorded_and_replayed(|c| c.clear_stencil(3));
+        assert_eq!((record[0], replayed), (WHOLE, canvas));
+        let (record, canvas, replayed) = recorded_and_replayed(|c| {
+            let mut other = Canvas::new(2, 2);
+            other.set(Pixel::new(0, 0), Rgba::WHITE);
+            *c = other;
+        });
+        assert_eq!((record[0], replayed), (WHOLE, canvas));
+        // Two journaled canvases swapped: each holds the other's journal.
+        let mut other = Canvas::new(5, 4);
+        let (record, canvas, replayed) = recorded_and_replayed(|c| {
+            transcript::Record::begin_changes(&mut other);
+            std::mem::swap(c, &mut other);
+        });
+        assert_eq!((record[0], replayed), (WHOLE, canvas));
+        // A clone starts without the call's journal.
+        let (record, canvas, replayed) = recorded_and_replayed(|c| {
+            let mut other = c.clone();
+            other.set(Pixel::new(0, 0), Rgba::WHITE);
+            *c = other;
+        });
+        assert_eq!((record[0], replayed), (WHOLE, canvas));
+    }
+
+    #[test]
+    fn changes_that_do_not_fit_the_canvas_are_refused() {
+        use transcript::{Record, Replay};
+        let mut big = Canvas::new(50, 50);
+        big.begin_changes();
+        big.set(Pixel::new(49, 49), Rgba::WHITE);
+        let mut record = Vec::new();
+        big.record_changes(&mut record);
+        let mut small = Canvas::new(5, 5);
+        let error = small.replay_changes(&mut &record[..]).unwrap_err();
+        assert!(error.contains("outside"), "{error}");
+        let mut whole = Vec::new();
+        Canvas::new(3, 3).record(&mut whole);
+        whole[0] = 4; // a width of 4 with planes of 9 pixels
+        let error = Canvas::replay(&mut &whole[..]).unwrap_err();
+        assert!(error.contains("do not have"), "{error}");
     }
 }

@@ -8,7 +8,7 @@
 //! |--------------------------------------------|-------------------------------|
 //! | `impl Fn(A, ..) -> R` (`FnMut`, `FnOnce`)  | every call, its arguments     |
 //! | `&impl Fn..`, `&mut impl FnMut..`, `&dyn ..`, `&mut dyn ..` | as above |
-//! | `&mut T`, `&mut self`                      | its value when the call ends  |
+//! | `&mut T`, `&mut self`                      | what changed, when it ends    |
 //! | anything else (values, `&T`, `self`)       | nothing: the test passed it   |
 //!
 //! and the return value, whose type (or, for `&'static T`, `T`) must be
@@ -126,11 +126,27 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
             fn record(&self, out: &mut ::std::vec::Vec<u8>) {
                 #(::transcript::Record::record(&self.#members, out);)*
             }
+
+            fn begin_changes(&mut self) {
+                #(::transcript::Record::begin_changes(&mut self.#members);)*
+            }
+
+            fn record_changes(&mut self, out: &mut ::std::vec::Vec<u8>) {
+                #(::transcript::Record::record_changes(&mut self.#members, out);)*
+            }
         }
 
         impl ::transcript::Replay for #name {
             fn replay(input: &mut &[u8]) -> ::core::result::Result<Self, ::std::string::String> {
                 ::core::result::Result::Ok(#build)
+            }
+
+            fn replay_changes(
+                &mut self,
+                input: &mut &[u8],
+            ) -> ::core::result::Result<(), ::std::string::String> {
+                #(::transcript::Replay::replay_changes(&mut self.#members, input)?;)*
+                ::core::result::Result::Ok(())
             }
         }
     }
@@ -306,11 +322,17 @@ fn record(
         })
         .collect();
     let receiver = receiver_mutated
-        .then(|| quote! { ::transcript::Record::record(&*self, __transcript_out); });
+        .then(|| quote! { ::transcript::Record::record_changes(&mut *self, __transcript_out); });
+    let begin_receiver =
+        receiver_mutated.then(|| quote! { ::transcript::Record::begin_changes(&mut *self); });
     let block = &function.block;
     quote! {{
         let __transcript_call = ::transcript::__private::Call::enter(#label);
         let __transcript_recording = __transcript_call.recording();
+        if __transcript_recording.is_on() {
+            #begin_receiver
+            #(::transcript::Record::begin_changes(&mut *#mutated_names);)*
+        }
         #(#prologue)*
         #[allow(unused_mut)]
         let mut __transcript_body = |#(#mutated_names: #mutated_types),*| -> #output {
@@ -322,7 +344,7 @@ fn record(
         __transcript_call.finish(&mut |__transcript_out: &mut ::std::vec::Vec<u8>| {
             ::transcript::Record::record(&__transcript_value, __transcript_out);
             #receiver
-            #(::transcript::Record::record(&*#mutated_names, __transcript_out);)*
+            #(::transcript::Record::record_changes(&mut *#mutated_names, __transcript_out);)*
         });
         __transcript_value
     }}
@@ -400,19 +422,14 @@ fn replay(
         }
         other => (other.clone(), false),
     };
-    let mut final_types = vec![quote! { #returned }];
-    let mut final_names = vec![format_ident!("__transcript_value")];
-    let mut stores = Vec::new();
+    // The `&mut` values are brought to what the student's call left of
+    // them, each from its own value before the call.
+    let mut changes = Vec::new();
     if receiver_mutated {
-        final_types.push(quote! { Self });
-        final_names.push(format_ident!("__transcript_self"));
-        stores.push(quote! { *self = __transcript_self; });
+        changes.push(quote! { __transcript.changes(&mut *self, &mut __transcript_input); });
     }
-    for (name, ty) in &mutated {
-        let value = format_ident!("__transcript_final_{name}");
-        final_types.push(quote! { #ty });
-        final_names.push(value.clone());
-        stores.push(quote! { *#name = #value; });
+    for (name, _) in &mutated {
+        changes.push(quote! { __transcript.changes(&mut *#name, &mut __transcript_input); });
     }
     let value = if leak {
         quote! { ::transcript::__private::leak(__transcript_value) }
@@ -431,12 +448,10 @@ fn replay(
                 }
                 ::transcript::__private::Step::Return(__transcript_bytes) => {
                     let mut __transcript_input: &[u8] = &__transcript_bytes;
-                    #(
-                        let #final_names: #final_types =
-                            __transcript.decode(&mut __transcript_input);
-                    )*
+                    let __transcript_value: #returned =
+                        __transcript.decode(&mut __transcript_input);
+                    #(#changes)*
                     __transcript.done(__transcript_input);
-                    #(#stores)*
                     return #value;
                 }
                 ::transcript::__private::Step::Panic(__transcript_message) => {

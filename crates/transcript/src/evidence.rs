@@ -10,9 +10,28 @@
 //! the value is recorded.
 
 /// A value a recording process writes down.
+///
+/// A value a task function changes through `&mut` is recorded when the
+/// call ends. By default that is the whole value; a large value that a
+/// task changes a little at a time (a canvas changed one fragment per
+/// call) notes its changes instead ([`Record::begin_changes`],
+/// [`Record::record_changes`], [`Replay::replay_changes`]; see
+/// [`Changes`]), since writing a whole canvas per fragment costs the
+/// square of its size.
 pub trait Record {
     /// Appends the value's encoding to `out`.
     fn record(&self, out: &mut Vec<u8>);
+
+    /// A recorded call that may change the value begins: from now on note
+    /// what changes. Nothing by default.
+    fn begin_changes(&mut self) {}
+
+    /// The recorded call ends: appends what changed since
+    /// [`Record::begin_changes`], in the form [`Replay::replay_changes`]
+    /// reads. By default the whole value.
+    fn record_changes(&mut self, out: &mut Vec<u8>) {
+        self.record(out);
+    }
 }
 
 /// A value a replaying process reads back.
@@ -23,6 +42,149 @@ pub trait Replay: Sized {
     ///
     /// What does not hold a value of this type, in words.
     fn replay(input: &mut &[u8]) -> Result<Self, String>;
+
+    /// Makes `self` what the recorded call left of its own copy, from what
+    /// [`Record::record_changes`] wrote. By default the whole value.
+    ///
+    /// # Errors
+    ///
+    /// As for [`Replay::replay`]; `self` may then be changed in part.
+    fn replay_changes(&mut self, input: &mut &[u8]) -> Result<(), String> {
+        *self = Self::replay(input)?;
+        Ok(())
+    }
+}
+
+/// The journal of a large value that records its changes rather than its
+/// whole self: the indices of the elements written since the recorded call
+/// began, or that everything may have changed.
+///
+/// It lives inside the value (a canvas holds one), so it goes wherever the
+/// value goes, across threads included; a value put in the place of the
+/// recorded one (`*canvas = other`, or two recorded canvases swapped)
+/// holds no journal begun at that place and is recorded whole. Outside a recorded call it notes nothing and costs one
+/// branch per write. It takes no part in comparisons: every journal equals
+/// every other, and a clone starts without one.
+#[derive(Default)]
+pub struct Changes(Option<Journal>);
+
+/// The most writes a journal keeps before it says "everything".
+const MAX_JOURNAL: usize = 1 << 22;
+
+/// What a journal holds.
+#[derive(Default)]
+struct Journal {
+    /// Where the journal was begun.
+    home: usize,
+    /// The elements written, in the order written (repeats included).
+    written: Vec<u32>,
+    /// Everything may have changed (a clear): record the whole value.
+    everything: bool,
+}
+
+/// What changed during a recorded call, as [`Changes::end`] tells it.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Changed {
+    /// The value was not journaled from the call's start at its place
+    /// (another value was put there), or was changed all over: record it
+    /// whole.
+    Whole,
+    /// Only these elements may have changed: each once, in increasing
+    /// order.
+    Elements(Vec<u32>),
+}
+
+impl Changes {
+    /// Starts a journal (a recorded call begins).
+    pub fn begin(&mut self) {
+        self.0 = Some(Journal {
+            home: self.address(),
+            ..Journal::default()
+        });
+    }
+
+    /// Where this journal is: a journal found elsewhere at the call's end
+    /// belongs to another value moved into the recorded one's place.
+    fn address(&self) -> usize {
+        std::ptr::from_ref(self) as usize
+    }
+
+    /// Element `index` is written.
+    #[inline]
+    pub fn note(&mut self, index: usize) {
+        if let Some(journal) = &mut self.0 {
+            journal.note(index);
+        }
+    }
+
+    /// The elements `range` are written.
+    #[inline]
+    pub fn note_range(&mut self, range: std::ops::Range<usize>) {
+        if let Some(journal) = &mut self.0 {
+            for index in range {
+                journal.note(index);
+            }
+        }
+    }
+
+    /// Everything may change (a clear).
+    #[inline]
+    pub fn note_everything(&mut self) {
+        if let Some(journal) = &mut self.0 {
+            journal.everything = true;
+            journal.written = Vec::new();
+        }
+    }
+
+    /// Ends the journal (the recorded call ends): what changed.
+    pub fn end(&mut self) -> Changed {
+        let here = self.address();
+        match self.0.take() {
+            Some(journal) if !journal.everything && journal.home == here => {
+                let mut written = journal.written;
+                written.sort_unstable();
+                written.dedup();
+                Changed::Elements(written)
+            }
+            _ => Changed::Whole,
+        }
+    }
+}
+
+impl Journal {
+    #[inline]
+    fn note(&mut self, index: usize) {
+        if self.everything {
+            return;
+        }
+        // Past a few million writes the whole value is the smaller record.
+        match u32::try_from(index) {
+            Ok(index) if self.written.len() < MAX_JOURNAL => self.written.push(index),
+            _ => {
+                self.everything = true;
+                self.written = Vec::new();
+            }
+        }
+    }
+}
+
+impl Clone for Changes {
+    /// A clone is another value: no journal of the call.
+    fn clone(&self) -> Self {
+        Changes(None)
+    }
+}
+
+impl PartialEq for Changes {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for Changes {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() { "journaled" } else { "-" })
+    }
 }
 
 /// `value` appended to `out` by serde (what [`crate::evidence`] expands to).
@@ -414,5 +576,37 @@ mod tests {
         let mut out = Vec::new();
         1_000_000_usize.record(&mut out);
         assert!(Vec::<u8>::replay(&mut out.as_slice()).is_err());
+    }
+}
+
+#[cfg(test)]
+mod journal_tests {
+    use super::{Changed, Changes};
+
+    #[test]
+    fn a_journal_tells_each_element_written_once_in_order() {
+        let mut changes = Changes::default();
+        changes.note(3);
+        assert_eq!(changes.end(), Changed::Whole, "no journal was begun");
+        changes.begin();
+        changes.note(7);
+        changes.note_range(2..5);
+        changes.note(3);
+        assert_eq!(changes.end(), Changed::Elements(vec![2, 3, 4, 7]));
+        assert_eq!(changes.end(), Changed::Whole, "a journal ends once");
+        changes.begin();
+        changes.note(1);
+        changes.note_everything();
+        changes.note(2);
+        assert_eq!(changes.end(), Changed::Whole);
+    }
+
+    #[test]
+    fn a_journal_moved_away_from_where_it_began_is_not_trusted() {
+        let mut changes = Changes::default();
+        changes.begin();
+        changes.note(1);
+        let mut moved = Box::new(std::mem::take(&mut changes));
+        assert_eq!(moved.end(), Changed::Whole);
     }
 }

@@ -52,7 +52,7 @@ mod evidence;
 mod record;
 mod replay;
 
-pub use evidence::{Record, Replay};
+pub use evidence::{Changed, Changes, Record, Replay};
 pub use transcript_macros::{evidence, task};
 
 /// The environment variable naming the file a recording process writes

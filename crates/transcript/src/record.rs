@@ -186,6 +186,13 @@ impl Drop for Outside {
 }
 
 impl Recording {
+    /// Whether the call is recorded.
+    #[must_use]
+    #[inline]
+    pub fn is_on(self) -> bool {
+        self.0.is_some()
+    }
+
     /// The call invokes its callback parameter number `parameter`, whose
     /// arguments `encode` writes; keep the returned guard alive while the
     /// callback runs.

@@ -168,6 +168,17 @@ impl Replaying {
         })
     }
 
+    /// Brings `value`, a `&mut` parameter of the call, to what the
+    /// student's call left of it, from the front of `input`.
+    pub fn changes<T: Replay>(&self, value: &mut T, input: &mut &[u8]) {
+        value.replay_changes(input).unwrap_or_else(|error| {
+            panic!(
+                "the record of `{}` does not hold the changes of a value the test passed in ({error})",
+                self.name
+            )
+        });
+    }
+
     /// Every recorded value was read.
     pub fn done(&self, input: &[u8]) {
         assert!(

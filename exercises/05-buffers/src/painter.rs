@@ -27,6 +27,7 @@ use crate::raster::fill_triangle;
 /// and Sancha 1972 sort by the farthest z first). `None` when a depth is
 /// NaN or infinite.
 #[must_use]
+#[transcript::task]
 pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
     // Unused until you write the body:
     let _ = &triangle;
@@ -38,6 +39,7 @@ pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
 /// their input order (a stable sort); triangles with a NaN or infinite
 /// depth are left out.
 #[must_use]
+#[transcript::task]
 pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
     // Unused until you write the body:
     let _ = &triangles;
@@ -47,6 +49,7 @@ pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
 /// Paints `triangles` onto `canvas` in [`painter_order`]: every fragment
 /// of [`fill_triangle`] (clipped to the canvas) overwrites the colour, with
 /// no depth test; the depth plane is not touched.
+#[transcript::task]
 pub fn paint(canvas: &mut Canvas, triangles: &[[Vertex; 3]]) {
     // Unused until you write the body:
     let _ = (&canvas, &triangles);

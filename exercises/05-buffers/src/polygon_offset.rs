@@ -39,6 +39,7 @@ use crate::raster::{draw_line, fill_triangle};
 pub const DEPTH_RESOLUTION: f32 = 1.0 / 16_777_216.0;
 
 /// Why a triangle has no depth slope.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum OffsetError {
     /// A position or depth is NaN or infinite.
@@ -72,6 +73,7 @@ impl PolygonOffset {
     /// The offset `o = m · factor + r · units` for a polygon of depth
     /// slope `m`.
     #[must_use]
+    #[transcript::task]
     pub fn offset(self, m: f32) -> f32 {
         // Unused until you write the body:
         let _ = &m;
@@ -93,6 +95,7 @@ impl PolygonOffset {
 /// ```
 ///
 /// An error for a zero-area triangle or a non-finite position or depth.
+#[transcript::task]
 pub fn max_depth_slope(triangle: [Vertex; 3]) -> Result<f32, OffsetError> {
     // Unused until you write the body:
     let _ = &triangle;
@@ -140,6 +143,7 @@ pub enum HiddenLineOffset {
 /// passes at some pixels and fails at others (z-fighting). A negative
 /// offset brings it in front everywhere. A degenerate or non-finite
 /// triangle draws nothing.
+#[transcript::task]
 pub fn fill_offset(
     canvas: &mut Canvas,
     triangle: [Vertex; 3],
@@ -171,6 +175,7 @@ pub fn fill_offset(
 ///
 /// Degenerate triangles have no fill and are outlined without an offset;
 /// fragments outside the canvas or with a NaN depth are dropped.
+#[transcript::task]
 pub fn hidden_line(
     canvas: &mut Canvas,
     triangles: &[[Vertex; 3]],

@@ -26,6 +26,7 @@
 use glam::{DVec2, DVec3};
 
 /// Why a triangle has no depth plane.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum ScanlineError {
     /// A coordinate is NaN or infinite.
@@ -41,6 +42,7 @@ pub enum ScanlineError {
 /// points `a` (on the short edge 1–2) and `b` (on the long edge 1–3), with
 /// the seed's names, each with its depth. (The pixels between them are a
 /// [`canvas::Span`]; this is the continuous crossing they come from.)
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpanEnds {
     /// The scanline's `y`.
@@ -71,6 +73,7 @@ pub struct SpanEnds {
 /// `None` when `ys` lies outside `[lo.y, hi.y]`, when the triangle has no
 /// height (`lo.y = hi.y`) or when any input is not finite.
 #[must_use]
+#[transcript::task]
 pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<SpanEnds> {
     // Unused until you write the body:
     let _ = (&triangle, &ys);
@@ -89,6 +92,7 @@ pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<SpanEnds> {
 /// no width (`x_a = x_b`, at a vertex) the formula divides by zero — a
 /// case the seed does not mention — and `z_a` is returned.
 #[must_use]
+#[transcript::task]
 pub fn depth_in_span(span: &SpanEnds, x_p: f64) -> f64 {
     // Unused until you write the body:
     let _ = (&span, &x_p);
@@ -102,6 +106,7 @@ pub fn depth_in_span(span: &SpanEnds, x_p: f64) -> f64 {
 /// `D = −(A, B, C) · V0`. Only the ratios `A/C`, `B/C`, `D/C` matter. (The
 /// seed calls `D` "Abstand vom Ursprung": that holds only for a normal of
 /// length 1; here the normal is not normalized, and need not be.)
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthPlane {
     /// The normal `(A, B, C)`; `C ≠ 0`.
@@ -116,6 +121,7 @@ impl DepthPlane {
     ///
     /// An error when a coordinate is not finite or `C = 0` (the triangle's
     /// projection onto the screen has no area).
+    #[transcript::task]
     pub fn try_from_triangle(triangle: [DVec3; 3]) -> Result<Self, ScanlineError> {
         // Unused until you write the body:
         let _ = &triangle;
@@ -126,6 +132,7 @@ impl DepthPlane {
 
     /// `z(x, y) = (−A·x − B·y − D) / C`.
     #[must_use]
+    #[transcript::task]
     pub fn depth_at(&self, p: DVec2) -> f64 {
         // Unused until you write the body:
         let _ = &p;
@@ -135,6 +142,7 @@ impl DepthPlane {
     /// The constant `A/C` that one step to the right subtracts:
     /// `z(x + 1, y) = z(x, y) − A/C`.
     #[must_use]
+    #[transcript::task]
     pub fn step_x(&self) -> f64 {
         todo!("scanline_depth: the x step of the plane equation")
     }
@@ -142,6 +150,7 @@ impl DepthPlane {
     /// The constant `B/C` that one step up subtracts:
     /// `z(x, y + 1) = z(x, y) − B/C`.
     #[must_use]
+    #[transcript::task]
     pub fn step_y(&self) -> f64 {
         todo!("scanline_depth: the y step of the plane equation")
     }
@@ -156,6 +165,7 @@ impl DepthPlane {
 /// place of the largest value involved. The caller chooses `count` (a
 /// span of the canvas): the result holds `count` values.
 #[must_use]
+#[transcript::task]
 pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize) -> Vec<f64> {
     // Unused until you write the body:
     let _ = (&plane, &y, &first_x, &count);
@@ -180,6 +190,7 @@ pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize
 /// of `first_xs` (none for an empty slice). Rounding adds up over the
 /// rows as it does along a row.
 #[must_use]
+#[transcript::task]
 pub fn row_start_depths(plane: &DepthPlane, first_y: i32, first_xs: &[i32]) -> Vec<f64> {
     // Unused until you write the body:
     let _ = (&plane, &first_y, &first_xs);

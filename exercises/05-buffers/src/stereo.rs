@@ -77,6 +77,7 @@ impl Eye {
 }
 
 /// Why a stereo camera or picture cannot be made.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum StereoError {
     /// A position, direction or number is NaN or infinite.
@@ -185,6 +186,7 @@ impl StereoCamera {
 
 /// The two back buffers of a stereo framebuffer, one per eye, each a
 /// cleared canvas with its own depth plane.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct StereoBuffer {
     left: Canvas,
@@ -237,6 +239,7 @@ impl StereoCamera {
     /// the camera's right vector `normalize((target − eye) × up)`, to the
     /// left (−) for the left eye and to the right (+) for the right eye.
     #[must_use]
+    #[transcript::task]
     pub fn eye_position(&self, eye: Eye) -> Vec3 {
         // Unused until you write the body:
         let _ = &eye;
@@ -248,6 +251,7 @@ impl StereoCamera {
     /// direction, with its `up`. The two eyes' axes are parallel: do not
     /// turn them towards the target (toe-in).
     #[must_use]
+    #[transcript::task]
     pub fn view(&self, eye: Eye) -> Mat4 {
         // Unused until you write the body:
         let _ = &eye;
@@ -272,6 +276,7 @@ impl StereoCamera {
     /// plane, so that both frusta cut the same window out of the plane at
     /// `c`. With `s = 0` this is `gluPerspective`.
     #[must_use]
+    #[transcript::task]
     pub fn projection(&self, eye: Eye, aspect: f32) -> Mat4 {
         // Unused until you write the body:
         let _ = (&eye, &aspect);
@@ -291,6 +296,7 @@ impl StereoCamera {
 /// volumes (the shipped `torus.ply` and `star.ply` do for the course
 /// camera). An error for a camera that fails [`StereoCamera::check`] (no
 /// picture is drawn) or pictures that are too large.
+#[transcript::task]
 pub fn render_stereo(
     camera: &StereoCamera,
     mesh: &Mesh,
@@ -311,6 +317,7 @@ pub fn render_stereo(
 /// glasses and is 0 through red-green ones; alpha is 1. Each eye's filter
 /// then passes (mostly) its own picture.
 #[must_use]
+#[transcript::task]
 pub fn anaglyph(buffer: &StereoBuffer, glasses: Glasses) -> Canvas {
     // Unused until you write the body:
     let _ = (&buffer, &glasses);

@@ -150,7 +150,7 @@ fn a_point_behind_the_zero_parallax_plane_moves_right_in_the_right_picture() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 
     /// With parallel axes a point lies in the same row of both pictures;
     /// toe-in fails for every point away from the centre.
@@ -268,7 +268,7 @@ fn the_anaglyph_takes_red_from_the_left_picture_and_green_and_blue_from_the_righ
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 32, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 32, ..testkit::proptest_config() })]
 
     /// What both eyes see alike in grey needs no filter: through red-cyan
     /// glasses the anaglyph of a grey picture shown to both eyes is that

@@ -129,7 +129,7 @@ fn scene_with_transforms() -> impl Strategy<Value = (Vec<Primitive>, Node)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 
     /// The flattened tree over its instances is the same solid, and
     /// `contains` agrees with the definition.
@@ -263,7 +263,7 @@ fn a_scaled_instance_is_met_at_world_depths() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 64, ..testkit::proptest_config() })]
 
     /// A quarter turn about z of a box is the box with x and y extents
     /// exchanged.

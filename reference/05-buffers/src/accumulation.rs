@@ -46,6 +46,7 @@ pub const JITTER_8: [Vec2; 8] = [
 /// A front buffer that is shown and a back buffer that is drawn into
 /// (`GLUT_DOUBLE`); [`DoubleBuffer::swap`] exchanges them
 /// (`glutSwapBuffers`).
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct DoubleBuffer {
     front: Canvas,
@@ -77,6 +78,7 @@ impl DoubleBuffer {
     /// and the old front becomes the new back buffer (with its old
     /// content — a frame starts by clearing it). Swapping twice restores
     /// the original state. No pixel is copied.
+    #[transcript::task]
     pub fn swap(&mut self) {
         // BEGIN SOLUTION accumulation: exchange the two canvases without copying pixels
         std::mem::swap(&mut self.front, &mut self.back);
@@ -85,6 +87,7 @@ impl DoubleBuffer {
 }
 
 /// Why an accumulation-buffer operation failed.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum AccumError {
     /// The canvas and the accumulation buffer differ in size.
@@ -131,6 +134,7 @@ pub enum AccumOp {
 /// An accumulation buffer: one RGBA value of `f32` per pixel, unclamped
 /// (OpenGL's is typically 16 bits per channel, signed; the range `[−1, 1]`
 /// of those is not enforced here), cleared to 0.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct AccumulationBuffer {
     width: u32,
@@ -168,6 +172,7 @@ impl AccumulationBuffer {
     /// canvas has another size. Accumulating one frame with `Load` or
     /// `Accum` (value 1, from a cleared buffer) and returning it with value
     /// 1 gives that frame back exactly.
+    #[transcript::task]
     pub fn accum(
         &mut self,
         op: AccumOp,
@@ -219,6 +224,7 @@ impl AccumulationBuffer {
 /// that hit the scene, as `n + 1` grey levels. One offset `(0, 0)` gives
 /// exactly the aliased frame. An error for an empty `jitter` or a canvas
 /// beyond [`Canvas::MAX_PIXELS`].
+#[transcript::task]
 pub fn jittered_antialias(
     width: u32,
     height: u32,
@@ -254,6 +260,7 @@ pub fn jittered_antialias(
 /// `src.a = 1` gives `src` (an opaque fragment replaces), `src.a = 0`
 /// gives `dst`.
 #[must_use]
+#[transcript::task]
 pub fn blend(src: Rgba, dst: Rgba) -> Rgba {
     // BEGIN SOLUTION accumulation: weight src by its alpha and dst by one minus it, channel by channel
     let a = src.a;
@@ -282,6 +289,7 @@ pub fn blend(src: Rgba, dst: Rgba) -> Rgba {
 ///
 /// On a black canvas a white triangle comes out as jittered accumulation
 /// draws it; two triangles sharing an edge do not (the seam).
+#[transcript::task]
 pub fn smooth_triangle(canvas: &mut Canvas, vertices: [Vec2; 3], colour: Rgba) {
     // BEGIN SOLUTION accumulation: count per pixel the jittered samples fill_triangle covers, then blend the colour with alpha times that fraction
     let (width, height) = (canvas.width(), canvas.height());

@@ -25,6 +25,7 @@ use crate::raster::fill_triangle;
 /// and Sancha 1972 sort by the farthest z first). `None` when a depth is
 /// NaN or infinite.
 #[must_use]
+#[transcript::task]
 pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
     // BEGIN SOLUTION painter: the largest of the three vertex depths, None if one is not finite
     if !triangle.iter().all(|v| v.depth.is_finite()) {
@@ -39,6 +40,7 @@ pub fn farthest_depth(triangle: &[Vertex; 3]) -> Option<f32> {
 /// their input order (a stable sort); triangles with a NaN or infinite
 /// depth are left out.
 #[must_use]
+#[transcript::task]
 pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
     // BEGIN SOLUTION painter: keep the triangles with a key, sort them stably by key, largest first
     let mut keyed: Vec<(usize, f32)> = triangles
@@ -54,6 +56,7 @@ pub fn painter_order(triangles: &[[Vertex; 3]]) -> Vec<usize> {
 /// Paints `triangles` onto `canvas` in [`painter_order`]: every fragment
 /// of [`fill_triangle`] (clipped to the canvas) overwrites the colour, with
 /// no depth test; the depth plane is not touched.
+#[transcript::task]
 pub fn paint(canvas: &mut Canvas, triangles: &[[Vertex; 3]]) {
     // BEGIN SOLUTION painter: fill the triangles in painter order, each fragment overwriting the colour
     let viewport: Viewport = canvas.viewport();

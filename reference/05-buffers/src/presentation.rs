@@ -68,6 +68,7 @@ pub enum SwapMode {
 }
 
 /// What the display showed.
+#[transcript::evidence]
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Presented {
     /// For each refresh, for each row (top first), the frame it showed:
@@ -79,6 +80,7 @@ pub struct Presented {
 }
 
 /// Why a timing cannot be simulated.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum PresentError {
     /// `height`, `vblank` or `render` is 0 (a display without a blank
@@ -100,6 +102,7 @@ pub enum PresentError {
 ///
 /// # Errors
 /// [`PresentError::Empty`] for a `height`, `vblank` or `render` of 0.
+#[transcript::task]
 pub fn present(mode: SwapMode, timing: Timing, refreshes: u32) -> Result<Presented, PresentError> {
     // BEGIN SOLUTION presentation: step through the ticks: finish a frame when due, swap as the mode says (at once, at a blank tick, or the newest waiting one at a blank tick), then scan the tick's row
     if timing.height == 0 || timing.vblank == 0 || timing.render == 0 {

@@ -26,6 +26,7 @@
 use glam::{DVec2, DVec3};
 
 /// Why a triangle has no depth plane.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum ScanlineError {
     /// A coordinate is NaN or infinite.
@@ -41,6 +42,7 @@ pub enum ScanlineError {
 /// points `a` (on the short edge 1–2) and `b` (on the long edge 1–3), with
 /// the seed's names, each with its depth. (The pixels between them are a
 /// [`canvas::Span`]; this is the continuous crossing they come from.)
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpanEnds {
     /// The scanline's `y`.
@@ -71,6 +73,7 @@ pub struct SpanEnds {
 /// `None` when `ys` lies outside `[lo.y, hi.y]`, when the triangle has no
 /// height (`lo.y = hi.y`) or when any input is not finite.
 #[must_use]
+#[transcript::task]
 pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<SpanEnds> {
     // BEGIN SOLUTION scanline_depth: pick vertex 1 and the edges 1–2, 1–3 crossing ys, then apply the z_a, z_b (and x_a, x_b) formulas
     if !ys.is_finite() || !triangle.iter().all(|v| v.is_finite()) {
@@ -117,6 +120,7 @@ pub fn span_at(triangle: [DVec3; 3], ys: f64) -> Option<SpanEnds> {
 /// no width (`x_a = x_b`, at a vertex) the formula divides by zero — a
 /// case the seed does not mention — and `z_a` is returned.
 #[must_use]
+#[transcript::task]
 pub fn depth_in_span(span: &SpanEnds, x_p: f64) -> f64 {
     // BEGIN SOLUTION scanline_depth: apply the z_p formula; return z_a for a span of zero width
     let (a, b) = (span.a, span.b);
@@ -134,6 +138,7 @@ pub fn depth_in_span(span: &SpanEnds, x_p: f64) -> f64 {
 /// `D = −(A, B, C) · V0`. Only the ratios `A/C`, `B/C`, `D/C` matter. (The
 /// seed calls `D` "Abstand vom Ursprung": that holds only for a normal of
 /// length 1; here the normal is not normalized, and need not be.)
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthPlane {
     /// The normal `(A, B, C)`; `C ≠ 0`.
@@ -148,6 +153,7 @@ impl DepthPlane {
     ///
     /// An error when a coordinate is not finite or `C = 0` (the triangle's
     /// projection onto the screen has no area).
+    #[transcript::task]
     pub fn try_from_triangle(triangle: [DVec3; 3]) -> Result<Self, ScanlineError> {
         // BEGIN SOLUTION scanline_depth: the normal is the cross product of two edges, D = −normal · V0; reject C = 0
         if !triangle.iter().all(|v| v.is_finite()) {
@@ -167,6 +173,7 @@ impl DepthPlane {
 
     /// `z(x, y) = (−A·x − B·y − D) / C`.
     #[must_use]
+    #[transcript::task]
     pub fn depth_at(&self, p: DVec2) -> f64 {
         // BEGIN SOLUTION scanline_depth: solve the plane equation for z
         let n = self.normal;
@@ -177,6 +184,7 @@ impl DepthPlane {
     /// The constant `A/C` that one step to the right subtracts:
     /// `z(x + 1, y) = z(x, y) − A/C`.
     #[must_use]
+    #[transcript::task]
     pub fn step_x(&self) -> f64 {
         // BEGIN SOLUTION scanline_depth: the x step of the plane equation
         self.normal.x / self.normal.z
@@ -186,6 +194,7 @@ impl DepthPlane {
     /// The constant `B/C` that one step up subtracts:
     /// `z(x, y + 1) = z(x, y) − B/C`.
     #[must_use]
+    #[transcript::task]
     pub fn step_y(&self) -> f64 {
         // BEGIN SOLUTION scanline_depth: the y step of the plane equation
         self.normal.y / self.normal.z
@@ -202,6 +211,7 @@ impl DepthPlane {
 /// place of the largest value involved. The caller chooses `count` (a
 /// span of the canvas): the result holds `count` values.
 #[must_use]
+#[transcript::task]
 pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize) -> Vec<f64> {
     // BEGIN SOLUTION scanline_depth: evaluate the plane once at the first pixel, then subtract A/C per step
     let step = plane.step_x();
@@ -233,6 +243,7 @@ pub fn incremental_depths(plane: &DepthPlane, y: i32, first_x: i32, count: usize
 /// of `first_xs` (none for an empty slice). Rounding adds up over the
 /// rows as it does along a row.
 #[must_use]
+#[transcript::task]
 pub fn row_start_depths(plane: &DepthPlane, first_y: i32, first_xs: &[i32]) -> Vec<f64> {
     // BEGIN SOLUTION scanline_depth: evaluate the plane once at the first row's start, then per row subtract A/C times the columns moved and B/C
     let Some((&x0, rest)) = first_xs.split_first() else {

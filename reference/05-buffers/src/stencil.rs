@@ -60,6 +60,7 @@ impl StencilOp {
 
     /// The new value for a stored `value` (before the write mask).
     #[must_use]
+    #[transcript::task]
     pub fn apply(self, value: u8, reference: u8) -> u8 {
         // BEGIN SOLUTION stencil: one arm per operation; INCR and DECR saturate, the _WRAP ones wrap
         match self {
@@ -80,6 +81,7 @@ impl StencilOp {
 /// (`glStencilMask`): bits set in the mask come from `new`, the others
 /// stay as in `old`: `(old & !write_mask) | (new & write_mask)`.
 #[must_use]
+#[transcript::task]
 pub fn write_masked(old: u8, new: u8, write_mask: u8) -> u8 {
     // BEGIN SOLUTION stencil: take the masked bits from new and the others from old
     (old & !write_mask) | (new & write_mask)
@@ -135,6 +137,7 @@ impl StencilState {
     /// not taken from Task 1's `Compare::passes`: each task is graded on
     /// its own, and on two `u8`s each comparison is one operator.
     #[must_use]
+    #[transcript::task]
     pub fn test(&self, stored: u8) -> bool {
         // BEGIN SOLUTION stencil: mask the reference and the stored value, then one arm per Compare: reference OP stored (do not call Task 1's Compare::passes)
         let (reference, stored) = (self.reference & self.value_mask, stored & self.value_mask);
@@ -159,6 +162,7 @@ impl Default for StencilState {
 }
 
 /// Which of the three outcomes a fragment met.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum StencilOutcome {
     /// The stencil test failed: `stencil_fail` was applied, nothing drawn.
@@ -181,6 +185,7 @@ pub enum StencilOutcome {
 /// - The operation of the outcome is applied to the stored stencil value
 ///   and written through [`write_masked`] with `write_mask`.
 /// - Only `DepthPass` writes the fragment's colour.
+#[transcript::task]
 pub fn stencil_fragment(
     canvas: &mut Canvas,
     fragment: Fragment,

@@ -74,6 +74,7 @@ impl Eye {
 }
 
 /// Why a stereo camera or picture cannot be made.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum StereoError {
     /// A position, direction or number is NaN or infinite.
@@ -182,6 +183,7 @@ impl StereoCamera {
 
 /// The two back buffers of a stereo framebuffer, one per eye, each a
 /// cleared canvas with its own depth plane.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct StereoBuffer {
     left: Canvas,
@@ -234,6 +236,7 @@ impl StereoCamera {
     /// the camera's right vector `normalize((target − eye) × up)`, to the
     /// left (−) for the left eye and to the right (+) for the right eye.
     #[must_use]
+    #[transcript::task]
     pub fn eye_position(&self, eye: Eye) -> Vec3 {
         // BEGIN SOLUTION stereo: move the mono eye by ±s/2 along normalize((target − eye) × up)
         let right = (self.target - self.eye).cross(self.up).normalize();
@@ -246,6 +249,7 @@ impl StereoCamera {
     /// direction, with its `up`. The two eyes' axes are parallel: do not
     /// turn them towards the target (toe-in).
     #[must_use]
+    #[transcript::task]
     pub fn view(&self, eye: Eye) -> Mat4 {
         // BEGIN SOLUTION stereo: look from the eye's position at the target moved by the same offset, so the axes stay parallel
         let offset = self.eye_position(eye) - self.eye;
@@ -269,6 +273,7 @@ impl StereoCamera {
     /// plane, so that both frusta cut the same window out of the plane at
     /// `c`. With `s = 0` this is `gluPerspective`.
     #[must_use]
+    #[transcript::task]
     pub fn projection(&self, eye: Eye, aspect: f32) -> Mat4 {
         // BEGIN SOLUTION stereo: the mono window at the near plane (t = near·tan(fov/2), a = t·aspect), shifted by −side·(s/2)·near/c, as glFrustum
         let top = self.near * (0.5 * self.fov_y).tan();
@@ -296,6 +301,7 @@ impl StereoCamera {
 /// volumes (the shipped `torus.ply` and `star.ply` do for the course
 /// camera). An error for a camera that fails [`StereoCamera::check`] (no
 /// picture is drawn) or pictures that are too large.
+#[transcript::task]
 pub fn render_stereo(
     camera: &StereoCamera,
     mesh: &Mesh,
@@ -327,6 +333,7 @@ pub fn render_stereo(
 /// glasses and is 0 through red-green ones; alpha is 1. Each eye's filter
 /// then passes (mostly) its own picture.
 #[must_use]
+#[transcript::task]
 pub fn anaglyph(buffer: &StereoBuffer, glasses: Glasses) -> Canvas {
     // BEGIN SOLUTION stereo: per pixel, red from the left picture, green (and through red-cyan glasses blue) from the right one, alpha 1
     let (left, right) = (buffer.get(Eye::Left), buffer.get(Eye::Right));

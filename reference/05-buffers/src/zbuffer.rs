@@ -19,6 +19,7 @@
 use canvas::{Canvas, Fragment, Rgba};
 
 /// Why a depth state could not be set.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum DepthError {
     /// A clear value or a depth range bound was NaN.
@@ -79,6 +80,7 @@ impl Compare {
     /// unequal to everything, so only `NotEqual` and `Always` pass a NaN
     /// (the z-buffer below never lets a NaN depth get this far).
     #[must_use]
+    #[transcript::task]
     pub fn passes<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
         // BEGIN SOLUTION zbuffer: compare incoming OP stored for each of the eight functions
         match self {
@@ -100,6 +102,7 @@ impl Compare {
 ///
 /// Both bounds lie in `[0, 1]`; `near > far` is allowed and reverses the
 /// depth order, as in OpenGL.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthRange {
     near: f32,
@@ -115,6 +118,7 @@ impl DepthRange {
 
     /// The range `near ..= far`, each bound clamped to `[0, 1]` as
     /// `glDepthRange` does; an error if either is NaN.
+    #[transcript::task]
     pub fn try_new(near: f32, far: f32) -> Result<Self, DepthError> {
         // BEGIN SOLUTION zbuffer: reject NaN, clamp both bounds to [0, 1]
         if near.is_nan() || far.is_nan() {
@@ -142,6 +146,7 @@ impl DepthRange {
     /// The window depth `near + (far − near) · z` of fragment depth `z`:
     /// `z = 0` gives `near` and `z = 1` gives `far` exactly.
     #[must_use]
+    #[transcript::task]
     pub fn map(self, z: f32) -> f32 {
         // BEGIN SOLUTION zbuffer: map z linearly so that 0 gives near and 1 gives far
         // `near·(1 − z) + far·z` hits both ends exactly, which
@@ -202,6 +207,7 @@ impl DepthState {
 /// `depth` is clamped to `[0, 1]` as `glClearDepth` does; the seed's
 /// tables clear to ∞, which a `[0, 1]` depth buffer stores as 1. A NaN
 /// depth is an error and leaves the canvas untouched.
+#[transcript::task]
 pub fn clear(canvas: &mut Canvas, colour: Rgba, depth: f32) -> Result<(), DepthError> {
     // BEGIN SOLUTION zbuffer: reject NaN, then set every pixel's colour and its clamped depth
     if depth.is_nan() {
@@ -228,6 +234,7 @@ pub fn clear(canvas: &mut Canvas, colour: Rgba, depth: f32) -> Result<(), DepthE
 /// 2. Its window depth is `z_w = state.range.map(fragment.depth)`.
 /// 3. If `state.func.passes(z_w, stored)`, the colour is written, and the
 ///    depth `z_w` too when `state.write` is set.
+#[transcript::task]
 pub fn depth_test(canvas: &mut Canvas, fragment: Fragment, state: &DepthState) -> bool {
     // BEGIN SOLUTION zbuffer: discard bad fragments, map the depth, test it, then write colour and (if enabled) depth
     let Some(stored) = canvas.depth(fragment.pixel) else {

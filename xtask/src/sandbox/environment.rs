@@ -131,6 +131,13 @@ impl Environment {
         ("PROPTEST_DISABLE_FAILURE_PERSISTENCE", "1"),
     ];
 
+    /// The seed of every property test's cases when the grader was given
+    /// none: the course's own (`testkit::SEED`, which `cargo test` uses),
+    /// also for a test whose configuration forgot it. Every run of a test
+    /// must meet the same cases: a grade is repeatable, and a replayed
+    /// test must make the same calls as the recorded run.
+    pub const PROPTEST_SEED: &str = "868603117007011841";
+
     /// The variables every job gets: the grader's [`Self::PASSED_ON`] ones,
     /// the tools' [`Self::TOOL_SETTINGS`], a `PATH` of the system's
     /// programs, a `HOME` and `TMPDIR` of its own (`home`), a UTF-8 locale.
@@ -167,6 +174,9 @@ impl Environment {
         }
         env.push(("TMPDIR".into(), home.into()));
         env.push(("LANG".into(), "C.UTF-8".into()));
+        if !env.iter().any(|(name, _)| name == "PROPTEST_RNG_SEED") {
+            env.push(("PROPTEST_RNG_SEED".into(), Self::PROPTEST_SEED.into()));
+        }
         env.extend(
             Self::TOOL_SETTINGS
                 .iter()
@@ -203,6 +213,22 @@ mod tests {
         }
         let home = env.iter().find(|(n, _)| n == "TMPDIR").unwrap();
         assert_eq!(home.1, "/scratch");
+    }
+
+    #[test]
+    fn property_tests_meet_the_course_s_own_cases() {
+        let source = include_str!("../../../crates/testkit/src/strategies.rs");
+        let seed: u64 = Environment::PROPTEST_SEED.parse().unwrap();
+        assert!(
+            source.contains(&format!(
+                "pub const SEED: u64 = 0x{:04X}_{:04X}_{:04X}_{:04X};",
+                seed >> 48,
+                (seed >> 32) & 0xffff,
+                (seed >> 16) & 0xffff,
+                seed & 0xffff
+            )),
+            "testkit's SEED is not {seed:#x}"
+        );
     }
 
     #[test]
