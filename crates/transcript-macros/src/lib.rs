@@ -53,8 +53,8 @@ pub fn task(attr: TokenStream, item: TokenStream) -> TokenStream {
 /// Marks a type whose values cross between a task function and its test:
 /// implements `transcript::Record` and `transcript::Replay` in the type's
 /// own crate (see the `transcript` crate's `evidence` module for why
-/// there): a struct field by field, an enum through `serde`'s derives
-/// (reached through the `transcript` crate: no `serde` dependency needed).
+/// there): a struct field by field, an enum as its variant's number and
+/// then that variant's fields. Every field's type must be evidence too.
 #[proc_macro_attribute]
 pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
     if let Some(error) = arguments_given(attr, "evidence") {
@@ -70,58 +70,67 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
         .into();
     }
     let name = &input.ident;
-    // A struct is written field by field, each through its own type's
-    // `Record` (optimised where that type lives); an enum through serde.
-    let fields = match &input.data {
-        syn::Data::Struct(data) => Some(&data.fields),
-        _ => None,
-    };
-    let Some(fields) = fields else {
-        return quote! {
-            #[derive(
-                ::transcript::__private::serde::Serialize,
-                ::transcript::__private::serde::Deserialize
-            )]
-            #[serde(crate = "::transcript::__private::serde")]
-            #input
-
-            impl ::transcript::Record for #name {
-                fn record(&self, out: &mut ::std::vec::Vec<u8>) {
-                    ::transcript::__private::encode(self, out);
-                }
-            }
-
-            impl ::transcript::Replay for #name {
-                fn replay(
-                    input: &mut &[u8],
-                ) -> ::core::result::Result<Self, ::std::string::String> {
-                    ::transcript::__private::decode(input)
-                }
-            }
+    let expanded = match &input.data {
+        syn::Data::Struct(data) => evidence_struct(name, &data.fields),
+        syn::Data::Enum(data) => evidence_enum(name, data),
+        syn::Data::Union(_) => {
+            return syn::Error::new(
+                input.span(),
+                "`#[transcript::evidence]` takes a struct or an enum",
+            )
+            .to_compile_error()
+            .into();
         }
-        .into();
-    };
-    let members: Vec<syn::Member> = fields
-        .iter()
-        .enumerate()
-        .map(|(index, field)| match &field.ident {
-            Some(ident) => syn::Member::Named(ident.clone()),
-            None => syn::Member::Unnamed(syn::Index::from(index)),
-        })
-        .collect();
-    let types = fields.iter().map(|field| &field.ty);
-    let build = match fields {
-        syn::Fields::Named(_) => {
-            quote! { Self { #(#members: <#types as ::transcript::Replay>::replay(input)?,)* } }
-        }
-        syn::Fields::Unnamed(_) => {
-            quote! { Self(#(<#types as ::transcript::Replay>::replay(input)?,)*) }
-        }
-        syn::Fields::Unit => quote! { Self },
     };
     quote! {
         #input
+        #expanded
+    }
+    .into()
+}
 
+/// The members of `fields` (names or indices), and the bindings a pattern
+/// gives them.
+fn members(fields: &syn::Fields) -> (Vec<syn::Member>, Vec<Ident>) {
+    fields
+        .iter()
+        .enumerate()
+        .map(|(index, field)| match &field.ident {
+            Some(ident) => (
+                syn::Member::Named(ident.clone()),
+                format_ident!("__transcript_{ident}"),
+            ),
+            None => (
+                syn::Member::Unnamed(syn::Index::from(index)),
+                format_ident!("__transcript_field{index}"),
+            ),
+        })
+        .unzip()
+}
+
+/// The expression that reads a value of `fields`' shape, `path` its
+/// constructor (`Self` or `Self::Variant`).
+fn build(path: &Tokens, fields: &syn::Fields) -> Tokens {
+    let (members, _) = members(fields);
+    let types = fields.iter().map(|field| &field.ty);
+    match fields {
+        syn::Fields::Named(_) => {
+            quote! { #path { #(#members: <#types as ::transcript::Replay>::replay(input)?,)* } }
+        }
+        syn::Fields::Unnamed(_) => {
+            quote! { #path(#(<#types as ::transcript::Replay>::replay(input)?,)*) }
+        }
+        syn::Fields::Unit => quote! { #path },
+    }
+}
+
+/// A struct, field by field, each through its own type's `Record`
+/// (optimised where that type lives); its changes field by field too, so a
+/// struct of canvases records only the pixels written.
+fn evidence_struct(name: &Ident, fields: &syn::Fields) -> Tokens {
+    let (members, _) = members(fields);
+    let build = build(&quote! { Self }, fields);
+    quote! {
         impl ::transcript::Record for #name {
             fn record(&self, out: &mut ::std::vec::Vec<u8>) {
                 #(::transcript::Record::record(&self.#members, out);)*
@@ -150,7 +159,52 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
             }
         }
     }
-    .into()
+}
+
+/// An enum: the variant's number (its place in the declaration), then its
+/// fields as a struct's.
+fn evidence_enum(name: &Ident, data: &syn::DataEnum) -> Tokens {
+    let mut records = Vec::new();
+    let mut replays = Vec::new();
+    for (index, variant) in data.variants.iter().enumerate() {
+        let tag = u32::try_from(index).unwrap_or(u32::MAX);
+        let ident = &variant.ident;
+        let (members, bindings) = members(&variant.fields);
+        let pattern = match &variant.fields {
+            syn::Fields::Named(_) => quote! { Self::#ident { #(#members: #bindings),* } },
+            syn::Fields::Unnamed(_) => quote! { Self::#ident(#(#bindings),*) },
+            syn::Fields::Unit => quote! { Self::#ident },
+        };
+        records.push(quote! {
+            #pattern => {
+                ::transcript::Record::record(&#tag, out);
+                #(::transcript::Record::record(#bindings, out);)*
+            }
+        });
+        let build = build(&quote! { Self::#ident }, &variant.fields);
+        replays.push(quote! { #tag => #build, });
+    }
+    let unknown = format!("no variant {{}} of `{name}`");
+    quote! {
+        impl ::transcript::Record for #name {
+            fn record(&self, out: &mut ::std::vec::Vec<u8>) {
+                match self {
+                    #(#records)*
+                }
+            }
+        }
+
+        impl ::transcript::Replay for #name {
+            fn replay(input: &mut &[u8]) -> ::core::result::Result<Self, ::std::string::String> {
+                ::core::result::Result::Ok(match <u32 as ::transcript::Replay>::replay(input)? {
+                    #(#replays)*
+                    tag => {
+                        return ::core::result::Result::Err(::std::format!(#unknown, tag));
+                    }
+                })
+            }
+        }
+    }
 }
 
 /// A callback parameter: how it is passed and what its arguments are.
@@ -161,6 +215,10 @@ struct Callback {
     arguments: Vec<Type>,
     /// Its return type.
     output: Type,
+    /// `Fn`, `FnMut` or `FnOnce`.
+    kind: Ident,
+    /// Written `dyn Fn..` rather than `impl Fn..`.
+    dynamic: bool,
 }
 
 /// What the expansion does with one parameter.
@@ -284,19 +342,34 @@ fn record(
                         let mut #inner = #name;
                         let #name = #wrapper;
                     },
+                    // Passed on as a reference to `&dyn Fn..`, whatever the
+                    // caller's closure: a body that passes its callback on to
+                    // a call of itself (a recursive walk) then instantiates
+                    // itself with that one type rather than with a wrapper
+                    // of a wrapper of ... for ever.
                     Some(mutable) => {
                         let wrapped = format_ident!("__transcript_wrapped{position}");
+                        let erased = format_ident!("__transcript_erased{position}");
+                        let kind = &callback.kind;
                         let borrow = if mutable {
-                            quote! { &mut #wrapped }
+                            quote! { &mut }
                         } else {
-                            quote! { &#wrapped }
+                            quote! { & }
+                        };
+                        let pass = if callback.dynamic {
+                            quote! { #erased }
+                        } else {
+                            quote! { #borrow #erased }
                         };
                         quote! {
                             #[allow(unused_mut)]
                             let mut #inner = #name;
                             #[allow(unused_mut)]
                             let mut #wrapped = #wrapper;
-                            let #name = #borrow;
+                            #[allow(unused_mut)]
+                            let mut #erased: #borrow dyn #kind(#(#types),*) -> #ret =
+                                #borrow #wrapped;
+                            let #name = #pass;
                         }
                     }
                 });
@@ -515,9 +588,9 @@ fn role(ty: &Type) -> syn::Result<Role> {
 
 /// `ty` as a callback (`impl Fn..` or `dyn Fn..`), if it is one.
 fn callback(ty: &Type, by_ref: Option<bool>) -> syn::Result<Option<Callback>> {
-    let bounds = match ty {
-        Type::ImplTrait(ty) => &ty.bounds,
-        Type::TraitObject(ty) => &ty.bounds,
+    let (bounds, dynamic) = match ty {
+        Type::ImplTrait(ty) => (&ty.bounds, false),
+        Type::TraitObject(ty) => (&ty.bounds, true),
         Type::Paren(ty) => return callback(&ty.elem, by_ref),
         _ => return Ok(None),
     };
@@ -545,6 +618,8 @@ fn callback(ty: &Type, by_ref: Option<bool>) -> syn::Result<Option<Callback>> {
             by_ref,
             arguments: arguments.inputs.iter().cloned().collect(),
             output,
+            kind: last.ident.clone(),
+            dynamic,
         }));
     }
     Ok(None)

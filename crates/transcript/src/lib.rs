@@ -70,8 +70,6 @@ pub const REPLAY_CFG: &str = "transcript_replay";
 /// What [`task`]'s expansion uses; not for hand-written code.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::evidence::{decode, encode};
     pub use crate::record::{Call, Recording};
     pub use crate::replay::{Bytes, Replaying, Step, leak};
-    pub use serde;
 }

@@ -9,6 +9,7 @@ use crate::csg::{Csg, Scene};
 use crate::primitive::Primitive;
 
 /// Where a point lies relative to a closed solid.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Class {
     /// In the interior.
@@ -32,6 +33,7 @@ pub enum Class {
 ///
 /// A point with a NaN coordinate is `Outside` everything.
 #[must_use]
+#[transcript::task]
 pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
     // Unused until you write the body:
     let _ = (&primitive, &p);
@@ -50,6 +52,7 @@ pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
 /// These rules do not regularize: a point on the surface of `Y` is not in
 /// `X − Y`. A point with a NaN coordinate is in nothing.
 #[must_use]
+#[transcript::task]
 pub fn contains(scene: &Scene, p: Vec3) -> bool {
     // Unused until you write the body:
     let _ = (&scene, &p);

@@ -23,6 +23,7 @@ use crate::raster::{Face, Solid};
 pub const MAX_LITERALS: usize = 254;
 
 /// What can be wrong with the input of this crate.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum CsgError {
     /// A primitive has a non-finite number or an empty extent.
@@ -67,6 +68,7 @@ pub enum CsgError {
 }
 
 /// A CSG tree over primitives named by their index in a list.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Csg {
     /// A leaf: the primitive with this index.
@@ -159,6 +161,7 @@ impl fmt::Display for Csg {
 }
 
 /// A primitive or its complement, one factor of a product.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Literal {
     /// The primitive's index.
@@ -202,6 +205,7 @@ impl Literal {
 /// A product `L₁ ∩ L₂ ∩ … ∩ Lₘ` of literals: the normal-form tree
 /// `((L₁ op L₂) op L₃) …` read left to right, `op` being `∩` for a
 /// positive literal and `−` for a complement. `L₁` is always positive.
+#[transcript::evidence]
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Product {
     /// The literals in tree order.

@@ -58,6 +58,7 @@ pub const DRAW: State = State::DEFAULT;
 /// The model's primitives are any [`Solid`]s: axis-aligned primitives, or
 /// primitives moved by the affine maps of a tree's nodes (seed §2.1),
 /// which [`Framebuffer::draw`] draws alike.
+#[transcript::task]
 pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // Unused until you write the body:
     let _ = (&model, &frame);

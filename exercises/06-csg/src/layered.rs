@@ -32,6 +32,7 @@ use crate::raster::{Framebuffer, Solid, Stats};
 /// side": with both faces every count would be twice as large. Products
 /// have at most `MAX_LITERALS` = 254 literals, so a count never saturates.
 /// Literals naming a primitive `model` does not have are skipped.
+#[transcript::task]
 pub fn depth_complexity<S: Solid>(
     model: &Model<S>,
     product: &Product,
@@ -77,6 +78,7 @@ pub fn depth_complexity<S: Solid>(
 ///
 /// Like plain Goldfeather, it draws any [`Solid`]s: primitives moved by
 /// the affine maps of a tree's nodes as well.
+#[transcript::task]
 pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // Unused until you write the body:
     let _ = (&model, &frame);

@@ -20,6 +20,7 @@
 use crate::csg::{Csg, CsgError, Literal, Product};
 
 /// The result of [`normalize`]: the normal tree and the rules applied.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Normalization {
     /// The tree in normal form.
@@ -54,6 +55,7 @@ pub struct Normalization {
 /// subtree, so the result can be exponentially larger than the input
 /// (the seed says so); trees of a few dozen leaves are fine.
 #[must_use]
+#[transcript::task]
 pub fn normalize(tree: &Csg) -> Normalization {
     // Unused until you write the body:
     let _ = &tree;
@@ -69,6 +71,7 @@ pub fn normalize(tree: &Csg) -> Normalization {
 /// # Errors
 /// [`CsgError::NotNormal`] naming the offending subtree when a `∩` or `−`
 /// has a right operand that is not a primitive or a union below it.
+#[transcript::task]
 pub fn products(normal: &Csg) -> Result<Vec<Product>, CsgError> {
     // Unused until you write the body:
     let _ = &normal;

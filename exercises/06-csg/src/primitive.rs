@@ -122,6 +122,7 @@ impl Ray {
 /// Both are finite for a unit direction: a slab the ray runs parallel to
 /// gives the whole line, but some other slab (or the round side of a
 /// cylinder) is crossed and bounds the interval.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RayInterval {
     /// Depth of the front face.

@@ -68,6 +68,7 @@ impl Solid for Primitive {
 }
 
 /// What a rendering cost, for comparing plain and layered Goldfeather.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
     /// Parity tests done: one per pass that draws both faces of one
@@ -78,6 +79,7 @@ pub struct Stats {
 }
 
 /// Which side of a convex primitive a fragment comes from.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Face {
     /// Where the viewing ray enters the primitive (`span.near`).
@@ -87,6 +89,7 @@ pub enum Face {
 }
 
 /// What a pixel of the colour plane shows: one face of one primitive.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Surface {
     /// The primitive's index.
@@ -96,6 +99,7 @@ pub struct Surface {
 }
 
 /// An orthographic camera: a grid of parallel rays.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     width: u32,
@@ -209,6 +213,7 @@ impl State {
 }
 
 /// Depth, stencil and surface planes over a camera's pixel grid.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
     camera: Camera,

@@ -122,6 +122,7 @@ pub enum TransformError {
 }
 
 /// A primitive placed by the transforms above its leaf.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Instance {
     /// The primitive's index in the scene.
@@ -175,6 +176,7 @@ impl Solid for Placed {
 /// its leaves naming the instances. A primitive under two transforms
 /// becomes two instances.
 #[must_use]
+#[transcript::task]
 pub fn flatten(node: &Node) -> (Vec<Instance>, Csg) {
     // Unused until you write the body:
     let _ = &node;
@@ -190,6 +192,7 @@ pub fn flatten(node: &Node) -> (Vec<Instance>, Csg) {
 /// `t'` divided by `|M⁻¹·d|`. `None` where the ray misses (or `to_world`
 /// has no inverse).
 #[must_use]
+#[transcript::task]
 pub fn instance_interval(
     primitive: &Primitive,
     to_world: Affine3A,
@@ -206,6 +209,7 @@ pub fn instance_interval(
 /// (as `classify::contains`) and `P ∈ M(X) ⟺ M⁻¹·P ∈ X` at a transform;
 /// `inside(i, q)` says whether `q` belongs to primitive `i` in its own
 /// space.
+#[transcript::task]
 pub fn contains(node: &Node, p: Vec3, inside: &impl Fn(usize, Vec3) -> bool) -> bool {
     // Unused until you write the body:
     let _ = (&node, &p, &inside);

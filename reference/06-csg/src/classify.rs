@@ -8,6 +8,7 @@ use crate::csg::{Csg, Scene};
 use crate::primitive::Primitive;
 
 /// Where a point lies relative to a closed solid.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Class {
     /// In the interior.
@@ -31,6 +32,7 @@ pub enum Class {
 ///
 /// A point with a NaN coordinate is `Outside` everything.
 #[must_use]
+#[transcript::task]
 pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
     // BEGIN SOLUTION classify: compare p with the box bounds, |p − c|² with r², or the cylinder's two tests
     if p.is_nan() {
@@ -89,6 +91,7 @@ pub fn classify_point(primitive: &Primitive, p: Vec3) -> Class {
 /// These rules do not regularize: a point on the surface of `Y` is not in
 /// `X − Y`. A point with a NaN coordinate is in nothing.
 #[must_use]
+#[transcript::task]
 pub fn contains(scene: &Scene, p: Vec3) -> bool {
     // BEGIN SOLUTION classify: evaluate the tree recursively with the three rules, On counts as inside
     fn member(tree: &Csg, primitives: &[Primitive], p: Vec3) -> bool {

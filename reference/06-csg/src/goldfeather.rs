@@ -62,6 +62,7 @@ pub const DRAW: State = State::DEFAULT;
 /// The model's primitives are any [`Solid`]s: axis-aligned primitives, or
 /// primitives moved by the affine maps of a tree's nodes (seed §2.1),
 /// which [`Framebuffer::draw`] draws alike.
+#[transcript::task]
 pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // BEGIN SOLUTION goldfeather: per literal, draw its entry face, parity-test it against every other literal, merge z-less
     let mut stats = Stats::default();

@@ -36,6 +36,7 @@ use crate::raster::{Compare, Face, PARITY_BIT, State, StencilState, StencilOp, S
 /// side": with both faces every count would be twice as large. Products
 /// have at most `MAX_LITERALS` = 254 literals, so a count never saturates.
 /// Literals naming a primitive `model` does not have are skipped.
+#[transcript::task]
 pub fn depth_complexity<S: Solid>(
     model: &Model<S>,
     product: &Product,
@@ -90,6 +91,7 @@ pub fn depth_complexity<S: Solid>(
 ///
 /// Like plain Goldfeather, it draws any [`Solid`]s: primitives moved by
 /// the affine maps of a tree's nodes as well.
+#[transcript::task]
 pub fn render<S: Solid>(model: &Model<S>, frame: &mut Framebuffer) -> Stats {
     // BEGIN SOLUTION layered: count k, extract each layer by stencil Equal n − 1 with Increment, test it against every literal, merge
     let mut stats = Stats::default();

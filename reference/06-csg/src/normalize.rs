@@ -19,6 +19,7 @@
 use crate::csg::{Csg, CsgError, Literal, Product};
 
 /// The result of [`normalize`]: the normal tree and the rules applied.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Normalization {
     /// The tree in normal form.
@@ -53,6 +54,7 @@ pub struct Normalization {
 /// subtree, so the result can be exponentially larger than the input
 /// (the seed says so); trees of a few dozen leaves are fine.
 #[must_use]
+#[transcript::task]
 pub fn normalize(tree: &Csg) -> Normalization {
     // BEGIN SOLUTION normalize: apply the first matching rule while one matches, recurse as the seed's procedure
     let mut tree = tree.clone();
@@ -139,6 +141,7 @@ fn rewrite(t: Csg) -> Result<(Csg, u8), Csg> {
 /// # Errors
 /// [`CsgError::NotNormal`] naming the offending subtree when a `∩` or `−`
 /// has a right operand that is not a primitive or a union below it.
+#[transcript::task]
 pub fn products(normal: &Csg) -> Result<Vec<Product>, CsgError> {
     // BEGIN SOLUTION normalize: split at the unions, then walk each left-deep chain down to its first primitive
     fn sum(t: &Csg, out: &mut Vec<Product>) -> Result<(), CsgError> {

@@ -31,6 +31,7 @@ use crate::primitive::Aabb;
 /// boxes: touching boxes count as overlapping (nothing is dropped that
 /// might share a point). The result defines the same solid as `model`.
 #[must_use]
+#[transcript::task]
 pub fn prune(model: &Model) -> Vec<Product> {
     // BEGIN SOLUTION prune: intersect the positive literals' bounds, drop empty products and complements outside that bound
     let primitives = model.primitives();

@@ -122,6 +122,7 @@ pub enum TransformError {
 }
 
 /// A primitive placed by the transforms above its leaf.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Instance {
     /// The primitive's index in the scene.
@@ -175,6 +176,7 @@ impl Solid for Placed {
 /// its leaves naming the instances. A primitive under two transforms
 /// becomes two instances.
 #[must_use]
+#[transcript::task]
 pub fn flatten(node: &Node) -> (Vec<Instance>, Csg) {
     // BEGIN SOLUTION transforms: walk the tree carrying the product of the transforms so far (parent · node), each leaf becoming the next instance
     fn walk(node: &Node, to_world: Affine3A, instances: &mut Vec<Instance>) -> Csg {
@@ -214,6 +216,7 @@ pub fn flatten(node: &Node) -> (Vec<Instance>, Csg) {
 /// `t'` divided by `|M⁻¹·d|`. `None` where the ray misses (or `to_world`
 /// has no inverse).
 #[must_use]
+#[transcript::task]
 pub fn instance_interval(
     primitive: &Primitive,
     to_world: Affine3A,
@@ -242,6 +245,7 @@ pub fn instance_interval(
 /// (as `classify::contains`) and `P ∈ M(X) ⟺ M⁻¹·P ∈ X` at a transform;
 /// `inside(i, q)` says whether `q` belongs to primitive `i` in its own
 /// space.
+#[transcript::task]
 pub fn contains(node: &Node, p: Vec3, inside: &impl Fn(usize, Vec3) -> bool) -> bool {
     // BEGIN SOLUTION transforms: recurse with the three rules; at a transform, ask the child about M⁻¹·p
     match node {

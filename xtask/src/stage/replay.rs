@@ -85,7 +85,7 @@ pub fn add_packages(root: &Path, files: &mut Files) -> Result<()> {
         files.push((home.join("build.rs"), Source::Text(BUILD_SCRIPT.into())));
         files.push((
             home.join("Cargo.toml"),
-            Source::Text(manifest(topic)?.into()),
+            Source::Text(manifest(topic, &topics)?.into()),
         ));
     }
     add_members(files)?;
@@ -141,8 +141,12 @@ fn add_members(files: &mut Files) -> Result<()> {
 }
 
 /// The manifest of `topic`'s replay package: the topic's own, renamed,
-/// with its library named as before (its tests are copies of the topic's).
-fn manifest(topic: &Topic) -> Result<String> {
+/// with its library named as before (its tests are copies of the topic's),
+/// and another topic it builds on (06's framebuffer runs 05's depth and
+/// stencil tests) taken from that topic's replay package: the replay
+/// links no student code, and the calls of that topic's task functions
+/// are replayed from the same record.
+fn manifest(topic: &Topic, topics: &[Topic]) -> Result<String> {
     let path = topic.dir.join("Cargo.toml");
     let text =
         fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
@@ -164,6 +168,38 @@ fn manifest(topic: &Topic) -> Result<String> {
     package.insert("build".into(), "build.rs".into());
     for auto in ["autobenches", "autoexamples", "autobins"] {
         package.insert(auto.into(), false.into());
+    }
+    for kind in ["dependencies", "dev-dependencies", "build-dependencies"] {
+        let Some(dependencies) = manifest.get_mut(kind).and_then(toml::Value::as_table_mut) else {
+            continue;
+        };
+        for (name, dependency) in dependencies.iter_mut() {
+            let Some(dependency) = dependency.as_table_mut() else {
+                continue;
+            };
+            let Some(sibling) = dependency
+                .get("path")
+                .and_then(toml::Value::as_str)
+                .and_then(|path| path.strip_prefix("../"))
+            else {
+                continue;
+            };
+            let Some(other) = topics.iter().find(|other| other.name == sibling) else {
+                bail!(
+                    "{}'s dependency `{name}` lies at ../{sibling}, which is not a topic: a replay build links no code but the course's",
+                    topic.name
+                );
+            };
+            if other.sheet.verdict != Verdict::Replay {
+                bail!(
+                    "{} is decided by replay and builds on {}, which is not (its sheet has no `verdict = \"replay\"`): its replay would run the student's code of {}",
+                    topic.name,
+                    other.name,
+                    other.name
+                );
+            }
+            dependency.insert("package".into(), package_name(other).into());
+        }
     }
     let mut lib = toml::Table::new();
     lib.insert("name".into(), topic.package.replace('-', "_").into());
