@@ -18,6 +18,7 @@
 use glam::DVec3;
 
 /// A cubic Bézier triangle: `b_ijk` goes with `uⁱ vʲ wᵏ`.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[allow(missing_docs)] // the names are the documentation: b_ijk goes with uⁱ vʲ wᵏ
 pub struct BezierTriangle {

@@ -43,6 +43,7 @@ use crate::mesh::Mesh;
 pub use freeform::{BezierTriangle, TriangleDomain};
 
 /// A PN triangle: its cubic geometry and the unit normals at its corners.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PnTriangle {
     /// The geometry.
@@ -54,6 +55,7 @@ pub struct PnTriangle {
 /// `B(u, v, w)` by equation (4.1). The coordinates are used as given (the
 /// caller keeps `u + v + w = 1`; other values extrapolate the polynomial).
 #[must_use]
+#[transcript::task]
 pub fn evaluate(t: &BezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
     // Unused until you write the body:
     let _ = (&t, &u, &v, &w);
@@ -68,6 +70,7 @@ pub fn evaluate(t: &BezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
 /// # Errors
 /// [`TessError::NonFinite`] for a non-finite position or normal, and for a
 /// normal that cannot be normalised (zero).
+#[transcript::task]
 pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTriangle, TessError> {
     // Unused until you write the body:
     let _ = (&positions, &normals);
@@ -80,6 +83,7 @@ pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTrian
 /// parameters `(u, v)`; the domain's triangles unchanged (so a
 /// counter-clockwise `P1, P2, P3` gives counter-clockwise triangles).
 #[must_use]
+#[transcript::task]
 pub fn tessellate_pn(pn: &PnTriangle, domain: &TriangleDomain) -> Mesh {
     // Unused until you write the body:
     let _ = (&pn, &domain);

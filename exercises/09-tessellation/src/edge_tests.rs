@@ -138,6 +138,7 @@ impl EdgeTest {
 /// One-edge normal test (2.1): split when `|N1 − N12| > t1` or
 /// `|N2 − N12| > t1` (distances of unit normals).
 #[must_use]
+#[transcript::task]
 pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t1);
@@ -148,6 +149,7 @@ pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
 /// `|N1 − N2| > t2`. (The seed's listing 2.3 returns early when (2.1)
 /// fails, which is the same "or".)
 #[must_use]
+#[transcript::task]
 pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t1, &t2);
@@ -159,6 +161,7 @@ pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
 /// opposite vertices (`(N1 + N2 + N6) / 3` on the boundary). Like the seed,
 /// `N'` is not normalised.
 #[must_use]
+#[transcript::task]
 pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t3);
@@ -169,6 +172,7 @@ pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
 /// `N'' = Σ N_i / n` over the `n` vertices of the edge's first-order
 /// neighbourhood ([`EdgeContext::ring`]); an empty ring never splits.
 #[must_use]
+#[transcript::task]
 pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t3);
@@ -186,6 +190,7 @@ pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
 /// short edges rather than curved ones; here `V12` lies on the surface and
 /// the vectors are normalised, as the text describes.
 #[must_use]
+#[transcript::task]
 pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t1);
@@ -201,6 +206,7 @@ pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// *lengths* `|N1|·|V1 − V2|` with `t1` instead of the dot product the text
 /// describes.
 #[must_use]
+#[transcript::task]
 pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t1);
@@ -213,6 +219,7 @@ pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// the umbrella lies in the tangent plane). A vertex without neighbours or
 /// with a zero umbrella does not split.
 #[must_use]
+#[transcript::task]
 pub fn umbrella_flat(edge: &EdgeContext, t1: f64) -> bool {
     // Unused until you write the body:
     let _ = (&edge, &t1);

@@ -5,6 +5,7 @@
 //! one of these instead.
 
 /// What went wrong, with the offending value.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TessError {
     /// A control point, parameter or tolerance is NaN or infinite.

@@ -11,6 +11,7 @@ use crate::bezier::SurfaceSample;
 use crate::error::TessError;
 
 /// An indexed triangle mesh with per-vertex normals and parameters.
+#[transcript::evidence]
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     /// Vertex positions.

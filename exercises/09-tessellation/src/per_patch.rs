@@ -66,6 +66,7 @@ pub const MIN_INNER_SEGMENTS: usize = 2;
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number, [`TessError::NonFinite`] for a non-finite control point.
+#[transcript::task]
 pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessError> {
     // Unused until you write the body:
     let _ = (&control, &tolerance);
@@ -82,6 +83,7 @@ pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessEr
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
+#[transcript::task]
 pub fn patch_resolution(patch: &impl GridPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
     // Unused until you write the body:
     let _ = (&patch, &tolerance);
@@ -107,6 +109,7 @@ pub fn patch_resolution(patch: &impl GridPatch, tolerance: f64) -> Result<[usize
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
+#[transcript::task]
 pub fn tessellate_patch_grid(
     grid: &PatchGrid<impl GridPatch>,
     tolerance: f64,

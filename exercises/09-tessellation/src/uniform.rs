@@ -32,6 +32,7 @@ use crate::mesh::Mesh;
 /// # Errors
 /// [`TessError::Resolution`] if `n_u` or `n_v` is 0 or above
 /// [`MAX_RESOLUTION`].
+#[transcript::task]
 pub fn tessellate_uniform(
     patch: &impl Evaluate,
     n_u: usize,

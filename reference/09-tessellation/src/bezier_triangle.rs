@@ -41,6 +41,7 @@ use crate::mesh::Mesh;
 pub use freeform::{BezierTriangle, TriangleDomain};
 
 /// A PN triangle: its cubic geometry and the unit normals at its corners.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PnTriangle {
     /// The geometry.
@@ -52,6 +53,7 @@ pub struct PnTriangle {
 /// `B(u, v, w)` by equation (4.1). The coordinates are used as given (the
 /// caller keeps `u + v + w = 1`; other values extrapolate the polynomial).
 #[must_use]
+#[transcript::task]
 pub fn evaluate(t: &BezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
     // BEGIN SOLUTION bezier_triangle: the ten Bernstein terms of (4.1)
     t.b300 * (u * u * u)
@@ -75,6 +77,7 @@ pub fn evaluate(t: &BezierTriangle, [u, v, w]: [f64; 3]) -> DVec3 {
 /// # Errors
 /// [`TessError::NonFinite`] for a non-finite position or normal, and for a
 /// normal that cannot be normalised (zero).
+#[transcript::task]
 pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTriangle, TessError> {
     // BEGIN SOLUTION bezier_triangle: corners, edge thirds projected onto the tangent planes, then b111
     if !positions.iter().all(|p| p.is_finite()) {
@@ -119,6 +122,7 @@ pub fn pn_triangle(positions: [DVec3; 3], normals: [DVec3; 3]) -> Result<PnTrian
 /// parameters `(u, v)`; the domain's triangles unchanged (so a
 /// counter-clockwise `P1, P2, P3` gives counter-clockwise triangles).
 #[must_use]
+#[transcript::task]
 pub fn tessellate_pn(pn: &PnTriangle, domain: &TriangleDomain) -> Mesh {
     // BEGIN SOLUTION bezier_triangle: evaluate every domain point, interpolate the normals, keep the triangles
     let mut mesh = Mesh::new();

@@ -137,6 +137,7 @@ impl EdgeTest {
 /// One-edge normal test (2.1): split when `|N1 − N12| > t1` or
 /// `|N2 − N12| > t1` (distances of unit normals).
 #[must_use]
+#[transcript::task]
 pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: compare both end normals with the midpoint normal
     let n12 = edge.mid.normal;
@@ -148,6 +149,7 @@ pub fn one_edge_normal(edge: &EdgeContext, t1: f64) -> bool {
 /// `|N1 − N2| > t2`. (The seed's listing 2.3 returns early when (2.1)
 /// fails, which is the same "or".)
 #[must_use]
+#[transcript::task]
 pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: (2.1), or the end normals differ by more than t2
     one_edge_normal(edge, t1) || (edge.v1.normal - edge.v2.normal).length() > t2
@@ -159,6 +161,7 @@ pub fn one_edge_complementary(edge: &EdgeContext, t1: f64, t2: f64) -> bool {
 /// opposite vertices (`(N1 + N2 + N6) / 3` on the boundary). Like the seed,
 /// `N'` is not normalised.
 #[must_use]
+#[transcript::task]
 pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: mean of the end and opposite normals against N12
     let sum =
@@ -172,6 +175,7 @@ pub fn two_triangle(edge: &EdgeContext, t3: f64) -> bool {
 /// `N'' = Σ N_i / n` over the `n` vertices of the edge's first-order
 /// neighbourhood ([`EdgeContext::ring`]); an empty ring never splits.
 #[must_use]
+#[transcript::task]
 pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: mean normal of the ring against N12
     if edge.ring.is_empty() {
@@ -193,6 +197,7 @@ pub fn first_order_neighbour(edge: &EdgeContext, t3: f64) -> bool {
 /// short edges rather than curved ones; here `V12` lies on the surface and
 /// the vectors are normalised, as the text describes.
 #[must_use]
+#[transcript::task]
 pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: angle of each sub-chord against the chord
     let (p1, p2, m) = (edge.v1.position, edge.v2.position, edge.mid.position);
@@ -213,6 +218,7 @@ pub fn vector_deviation_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// *lengths* `|N1|·|V1 − V2|` with `t1` instead of the dot product the text
 /// describes.
 #[must_use]
+#[transcript::task]
 pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: the unit edge against both end normals
     let Some(u) = (edge.v1.position - edge.v2.position).try_normalize() else {
@@ -228,6 +234,7 @@ pub fn local_flat(edge: &EdgeContext, t1: f64) -> bool {
 /// the umbrella lies in the tangent plane). A vertex without neighbours or
 /// with a zero umbrella does not split.
 #[must_use]
+#[transcript::task]
 pub fn umbrella_flat(edge: &EdgeContext, t1: f64) -> bool {
     // BEGIN SOLUTION fully_adaptive: unit umbrella vector at each end against its normal
     let bent = |v: &SurfaceSample, neighbours: &[SurfaceSample]| {

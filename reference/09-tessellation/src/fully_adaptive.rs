@@ -68,6 +68,7 @@ pub const MAX_TRIANGLES: usize = 1 << 22;
 /// [`TessError::NotPositive`] for a bad threshold,
 /// [`TessError::Resolution`] for `max_depth` above [`MAX_DEPTH`], or when
 /// the refinement would exceed [`MAX_TRIANGLES`].
+#[transcript::task]
 pub fn refine(
     patch: &impl Evaluate,
     initial: &Mesh,

@@ -63,6 +63,7 @@ pub const MIN_INNER_SEGMENTS: usize = 2;
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number, [`TessError::NonFinite`] for a non-finite control point.
+#[transcript::task]
 pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessError> {
     // BEGIN SOLUTION per_patch: apply the chord bound to the largest second difference
     check_tolerance(tolerance)?;
@@ -89,6 +90,7 @@ pub fn curve_segments(control: &[DVec3], tolerance: f64) -> Result<usize, TessEr
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
+#[transcript::task]
 pub fn patch_resolution(patch: &impl GridPatch, tolerance: f64) -> Result<[usize; 2], TessError> {
     // BEGIN SOLUTION per_patch: the curve bound along the columns (u) and rows (v)
     check_tolerance(tolerance)?;
@@ -173,6 +175,7 @@ fn steps(k: usize) -> Vec<f64> {
 /// # Errors
 /// [`TessError::NotPositive`] for a tolerance that is not a positive
 /// finite number.
+#[transcript::task]
 pub fn tessellate_patch_grid(
     grid: &PatchGrid<impl GridPatch>,
     tolerance: f64,
