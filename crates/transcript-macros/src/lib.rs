@@ -55,20 +55,14 @@ pub fn task(attr: TokenStream, item: TokenStream) -> TokenStream {
 /// own crate (see the `transcript` crate's `evidence` module for why
 /// there): a struct field by field, an enum through `serde`'s derives
 /// (reached through the `transcript` crate: no `serde` dependency needed).
+/// A struct generic over types (`CurvePoint<P>`) gets both for every `P`
+/// that has them (compiled where `P` is chosen).
 #[proc_macro_attribute]
 pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
     if let Some(error) = arguments_given(attr, "evidence") {
         return error;
     }
     let input = parse_macro_input!(item as syn::DeriveInput);
-    if !input.generics.params.is_empty() {
-        return syn::Error::new(
-            input.generics.span(),
-            "`#[transcript::evidence]` takes a type without generic parameters",
-        )
-        .to_compile_error()
-        .into();
-    }
     let name = &input.ident;
     // A struct is written field by field, each through its own type's
     // `Record` (optimised where that type lives); an enum through serde.
@@ -76,6 +70,21 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
         syn::Data::Struct(data) => Some(&data.fields),
         _ => None,
     };
+    // A struct may be generic over types (a point type: `CurvePoint<P>`),
+    // each then bound by the trait implemented; an enum may not.
+    let only_types = input
+        .generics
+        .params
+        .iter()
+        .all(|param| matches!(param, syn::GenericParam::Type(_)));
+    if !input.generics.params.is_empty() && (fields.is_none() || !only_types) {
+        return syn::Error::new(
+            input.generics.span(),
+            "`#[transcript::evidence]` takes an enum without generic parameters, or a struct generic over types only",
+        )
+        .to_compile_error()
+        .into();
+    }
     let Some(fields) = fields else {
         return quote! {
             #[derive(
@@ -119,10 +128,21 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
         }
         syn::Fields::Unit => quote! { Self },
     };
+    let bounded = |bound: Tokens| {
+        let mut generics = input.generics.clone();
+        for param in generics.type_params_mut() {
+            param.bounds.push(parse_quote! { #bound });
+        }
+        generics
+    };
+    let record_generics = bounded(quote! { ::transcript::Record });
+    let replay_generics = bounded(quote! { ::transcript::Replay });
+    let (record_impl, ty_generics, record_where) = record_generics.split_for_impl();
+    let (replay_impl, _, replay_where) = replay_generics.split_for_impl();
     quote! {
         #input
 
-        impl ::transcript::Record for #name {
+        impl #record_impl ::transcript::Record for #name #ty_generics #record_where {
             fn record(&self, out: &mut ::std::vec::Vec<u8>) {
                 #(::transcript::Record::record(&self.#members, out);)*
             }
@@ -136,7 +156,7 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
             }
         }
 
-        impl ::transcript::Replay for #name {
+        impl #replay_impl ::transcript::Replay for #name #ty_generics #replay_where {
             fn replay(input: &mut &[u8]) -> ::core::result::Result<Self, ::std::string::String> {
                 ::core::result::Result::Ok(#build)
             }
