@@ -31,6 +31,7 @@ use glam::{DVec2, DVec3};
 pub const MAX_DEGREE: usize = 32;
 
 /// Why a control net is not a patch.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PatchError {
     /// A degree above [`MAX_DEGREE`].

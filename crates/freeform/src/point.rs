@@ -41,6 +41,7 @@ pub const NORMAL_NUDGE: f64 = 1e-6;
 /// A point of a curve and its derivative there: `C(t)` and `C′(t) = dC/dt`.
 /// Generic over the point type (`f64`, `DVec2`, `DVec3`, …) so that a curve
 /// in the plane and one in space are evaluated alike.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurvePoint<P = DVec3> {
     /// `C(t)`.
@@ -52,6 +53,7 @@ pub struct CurvePoint<P = DVec3> {
 }
 
 /// A point of a surface and its two partial derivatives there.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfacePoint {
     /// `S(u, v)`.

@@ -234,6 +234,30 @@ impl RationalPatch {
     }
 }
 
+// A patch crosses between a task and its test (topic 08's decomposition):
+// its degrees, points and weights are recorded, and the replay builds it
+// again through `try_new`, so that a replayed patch is as valid as any.
+impl transcript::Record for RationalPatch {
+    fn record(&self, out: &mut Vec<u8>) {
+        self.points.degree_u().record(out);
+        self.points.degree_v().record(out);
+        self.points.control_points().record(out);
+        self.weights.record(out);
+    }
+}
+
+impl transcript::Replay for RationalPatch {
+    fn replay(input: &mut &[u8]) -> Result<Self, String> {
+        let degree_u = usize::replay(input)?;
+        let degree_v = usize::replay(input)?;
+        let points = Vec::<DVec3>::replay(input)?;
+        let weights = Vec::<f64>::replay(input)?;
+        BezierPatch::try_new(degree_u, degree_v, points)
+            .and_then(|points| Self::try_new(points, weights))
+            .map_err(|error| format!("a rational patch that is none: {error}"))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

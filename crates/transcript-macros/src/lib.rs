@@ -54,25 +54,35 @@ pub fn task(attr: TokenStream, item: TokenStream) -> TokenStream {
 /// implements `transcript::Record` and `transcript::Replay` in the type's
 /// own crate (see the `transcript` crate's `evidence` module for why
 /// there): a struct field by field, an enum as its variant's number and
-/// then that variant's fields. Every field's type must be evidence too.
+/// then that variant's fields. Every field's type must be evidence too; a
+/// type generic over types (`CurvePoint<P>`) gets both for every `P` that
+/// has them (compiled where `P` is chosen).
 #[proc_macro_attribute]
 pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
     if let Some(error) = arguments_given(attr, "evidence") {
         return error;
     }
     let input = parse_macro_input!(item as syn::DeriveInput);
-    if !input.generics.params.is_empty() {
+    // A type may be generic over types (a point type: `CurvePoint<P>`),
+    // each then bound by the trait implemented.
+    if !input
+        .generics
+        .params
+        .iter()
+        .all(|param| matches!(param, syn::GenericParam::Type(_)))
+    {
         return syn::Error::new(
             input.generics.span(),
-            "`#[transcript::evidence]` takes a type without generic parameters",
+            "`#[transcript::evidence]` takes a type generic over types only",
         )
         .to_compile_error()
         .into();
     }
     let name = &input.ident;
+    let generics = Generics::of(&input.generics);
     let expanded = match &input.data {
-        syn::Data::Struct(data) => evidence_struct(name, &data.fields),
-        syn::Data::Enum(data) => evidence_enum(name, data),
+        syn::Data::Struct(data) => evidence_struct(name, &generics, &data.fields),
+        syn::Data::Enum(data) => evidence_enum(name, &generics, data),
         syn::Data::Union(_) => {
             return syn::Error::new(
                 input.span(),
@@ -87,6 +97,45 @@ pub fn evidence(attr: TokenStream, item: TokenStream) -> TokenStream {
         #expanded
     }
     .into()
+}
+
+/// The generics of an evidence impl: the type's own, each type parameter
+/// bound by the trait implemented.
+struct Generics {
+    record: syn::Generics,
+    replay: syn::Generics,
+    ty: syn::Generics,
+}
+
+impl Generics {
+    fn of(generics: &syn::Generics) -> Generics {
+        let bounded = |bound: Tokens| {
+            let mut generics = generics.clone();
+            for param in generics.type_params_mut() {
+                param.bounds.push(parse_quote! { #bound });
+            }
+            generics
+        };
+        Generics {
+            record: bounded(quote! { ::transcript::Record }),
+            replay: bounded(quote! { ::transcript::Replay }),
+            ty: generics.clone(),
+        }
+    }
+
+    /// `impl<..> ::transcript::Record for Name<..> where ..`
+    fn record_impl(&self, name: &Ident) -> Tokens {
+        let (generics, _, bounds) = self.record.split_for_impl();
+        let (_, ty, _) = self.ty.split_for_impl();
+        quote! { impl #generics ::transcript::Record for #name #ty #bounds }
+    }
+
+    /// `impl<..> ::transcript::Replay for Name<..> where ..`
+    fn replay_impl(&self, name: &Ident) -> Tokens {
+        let (generics, _, bounds) = self.replay.split_for_impl();
+        let (_, ty, _) = self.ty.split_for_impl();
+        quote! { impl #generics ::transcript::Replay for #name #ty #bounds }
+    }
 }
 
 /// The members of `fields` (names or indices), and the bindings a pattern
@@ -127,11 +176,13 @@ fn build(path: &Tokens, fields: &syn::Fields) -> Tokens {
 /// A struct, field by field, each through its own type's `Record`
 /// (optimised where that type lives); its changes field by field too, so a
 /// struct of canvases records only the pixels written.
-fn evidence_struct(name: &Ident, fields: &syn::Fields) -> Tokens {
+fn evidence_struct(name: &Ident, generics: &Generics, fields: &syn::Fields) -> Tokens {
     let (members, _) = members(fields);
     let build = build(&quote! { Self }, fields);
+    let record_impl = generics.record_impl(name);
+    let replay_impl = generics.replay_impl(name);
     quote! {
-        impl ::transcript::Record for #name {
+        #record_impl {
             fn record(&self, out: &mut ::std::vec::Vec<u8>) {
                 #(::transcript::Record::record(&self.#members, out);)*
             }
@@ -145,7 +196,7 @@ fn evidence_struct(name: &Ident, fields: &syn::Fields) -> Tokens {
             }
         }
 
-        impl ::transcript::Replay for #name {
+        #replay_impl {
             fn replay(input: &mut &[u8]) -> ::core::result::Result<Self, ::std::string::String> {
                 ::core::result::Result::Ok(#build)
             }
@@ -163,7 +214,9 @@ fn evidence_struct(name: &Ident, fields: &syn::Fields) -> Tokens {
 
 /// An enum: the variant's number (its place in the declaration), then its
 /// fields as a struct's.
-fn evidence_enum(name: &Ident, data: &syn::DataEnum) -> Tokens {
+fn evidence_enum(name: &Ident, generics: &Generics, data: &syn::DataEnum) -> Tokens {
+    let record_impl = generics.record_impl(name);
+    let replay_impl = generics.replay_impl(name);
     let mut records = Vec::new();
     let mut replays = Vec::new();
     for (index, variant) in data.variants.iter().enumerate() {
@@ -186,7 +239,7 @@ fn evidence_enum(name: &Ident, data: &syn::DataEnum) -> Tokens {
     }
     let unknown = format!("no variant {{}} of `{name}`");
     quote! {
-        impl ::transcript::Record for #name {
+        #record_impl {
             fn record(&self, out: &mut ::std::vec::Vec<u8>) {
                 match self {
                     #(#records)*
@@ -194,7 +247,7 @@ fn evidence_enum(name: &Ident, data: &syn::DataEnum) -> Tokens {
             }
         }
 
-        impl ::transcript::Replay for #name {
+        #replay_impl {
             fn replay(input: &mut &[u8]) -> ::core::result::Result<Self, ::std::string::String> {
                 ::core::result::Result::Ok(match <u32 as ::transcript::Replay>::replay(input)? {
                     #(#replays)*

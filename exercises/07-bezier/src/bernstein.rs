@@ -21,6 +21,7 @@ use crate::basics::{BezierError, ControlPoint, MAX_DEGREE, check_control_points,
 /// # Errors
 /// [`BezierError::IndexAboveDegree`] if `i > n`,
 /// [`BezierError::DegreeTooHigh`] if `n > MAX_DEGREE`.
+#[transcript::task]
 pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
     // Unused until you write the body:
     let _ = (&n, &i);
@@ -37,6 +38,7 @@ pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
 /// # Errors
 /// [`BezierError::IndexAboveDegree`], [`BezierError::DegreeTooHigh`], or
 /// [`BezierError::ParameterOutOfRange`] for `t` NaN or outside `[0, 1]`.
+#[transcript::task]
 pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
     // Unused until you write the body:
     let _ = (&i, &n, &t);
@@ -48,6 +50,7 @@ pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
 ///
 /// # Errors
 /// As [`bernstein`].
+#[transcript::task]
 pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
     // Unused until you write the body:
     let _ = (&n, &t);
@@ -63,6 +66,7 @@ pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
 /// # Errors
 /// [`BezierError::Empty`], [`BezierError::DegreeTooHigh`],
 /// [`BezierError::NonFinitePoint`] or [`BezierError::ParameterOutOfRange`].
+#[transcript::task]
 pub fn bernstein_curve<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
     // Unused until you write the body:
     let _ = (&points, &t);

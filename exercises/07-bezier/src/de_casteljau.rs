@@ -31,6 +31,7 @@ pub use freeform::CurvePoint;
 
 /// The two halves of a curve split at `t`, each with as many control
 /// points as the original.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Split<P> {
     /// The control points of the curve on `[0, t]`, starting at `P_0`.
@@ -47,6 +48,7 @@ pub struct Split<P> {
 /// [`BezierError::Empty`], [`BezierError::DegreeTooHigh`],
 /// [`BezierError::NonFinitePoint`], or [`BezierError::ParameterOutOfRange`]
 /// for `t` NaN or outside `[0, 1]`.
+#[transcript::task]
 pub fn de_casteljau<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
     // Unused until you write the body:
     let _ = (&points, &t);
@@ -61,6 +63,7 @@ pub fn de_casteljau<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierEr
 ///
 /// # Errors
 /// As [`de_casteljau`].
+#[transcript::task]
 pub fn point_and_derivative<P: ControlPoint>(
     points: &[P],
     t: f64,
@@ -78,6 +81,7 @@ pub fn point_and_derivative<P: ControlPoint>(
 ///
 /// # Errors
 /// As [`de_casteljau`].
+#[transcript::task]
 pub fn split<P: ControlPoint>(points: &[P], t: f64) -> Result<Split<P>, BezierError> {
     // Unused until you write the body:
     let _ = (&points, &t);

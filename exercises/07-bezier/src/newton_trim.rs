@@ -68,6 +68,7 @@ impl Default for NewtonSettings {
 }
 
 /// What Newton's method ended with.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NewtonRoot {
     /// The last approximation `t`.
@@ -202,6 +203,7 @@ impl NestedNewtonTrim {
 /// found.) Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is
 /// not applicable", §3.2) it stops at `x` without converging. Never panics.
 #[must_use]
+#[transcript::task]
 pub fn newton(
     f: impl Fn(f64) -> f64,
     df: impl Fn(f64) -> f64,
@@ -232,6 +234,7 @@ pub fn newton(
 /// below check); any other length is evaluated the same way. An empty
 /// curve, a non-finite point or a non-finite `uv` is never inside.
 #[must_use]
+#[transcript::task]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
     // Unused until you write the body:
     let _ = (&curve, &uv, &settings);
@@ -242,6 +245,7 @@ pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -
 
 impl Trim for NewtonTrim {
     /// Inside the upper half or inside the lower half (Listing 11).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;
@@ -256,6 +260,7 @@ impl Trim for NestedNewtonTrim {
     /// `x₁ > 0 ∧ x₂ < 0 ∧ ¬(x₃ > 0 ∧ x₄ < 0)`: one sign case only (curves
     /// running left to right), and no `t` test for the inner curves, so
     /// that where Newton finds no inner root the ring came out wrong.
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;

@@ -108,6 +108,7 @@ impl TrimRegion {
     /// `uv + x · (1, 0)`, `x > 0`, with all curves of all loops. A point
     /// with a NaN or infinite coordinate is never inside.
     #[must_use]
+    #[transcript::task]
     pub fn contains(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;
@@ -133,6 +134,7 @@ impl Trim for TrimRegion {
 /// that `p − a` overflows), is never crossed: `false`, so that the
 /// subdivision never runs on NaN.
 #[must_use]
+#[transcript::task]
 pub fn crossing_parity(points: &[DVec2], a: DVec2) -> bool {
     // Unused until you write the body:
     let _ = (&points, &a);

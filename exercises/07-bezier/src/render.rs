@@ -79,6 +79,7 @@ pub fn checker(uv: DVec2) -> DVec3 {
 /// the eye at the origin (`eye = normalize(−position)`); here everything
 /// is in world space with the eye given.
 #[must_use]
+#[transcript::task]
 pub fn phong(normal: DVec3, position: DVec3, eye: DVec3, diffuse: DVec3) -> DVec3 {
     // Unused until you write the body:
     let _ = (&normal, &position, &eye, &diffuse);
@@ -101,6 +102,7 @@ pub fn phong(normal: DVec3, position: DVec3, eye: DVec3, diffuse: DVec3) -> DVec
 /// [`BezierError::InvalidSetting`] for a tessellation level outside
 /// `1 ..= MAX_TESS_LEVEL`; the first error of `surface`. Nothing is drawn
 /// then.
+#[transcript::task]
 pub fn render_surface(
     canvas: &mut Canvas,
     surface: impl Fn(DVec2) -> Result<SurfaceSample, BezierError>,

@@ -45,6 +45,7 @@ impl IntervalTrim {
 
 impl Trim for IntervalTrim {
     /// `min.x ≤ u ≤ max.x` and `min.y ≤ v ≤ max.y` (boundary trimmed).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;
@@ -78,6 +79,7 @@ impl CircleTrim {
 
 impl Trim for CircleTrim {
     /// `|uv − centre| < radius` (GLSL `distance`; the boundary is kept).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;
@@ -111,6 +113,7 @@ impl EllipseTrim {
 
 impl Trim for EllipseTrim {
     /// `(u − c₁)²/a² + (v − c₂)²/b² ≤ 1` (seed eq. 14; boundary trimmed).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // Unused until you write the body:
         let _ = &uv;

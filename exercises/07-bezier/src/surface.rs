@@ -51,6 +51,7 @@ pub use freeform::SurfacePoint;
 /// # Errors
 /// [`BezierError::ParameterOutOfRange`] for `u` or `v` NaN or outside
 /// `[0, 1]` (the net itself is valid by construction).
+#[transcript::task]
 pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
@@ -63,6 +64,7 @@ pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierEr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
+#[transcript::task]
 pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
@@ -87,6 +89,7 @@ pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierEr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
+#[transcript::task]
 pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);
@@ -109,6 +112,7 @@ pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint,
 /// [`BezierError::ParameterOutOfRange`] as above;
 /// [`BezierError::DegenerateNormal`] if the normal is undefined at the
 /// nudged point too (a net collapsed to a curve or a point).
+#[transcript::task]
 pub fn normal(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // Unused until you write the body:
     let _ = (&net, &uv);

@@ -47,6 +47,7 @@ use crate::knots::{KnotVector, NurbsError};
 /// Exponential in `p` (two calls per level): it is the definition, the
 /// oracle for the fast [`basis_funs`], not for production.
 #[must_use]
+#[transcript::task]
 pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
     // Unused until you write the body:
     let _ = (&knots, &i, &p, &u);
@@ -61,6 +62,7 @@ pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
 ///
 /// Errors: `u` outside the domain `[u_p, u_{n+1}]` or NaN
 /// ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
     // Unused until you write the body:
     let _ = (&knots, &u);
@@ -78,6 +80,7 @@ pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
 ///
 /// Errors: `s` not in `p ..= n` ([`NurbsError::BadSpan`]); `u` outside
 /// `[u_s, u_{s+1}]` or NaN ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn basis_funs(knots: &KnotVector, span: usize, u: f64) -> Result<Vec<f64>, NurbsError> {
     // Unused until you write the body:
     let _ = (&knots, &span, &u);
@@ -96,6 +99,7 @@ pub fn basis_funs(knots: &KnotVector, span: usize, u: f64) -> Result<Vec<f64>, N
 ///
 /// Errors: as [`basis_funs`]. `order` is capped at `p` internally; the rows
 /// above it are zeros.
+#[transcript::task]
 pub fn ders_basis_funs(
     knots: &KnotVector,
     span: usize,

@@ -54,6 +54,7 @@ impl NurbsCurve {
     /// ([`NurbsError::OutOfDomain`]; inserting at an end of the domain is
     /// not supported); `u`'s multiplicity would exceed the degree
     /// ([`NurbsError::MultiplicityTooHigh`]).
+    #[transcript::task]
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<NurbsCurve, NurbsError> {
         // Unused until you write the body:
         let _ = (&u, &times);
@@ -67,6 +68,7 @@ impl NurbsSurface {
     /// `u`): `times` more rows.
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
+    #[transcript::task]
     pub fn insert_knot_u(&self, u: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
         // Unused until you write the body:
         let _ = (&u, &times);
@@ -78,6 +80,7 @@ impl NurbsSurface {
     /// columns.
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
+    #[transcript::task]
     pub fn insert_knot_v(&self, v: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
         // Unused until you write the body:
         let _ = (&v, &times);
@@ -102,6 +105,7 @@ impl NurbsSurface {
     /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]); a
     /// degree above the library's `freeform::patch::MAX_DEGREE`
     /// ([`NurbsError::Patch`]).
+    #[transcript::task]
     pub fn decompose(&self) -> Result<Vec<RationalPatch>, NurbsError> {
         todo!(
             "knot_insertion: raise every interior knot to multiplicity p (q), then cut the net into blocks"

@@ -22,6 +22,7 @@ use thiserror::Error;
 ///
 /// Library functions return it instead of panicking; the message names the
 /// offending value.
+#[transcript::evidence]
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum NurbsError {
     /// Degree 0 is a step function, not a curve; this crate starts at 1.
@@ -210,6 +211,7 @@ impl Domain {
 ///   lands on a non-empty span;
 /// - a knot strictly inside the domain occurs at most `p` times (the
 ///   curve stays continuous).
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct KnotVector {
     degree: usize,

@@ -67,6 +67,7 @@ pub use freeform::SurfacePoint;
 
 /// A grid of homogeneous control points, row `i` along `u`, column `j`
 /// along `v` (see the module documentation).
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct ControlNet {
     rows: usize,
@@ -167,6 +168,7 @@ impl ControlNet {
 
 /// A NURBS curve `C(u) = Σ N_{i,p}(u) wᵢ Pᵢ / Σ N_{i,p}(u) wᵢ` (seed 001,
 /// Definition 1.3.1) on the domain of its knot vector.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsCurve {
     knots: KnotVector,
@@ -235,6 +237,7 @@ impl NurbsCurve {
 /// A NURBS surface (seed 001, Definition 1.3.2): a control net, degree `p`
 /// and knots `U` along `u` (rows), degree `q` and knots `V` along `v`
 /// (columns).
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
     knots_u: KnotVector,

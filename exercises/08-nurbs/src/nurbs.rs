@@ -50,6 +50,7 @@ impl NurbsCurve {
     /// combine `P_{s−p}ʷ … P_sʷ`, project.
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn point(&self, u: f64) -> Result<DVec3, NurbsError> {
         // Unused until you write the body:
         let _ = &u;
@@ -63,6 +64,7 @@ impl NurbsCurve {
     /// `u` starts), at the domain's end the one from the left.
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn derivative(&self, u: f64) -> Result<CurvePoint, NurbsError> {
         // Unused until you write the body:
         let _ = &u;
@@ -78,6 +80,7 @@ impl NurbsSurface {
     /// combined and projected.
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn point(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
         // Unused until you write the body:
         let _ = (&u, &v);
@@ -88,6 +91,7 @@ impl NurbsSurface {
     /// in the domain (one-sided at knots, as for curves).
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn derivatives(&self, u: f64, v: f64) -> Result<SurfacePoint, NurbsError> {
         // Unused until you write the body:
         let _ = (&u, &v);
@@ -101,6 +105,7 @@ impl NurbsSurface {
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]);
     /// parallel or zero tangents, as at the pole of a sphere
     /// ([`NurbsError::DegenerateNormal`], see [`PARALLEL_TOLERANCE`]).
+    #[transcript::task]
     pub fn normal(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
         // Unused until you write the body:
         let _ = (&u, &v);
@@ -119,6 +124,7 @@ impl NurbsSurface {
     ///
     /// Errors: fewer than 2 samples along a side, or more than
     /// [`MAX_GRID_POINTS`] in all ([`NurbsError::BadGrid`]).
+    #[transcript::task]
     pub fn sample_grid(
         &self,
         samples_u: usize,

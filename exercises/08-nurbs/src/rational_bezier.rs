@@ -36,6 +36,7 @@ use crate::net::{ControlNet, check_homogeneous, project};
 /// where the binomial coefficient still fits an `f64`; beyond, it
 /// overflows to infinity or NaN.
 #[must_use]
+#[transcript::task]
 pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
     // Unused until you write the body:
     let _ = (&n, &i, &u);
@@ -53,6 +54,7 @@ pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
 /// Errors: no points ([`NurbsError::NoControlPoints`]), a weight that is not
 /// finite and `> 0` ([`NurbsError::BadWeight`]), a non-finite point, or `u`
 /// outside `[0, 1]` or NaN ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn rational_bezier_point(points: &[DVec4], u: f64) -> Result<DVec3, NurbsError> {
     // Unused until you write the body:
     let _ = (&points, &u);
@@ -70,6 +72,7 @@ pub fn rational_bezier_point(points: &[DVec4], u: f64) -> Result<DVec3, NurbsErr
 ///
 /// Errors: `u` or `v` outside `[0, 1]` or NaN ([`NurbsError::OutOfDomain`]);
 /// the net is valid by construction.
+#[transcript::task]
 pub fn rational_bezier_surface_point(
     net: &ControlNet,
     u: f64,

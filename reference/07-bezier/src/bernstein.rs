@@ -20,6 +20,7 @@ use crate::basics::{BezierError, ControlPoint, MAX_DEGREE, check_control_points,
 /// # Errors
 /// [`BezierError::IndexAboveDegree`] if `i > n`,
 /// [`BezierError::DegreeTooHigh`] if `n > MAX_DEGREE`.
+#[transcript::task]
 pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
     // BEGIN SOLUTION bernstein: check i ≤ n ≤ MAX_DEGREE, then multiply (n − k) / (k + 1) for k < i
     check_degree(n)?;
@@ -46,6 +47,7 @@ pub fn binomial(n: usize, i: usize) -> Result<f64, BezierError> {
 /// # Errors
 /// [`BezierError::IndexAboveDegree`], [`BezierError::DegreeTooHigh`], or
 /// [`BezierError::ParameterOutOfRange`] for `t` NaN or outside `[0, 1]`.
+#[transcript::task]
 pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
     // BEGIN SOLUTION bernstein: C(n, i) · tⁱ · (1 − t)ⁿ⁻ⁱ after checking t ∈ [0, 1]
     check_parameter("t", t)?;
@@ -60,6 +62,7 @@ pub fn bernstein(i: usize, n: usize, t: f64) -> Result<f64, BezierError> {
 ///
 /// # Errors
 /// As [`bernstein`].
+#[transcript::task]
 pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
     // BEGIN SOLUTION bernstein: collect B_{i,n}(t) for i = 0..=n
     check_degree(n)?;
@@ -76,6 +79,7 @@ pub fn bernstein_basis(n: usize, t: f64) -> Result<Vec<f64>, BezierError> {
 /// # Errors
 /// [`BezierError::Empty`], [`BezierError::DegreeTooHigh`],
 /// [`BezierError::NonFinitePoint`] or [`BezierError::ParameterOutOfRange`].
+#[transcript::task]
 pub fn bernstein_curve<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
     // BEGIN SOLUTION bernstein: validate, then sum B_{i,n}(t) · P_i
     check_control_points(points)?;

@@ -30,6 +30,7 @@ pub use freeform::CurvePoint;
 
 /// The two halves of a curve split at `t`, each with as many control
 /// points as the original.
+#[transcript::evidence]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Split<P> {
     /// The control points of the curve on `[0, t]`, starting at `P_0`.
@@ -46,6 +47,7 @@ pub struct Split<P> {
 /// [`BezierError::Empty`], [`BezierError::DegreeTooHigh`],
 /// [`BezierError::NonFinitePoint`], or [`BezierError::ParameterOutOfRange`]
 /// for `t` NaN or outside `[0, 1]`.
+#[transcript::task]
 pub fn de_casteljau<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierError> {
     // BEGIN SOLUTION de_casteljau: validate; interpolate neighbours (1 − t)·b_i + t·b_{i+1} until one point is left
     check_control_points(points)?;
@@ -66,6 +68,7 @@ pub fn de_casteljau<P: ControlPoint>(points: &[P], t: f64) -> Result<P, BezierEr
 ///
 /// # Errors
 /// As [`de_casteljau`].
+#[transcript::task]
 pub fn point_and_derivative<P: ControlPoint>(
     points: &[P],
     t: f64,
@@ -100,6 +103,7 @@ pub fn point_and_derivative<P: ControlPoint>(
 ///
 /// # Errors
 /// As [`de_casteljau`].
+#[transcript::task]
 pub fn split<P: ControlPoint>(points: &[P], t: f64) -> Result<Split<P>, BezierError> {
     // BEGIN SOLUTION de_casteljau: keep the first point of every level (left) and the last one (right, reversed)
     check_control_points(points)?;

@@ -68,6 +68,7 @@ impl Default for NewtonSettings {
 }
 
 /// What Newton's method ended with.
+#[transcript::evidence]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NewtonRoot {
     /// The last approximation `t`.
@@ -202,6 +203,7 @@ impl NestedNewtonTrim {
 /// found.) Where `f'(x) = 0` or `h` is not finite (the seed's "Newton is
 /// not applicable", §3.2) it stops at `x` without converging. Never panics.
 #[must_use]
+#[transcript::task]
 pub fn newton(
     f: impl Fn(f64) -> f64,
     df: impl Fn(f64) -> f64,
@@ -253,6 +255,7 @@ pub fn newton(
 /// below check); any other length is evaluated the same way. An empty
 /// curve, a non-finite point or a non-finite `uv` is never inside.
 #[must_use]
+#[transcript::task]
 pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -> bool {
     // BEGIN SOLUTION trim: Newton on C_v(t) − v from 1 and from 0; both converged, both t in [0, 1], x₁ and x₂ of opposite signs
     if curve.is_empty() || !uv.is_finite() || !curve.iter().all(|p| p.is_finite()) {
@@ -276,6 +279,7 @@ pub fn between_crossings(curve: &[DVec2], uv: DVec2, settings: NewtonSettings) -
 
 impl Trim for NewtonTrim {
     /// Inside the upper half or inside the lower half (Listing 11).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: between the crossings of the upper curve, or of the lower curve
         between_crossings(&self.upper, uv, self.settings)
@@ -291,6 +295,7 @@ impl Trim for NestedNewtonTrim {
     /// `x₁ > 0 ∧ x₂ < 0 ∧ ¬(x₃ > 0 ∧ x₄ < 0)`: one sign case only (curves
     /// running left to right), and no `t` test for the inner curves, so
     /// that where Newton finds no inner root the ring came out wrong.
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: per half, between the outer curve's crossings and not between the inner curve's
         let s = self.outer.settings;

@@ -108,6 +108,7 @@ impl TrimRegion {
     /// `uv + x · (1, 0)`, `x > 0`, with all curves of all loops. A point
     /// with a NaN or infinite coordinate is never inside.
     #[must_use]
+    #[transcript::task]
     pub fn contains(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim_loop: reject non-finite uv; add crossing_parity of every curve of every loop; odd is inside
         if !uv.is_finite() {
@@ -137,6 +138,7 @@ impl Trim for TrimRegion {
 /// that `p − a` overflows), is never crossed: `false`, so that the
 /// subdivision never runs on NaN.
 #[must_use]
+#[transcript::task]
 pub fn crossing_parity(points: &[DVec2], a: DVec2) -> bool {
     // BEGIN SOLUTION trim_loop: shift so a is the origin; classify by the convex hull; split at ½ where undecided
     let shifted: Vec<DVec2> = points.iter().map(|&p| p - a).collect();

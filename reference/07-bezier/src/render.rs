@@ -78,6 +78,7 @@ pub fn checker(uv: DVec2) -> DVec3 {
 /// the eye at the origin (`eye = normalize(−position)`); here everything
 /// is in world space with the eye given.
 #[must_use]
+#[transcript::task]
 pub fn phong(normal: DVec3, position: DVec3, eye: DVec3, diffuse: DVec3) -> DVec3 {
     // BEGIN SOLUTION render: ambient · diffuse plus, per light, φ · diffuse + ψ · specular as in Listing 13
     let e = (eye - position).normalize_or_zero();
@@ -109,6 +110,7 @@ pub fn phong(normal: DVec3, position: DVec3, eye: DVec3, diffuse: DVec3) -> DVec
 /// [`BezierError::InvalidSetting`] for a tessellation level outside
 /// `1 ..= MAX_TESS_LEVEL`; the first error of `surface`. Nothing is drawn
 /// then.
+#[transcript::task]
 pub fn render_surface(
     canvas: &mut Canvas,
     surface: impl Fn(DVec2) -> Result<SurfaceSample, BezierError>,

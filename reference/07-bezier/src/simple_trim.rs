@@ -45,6 +45,7 @@ impl IntervalTrim {
 
 impl Trim for IntervalTrim {
     /// `min.x ≤ u ≤ max.x` and `min.y ≤ v ≤ max.y` (boundary trimmed).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: inclusive comparisons in u and in v, as the seed's shader
         uv.x >= self.min.x && uv.x <= self.max.x && uv.y >= self.min.y && uv.y <= self.max.y
@@ -78,6 +79,7 @@ impl CircleTrim {
 
 impl Trim for CircleTrim {
     /// `|uv − centre| < radius` (GLSL `distance`; the boundary is kept).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: strict comparison of the distance with the radius, as the seed's shader
         uv.distance(self.centre) < self.radius
@@ -111,6 +113,7 @@ impl EllipseTrim {
 
 impl Trim for EllipseTrim {
     /// `(u − c₁)²/a² + (v − c₂)²/b² ≤ 1` (seed eq. 14; boundary trimmed).
+    #[transcript::task]
     fn trims(&self, uv: DVec2) -> bool {
         // BEGIN SOLUTION trim: evaluate eq. 14 and compare with ≤ 1
         let d = (uv - self.centre) / self.radii;

@@ -50,6 +50,7 @@ pub use freeform::SurfacePoint;
 /// # Errors
 /// [`BezierError::ParameterOutOfRange`] for `u` or `v` NaN or outside
 /// `[0, 1]` (the net itself is valid by construction).
+#[transcript::task]
 pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each column at u; de Casteljau the results at v
     check_uv(uv)?;
@@ -73,6 +74,7 @@ pub fn evaluate_u_then_v(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierEr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
+#[transcript::task]
 pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: check u, v; de Casteljau each row at v; de Casteljau the results at u
     check_uv(uv)?;
@@ -100,6 +102,7 @@ pub fn evaluate_v_then_u(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierEr
 ///
 /// # Errors
 /// As [`evaluate_u_then_v`].
+#[transcript::task]
 pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint, BezierError> {
     // BEGIN SOLUTION surface: reduce rows at v then at u (keep n·(r1 − r0)); columns at u then at v (keep m·(q1 − q0))
     check_uv(uv)?;
@@ -138,6 +141,7 @@ pub fn partial_derivatives(net: &BezierPatch, uv: DVec2) -> Result<SurfacePoint,
 /// [`BezierError::ParameterOutOfRange`] as above;
 /// [`BezierError::DegenerateNormal`] if the normal is undefined at the
 /// nudged point too (a net collapsed to a curve or a point).
+#[transcript::task]
 pub fn normal(net: &BezierPatch, uv: DVec2) -> Result<DVec3, BezierError> {
     // BEGIN SOLUTION surface: normalise ∂u × ∂v; if degenerate retry once nudged towards (½, ½); else DegenerateNormal
     check_uv(uv)?;

@@ -47,6 +47,7 @@ use crate::knots::{KnotVector, NurbsError};
 /// Exponential in `p` (two calls per level): it is the definition, the
 /// oracle for the fast [`basis_funs`], not for production.
 #[must_use]
+#[transcript::task]
 pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
     // BEGIN SOLUTION basis: the recursion with N_{i,p−1} (not the seed's N_{i,p}) and 0/0 = 0
     let k = knots.knots();
@@ -79,6 +80,7 @@ pub fn cox_de_boor(knots: &KnotVector, i: usize, p: usize, u: f64) -> f64 {
 ///
 /// Errors: `u` outside the domain `[u_p, u_{n+1}]` or NaN
 /// ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
     // BEGIN SOLUTION basis: binary search for u_s ≤ u < u_{s+1}; the domain's end belongs to span n
     let u = knots.domain().check(u)?;
@@ -111,6 +113,7 @@ pub fn find_span(knots: &KnotVector, u: f64) -> Result<usize, NurbsError> {
 ///
 /// Errors: `s` not in `p ..= n` ([`NurbsError::BadSpan`]); `u` outside
 /// `[u_s, u_{s+1}]` or NaN ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn basis_funs(knots: &KnotVector, span: usize, u: f64) -> Result<Vec<f64>, NurbsError> {
     // BEGIN SOLUTION basis: A2.2, the triangle of left/right differences
     check_span(knots, span, u)?;
@@ -169,6 +172,7 @@ fn check_span(knots: &KnotVector, span: usize, u: f64) -> Result<(), NurbsError>
 ///
 /// Errors: as [`basis_funs`]. `order` is capped at `p` internally; the rows
 /// above it are zeros.
+#[transcript::task]
 pub fn ders_basis_funs(
     knots: &KnotVector,
     span: usize,

@@ -50,6 +50,7 @@ impl NurbsCurve {
     /// ([`NurbsError::OutOfDomain`]; inserting at an end of the domain is
     /// not supported); `u`'s multiplicity would exceed the degree
     /// ([`NurbsError::MultiplicityTooHigh`]).
+    #[transcript::task]
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<NurbsCurve, NurbsError> {
         // BEGIN SOLUTION knot_insertion: A5.1 on the homogeneous points, r rounds of αᵢ Pᵢ + (1 − αᵢ) Pᵢ₋₁
         let (knots, points) = insert(self.knots(), self.points(), u, times)?;
@@ -64,6 +65,7 @@ impl NurbsSurface {
     /// `u`): `times` more rows.
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
+    #[transcript::task]
     pub fn insert_knot_u(&self, u: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
         // BEGIN SOLUTION knot_insertion: insert into every column (a curve in u) of the net
         let net = self.net();
@@ -89,6 +91,7 @@ impl NurbsSurface {
     /// columns.
     ///
     /// Errors: as [`NurbsCurve::insert_knot`].
+    #[transcript::task]
     pub fn insert_knot_v(&self, v: f64, times: usize) -> Result<NurbsSurface, NurbsError> {
         // BEGIN SOLUTION knot_insertion: insert into every row (a curve in v) of the net
         let net = self.net();
@@ -122,6 +125,7 @@ impl NurbsSurface {
     /// Errors: an unclamped knot vector ([`NurbsError::NotClamped`]); a
     /// degree above the library's `freeform::patch::MAX_DEGREE`
     /// ([`NurbsError::Patch`]).
+    #[transcript::task]
     pub fn decompose(&self) -> Result<Vec<RationalPatch>, NurbsError> {
         // BEGIN SOLUTION knot_insertion: raise every interior knot to multiplicity p (q), then cut the net into blocks
         if !self.knots_u().is_clamped() || !self.knots_v().is_clamped() {

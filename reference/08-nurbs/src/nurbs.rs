@@ -47,6 +47,7 @@ impl NurbsCurve {
     /// combine `P_{s−p}ʷ … P_sʷ`, project.
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn point(&self, u: f64) -> Result<DVec3, NurbsError> {
         // BEGIN SOLUTION nurbs: span, basis, a weighted sum of p + 1 homogeneous points, project
         let knots = self.knots();
@@ -69,6 +70,7 @@ impl NurbsCurve {
     /// `u` starts), at the domain's end the one from the left.
     ///
     /// Errors: `u` outside the domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn derivative(&self, u: f64) -> Result<CurvePoint, NurbsError> {
         // BEGIN SOLUTION nurbs: homogeneous value and derivative from N and N′, then C′ = (A′ − w′C)/w
         let knots = self.knots();
@@ -96,6 +98,7 @@ impl NurbsSurface {
     /// combined and projected.
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn point(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
         // BEGIN SOLUTION nurbs: spans and bases in u and v, the (p+1)(q+1) weighted sum, project
         let (ku, kv) = (self.knots_u(), self.knots_v());
@@ -116,6 +119,7 @@ impl NurbsSurface {
     /// in the domain (one-sided at knots, as for curves).
     ///
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]).
+    #[transcript::task]
     pub fn derivatives(&self, u: f64, v: f64) -> Result<SurfacePoint, NurbsError> {
         // BEGIN SOLUTION nurbs: Sʷ, Sʷ_u, Sʷ_v from bases and their derivatives, then the quotient rule
         let (ku, kv) = (self.knots_u(), self.knots_v());
@@ -151,6 +155,7 @@ impl NurbsSurface {
     /// Errors: `u` or `v` outside its domain or NaN ([`NurbsError::OutOfDomain`]);
     /// parallel or zero tangents, as at the pole of a sphere
     /// ([`NurbsError::DegenerateNormal`], see [`PARALLEL_TOLERANCE`]).
+    #[transcript::task]
     pub fn normal(&self, u: f64, v: f64) -> Result<DVec3, NurbsError> {
         // BEGIN SOLUTION nurbs: the cross product of the tangents, refused when they are parallel
         let d = self.derivatives(u, v)?;
@@ -178,6 +183,7 @@ impl NurbsSurface {
     ///
     /// Errors: fewer than 2 samples along a side, or more than
     /// [`MAX_GRID_POINTS`] in all ([`NurbsError::BadGrid`]).
+    #[transcript::task]
     pub fn sample_grid(
         &self,
         samples_u: usize,

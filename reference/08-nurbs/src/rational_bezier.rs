@@ -34,6 +34,7 @@ use crate::net::{ControlNet, check_homogeneous, project};
 /// where the binomial coefficient still fits an `f64`; beyond, it
 /// overflows to infinity or NaN.
 #[must_use]
+#[transcript::task]
 pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
     // BEGIN SOLUTION rational_bezier: the binomial coefficient times uⁱ (1 − u)ⁿ⁻ⁱ
     if i > n {
@@ -58,6 +59,7 @@ pub fn bernstein(n: usize, i: usize, u: f64) -> f64 {
 /// Errors: no points ([`NurbsError::NoControlPoints`]), a weight that is not
 /// finite and `> 0` ([`NurbsError::BadWeight`]), a non-finite point, or `u`
 /// outside `[0, 1]` or NaN ([`NurbsError::OutOfDomain`]).
+#[transcript::task]
 pub fn rational_bezier_point(points: &[DVec4], u: f64) -> Result<DVec3, NurbsError> {
     // BEGIN SOLUTION rational_bezier: check the input, run de Casteljau on the homogeneous points, project
     check_homogeneous(points)?;
@@ -91,6 +93,7 @@ fn de_casteljau(mut points: Vec<DVec4>, u: f64) -> DVec4 {
 ///
 /// Errors: `u` or `v` outside `[0, 1]` or NaN ([`NurbsError::OutOfDomain`]);
 /// the net is valid by construction.
+#[transcript::task]
 pub fn rational_bezier_surface_point(
     net: &ControlNet,
     u: f64,
