@@ -19,6 +19,7 @@
 use glam::DVec2;
 
 /// The quad domain: points `(u, v)` in `[0, 1]²` and triangles.
+#[transcript::evidence]
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct QuadDomain {
     /// Domain points `(u, v)`, each once.
@@ -28,6 +29,7 @@ pub struct QuadDomain {
 }
 
 /// The triangle domain: barycentric points `[u, v, w]` and triangles.
+#[transcript::evidence]
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TriangleDomain {
     /// Domain points `[u, v, w]`, `u + v + w = 1`, each once.

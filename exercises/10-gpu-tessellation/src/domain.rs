@@ -78,6 +78,7 @@ pub enum Spacing {
 /// The clamped level `f` and segment count `n` of a level under `spacing`
 /// (see the module table). NaN clamps to the lower end.
 #[must_use]
+#[transcript::task]
 pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
     // Unused until you write the body:
     let _ = (&level, &spacing);
@@ -89,6 +90,7 @@ pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
 /// shorter fractional segments first and last). Symmetric:
 /// `d_(n−i) = 1 − d_i`.
 #[must_use]
+#[transcript::task]
 pub fn subdivide_edge(level: f64, spacing: Spacing) -> Vec<f64> {
     // Unused until you write the body:
     let _ = (&level, &spacing);
@@ -115,6 +117,7 @@ const ONE_PLUS_EPSILON: f64 = 1.0 + f64::EPSILON;
 /// (0,1)`, the inner points of the outer edges (`v = 0`, `u = 1`, `v = 1`,
 /// `u = 0`, each counter-clockwise), then the inner grid row by row.
 #[must_use]
+#[transcript::task]
 pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDomain {
     // Unused until you write the body:
     let _ = (&inner, &outer, &spacing);
@@ -137,6 +140,7 @@ pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDo
 /// Points come ring by ring from the outside; each ring starts at its
 /// corner towards `(0,0,1)` and runs counter-clockwise.
 #[must_use]
+#[transcript::task]
 pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> TriangleDomain {
     // Unused until you write the body:
     let _ = (&inner, &outer, &spacing);

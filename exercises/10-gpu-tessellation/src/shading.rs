@@ -10,6 +10,7 @@
 /// A triangle with a repeated index contributes only its real edges (none
 /// of the form `[a, a]`). Empty input gives no edges.
 #[must_use]
+#[transcript::task]
 pub fn wireframe_edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> {
     // Unused until you write the body:
     let _ = &triangles;

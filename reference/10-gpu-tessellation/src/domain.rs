@@ -76,6 +76,7 @@ pub enum Spacing {
 /// The clamped level `f` and segment count `n` of a level under `spacing`
 /// (see the module table). NaN clamps to the lower end.
 #[must_use]
+#[transcript::task]
 pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
     // BEGIN SOLUTION primitive_generator: clamp per spacing, round up to an integer / even / odd n
     let (low, high) = match spacing {
@@ -103,6 +104,7 @@ pub fn clamp_level(level: f64, spacing: Spacing) -> (f64, usize) {
 /// shorter fractional segments first and last). Symmetric:
 /// `d_(n−i) = 1 − d_i`.
 #[must_use]
+#[transcript::task]
 pub fn subdivide_edge(level: f64, spacing: Spacing) -> Vec<f64> {
     // BEGIN SOLUTION primitive_generator: n equal segments, or n − 2 of length 1/f and two short ones at the ends
     let (f, n) = clamp_level(level, spacing);
@@ -138,6 +140,7 @@ const ONE_PLUS_EPSILON: f64 = 1.0 + f64::EPSILON;
 /// (0,1)`, the inner points of the outer edges (`v = 0`, `u = 1`, `v = 1`,
 /// `u = 0`, each counter-clockwise), then the inner grid row by row.
 #[must_use]
+#[transcript::task]
 pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDomain {
     // BEGIN SOLUTION primitive_generator: outer edges by the outer levels, inner grid by the inner levels, zip the ring
     let mut domain = QuadDomain::default();
@@ -239,6 +242,7 @@ pub fn quad_domain(inner: [f64; 2], outer: [f64; 4], spacing: Spacing) -> QuadDo
 /// Points come ring by ring from the outside; each ring starts at its
 /// corner towards `(0,0,1)` and runs counter-clockwise.
 #[must_use]
+#[transcript::task]
 pub fn triangle_domain(inner: f64, outer: [f64; 3], spacing: Spacing) -> TriangleDomain {
     // BEGIN SOLUTION primitive_generator: concentric rings from the inner level, outer edges by the outer levels, zip
     let mut domain = TriangleDomain::default();

@@ -374,6 +374,7 @@ fn lock_stage(home: &Path) -> Result<File> {
 
 /// Syncs the stage in `home` to hold `files`, already locked by `lock`.
 fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File) -> Result<Stage> {
+    let files = &replay::with_graded_data(files);
     let stage_root = home.join("stage");
     claim(&stage_root)?;
     // When a manifest or the lock file changes, cargo trims the lock to

@@ -92,6 +92,40 @@ pub fn add_packages(root: &Path, files: &mut Files) -> Result<()> {
     optimise(files, &replayed)
 }
 
+/// `files` with every file of a replay package's `src/` that is not Rust
+/// (topic 10's WGSL) taken from the graded package at the same place.
+///
+/// Such a file is data the course's code reads (`include_str!`), not code
+/// that runs in the process: a shader runs on the GPU, through naga's
+/// validation and wgpu's bounds checks, and cannot reach the process's
+/// memory. So the replay draws with the graded shaders itself, while the
+/// Rust of the graded package still reaches it only as a record.
+#[must_use]
+pub fn with_graded_data(files: &Files) -> Files {
+    let graded = |to: &Path| -> Option<&Source> {
+        let mut parts = to.components();
+        let replay = parts.next()?.as_os_str() == REPLAY_DIR;
+        let topic = parts.next()?.as_os_str();
+        let src = parts.next()?.as_os_str() == "src";
+        let rust = to.extension().is_some_and(|e| e == "rs");
+        if !replay || !src || rust {
+            return None;
+        }
+        let there = Path::new("exercises")
+            .join(topic)
+            .join("src")
+            .join(parts.as_path());
+        files
+            .iter()
+            .find(|(path, _)| *path == there)
+            .map(|(_, source)| source)
+    };
+    files
+        .iter()
+        .map(|(to, source)| (to.clone(), graded(to).unwrap_or(source).clone()))
+        .collect()
+}
+
 /// Builds the replay packages with optimisation: they hold the course's
 /// code and tests only, and replaying twenty million recorded fragments
 /// through unoptimised test code costs more than the drawing did.
@@ -212,6 +246,28 @@ fn manifest(topic: &Topic, topics: &[Topic]) -> Result<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_replay_reads_the_graded_shaders_and_only_its_own_rust() {
+        let text = |t: &str| Source::Text(t.as_bytes().to_vec());
+        let files: Files = vec![
+            ("exercises/10-gpu/src/control.wgsl".into(), text("student's wgsl")),
+            ("exercises/10-gpu/src/domain.rs".into(), text("student's rust")),
+            ("exercises/10-gpu/tests/data.txt".into(), text("student's test data")),
+            ("replay/10-gpu/src/control.wgsl".into(), text("course's wgsl")),
+            ("replay/10-gpu/src/domain.rs".into(), text("course's rust")),
+            ("replay/10-gpu/tests/data.txt".into(), text("course's test data")),
+        ];
+        let staged = with_graded_data(&files);
+        let at = |path: &str| {
+            let (_, source) = staged.iter().find(|(to, _)| to == Path::new(path)).unwrap();
+            String::from_utf8(source.read().unwrap()).unwrap()
+        };
+        assert_eq!(at("replay/10-gpu/src/control.wgsl"), "student's wgsl");
+        assert_eq!(at("replay/10-gpu/src/domain.rs"), "course's rust");
+        assert_eq!(at("replay/10-gpu/tests/data.txt"), "course's test data");
+        assert_eq!(staged.len(), files.len());
+    }
 
     #[test]
     fn the_replay_packages_join_the_members_however_the_list_is_laid_out() {
