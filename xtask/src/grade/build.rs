@@ -38,6 +38,12 @@ pub const DEFAULT_BUILD_TIME_LIMIT: Duration = Duration::from_secs(45 * 60);
 /// wall-clock limit of a build.
 const COMPILER_CPU_LIMIT_S: u64 = 900;
 
+/// What the graded code's programs and libraries may take on disk after a
+/// build (the course's whole reference takes some 700 MiB): a large
+/// initialised static in a task file is copied into every test program
+/// that links it, and a class's build folder would keep every copy.
+pub const GRADED_BUILD_BUDGET_MIB: u64 = 3072;
+
 /// An integration-test executable: `tests/<name>.rs`.
 #[derive(Debug, Clone)]
 pub struct TestBinary {
@@ -142,6 +148,11 @@ impl Builder {
             Some(format!(
                 "the build of {what} took the compiler more than {COMPILER_CPU_LIMIT_S} s of CPU time (an endless constant evaluation?), and was stopped"
             ))
+        } else if ended.exit.signal == Some(25) || read(&stderr).contains("(signal: 25, SIGXFSZ") {
+            Some(format!(
+                "the build of {what} wrote a file larger than {} MiB, and was stopped",
+                Limits::build(Duration::ZERO).file_mib
+            ))
         } else if ended.exit.output_limit.is_some() {
             Some(format!(
                 "the build of {what} printed without end, and was stopped"
@@ -149,9 +160,12 @@ impl Builder {
         } else {
             None
         };
+        let stdout = read(&stdout);
+        let stopped =
+            stopped.or_else(|| over_budget(&stdout, &self.root, what, GRADED_BUILD_BUDGET_MIB));
         Ok(CargoRun {
             success: ended.success(),
-            stdout: read(&stdout),
+            stdout,
             stderr: read(&stderr),
             stopped,
         })
@@ -221,6 +235,8 @@ struct Message {
     profile: Option<Profile>,
     #[serde(default)]
     executable: Option<PathBuf>,
+    #[serde(default)]
+    filenames: Vec<PathBuf>,
 }
 
 #[derive(Deserialize)]
@@ -324,6 +340,50 @@ pub fn add_replays(
         binary.replay = Some(twin.executable.clone());
     }
     Ok(())
+}
+
+/// The files cargo reports having made for the graded packages (those
+/// under `<root>/exercises/`: the student's code, not the course's given
+/// crates or replay builds), with their bytes on disk.
+fn graded_artifacts(messages: &str, root: &Path) -> (Vec<PathBuf>, u64) {
+    let graded = root.join("exercises");
+    let mut files: Vec<PathBuf> = messages
+        .lines()
+        .filter_map(|line| serde_json::from_str::<Message>(line).ok())
+        .filter(|message| message.reason == "compiler-artifact")
+        .filter(|message| {
+            message
+                .manifest_path
+                .as_deref()
+                .is_some_and(|manifest| manifest.starts_with(&graded))
+        })
+        .flat_map(|message| message.filenames.into_iter().chain(message.executable))
+        .collect();
+    files.sort();
+    files.dedup();
+    let bytes = files
+        .iter()
+        .filter_map(|file| std::fs::symlink_metadata(file).ok())
+        .map(|metadata| metadata.len())
+        .sum();
+    (files, bytes)
+}
+
+/// Past `budget_mib` ([`GRADED_BUILD_BUDGET_MIB`]), the reason, once the
+/// graded packages' files are removed again (the build folder is shared
+/// by a class: they would stay there).
+fn over_budget(messages: &str, root: &Path, what: &str, budget_mib: u64) -> Option<String> {
+    let (files, bytes) = graded_artifacts(messages, root);
+    if bytes <= budget_mib << 20 {
+        return None;
+    }
+    for file in &files {
+        let _ = std::fs::remove_file(file);
+    }
+    Some(format!(
+        "the build of {what} made {} MiB of programs and libraries from the graded code, more than the {budget_mib} MiB a grade may keep (a large initialised static copied into every test program?); they were removed",
+        bytes >> 20
+    ))
 }
 
 /// The integration-test executables among cargo's JSON messages, of the
@@ -449,6 +509,53 @@ not json
         let names: Vec<&str> = binaries.iter().map(|b| b.name.as_str()).collect();
         assert_eq!(names, ["dda", "wu"]);
         assert_eq!(binaries[0].executable, Path::new("/t/dda-3"));
+    }
+
+    #[test]
+    fn the_graded_code_s_programs_past_the_budget_are_removed_with_the_reason() {
+        let dir = std::env::temp_dir().join(format!("budget-{}", std::process::id()));
+        let deps = dir.join("target/debug/deps");
+        std::fs::create_dir_all(&deps).unwrap();
+        let sized = |name: &str, bytes: u64| {
+            let path = deps.join(name);
+            std::fs::File::create(&path)
+                .unwrap()
+                .set_len(bytes)
+                .unwrap();
+            path
+        };
+        // Two test programs of the graded package, 3 MiB in all, and a
+        // dependency's library of 5 MiB that is no part of the count.
+        let dda = sized("dda-1", 2 << 20);
+        let wu = sized("wu-2", 1 << 20);
+        let glam = sized("libglam-3.rlib", 5 << 20);
+        let message = |manifest: &str, file: &Path| {
+            format!(
+                r#"{{"reason":"compiler-artifact","manifest_path":"{manifest}","filenames":["{}"],"executable":null}}"#,
+                file.display()
+            )
+        };
+        let graded = dir.join("exercises/01-lines/Cargo.toml");
+        let messages = [
+            message(&graded.to_string_lossy(), &dda),
+            message(&graded.to_string_lossy(), &wu),
+            message("/registry/glam/Cargo.toml", &glam),
+        ]
+        .join("\n");
+        assert_eq!(graded_artifacts(&messages, &dir).1, 3 << 20);
+        assert_eq!(over_budget(&messages, &dir, "01-lines", 3), None);
+        assert!(dda.exists() && wu.exists());
+        let reason = over_budget(&messages, &dir, "01-lines", 2).unwrap();
+        assert!(
+            reason.contains("3 MiB") && reason.contains("2 MiB"),
+            "{reason}"
+        );
+        assert!(
+            !dda.exists() && !wu.exists(),
+            "the graded programs are removed"
+        );
+        assert!(glam.exists(), "the dependencies' are not");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

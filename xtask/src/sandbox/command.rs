@@ -134,9 +134,8 @@ impl Jail {
         if job.limits.cpu_s > 0 {
             script += &format!("ulimit -t {} 2>/dev/null; ", job.limits.cpu_s);
         }
-        // No file bigger than everything the job may write.
-        if job.limits.written_mib > 0 {
-            script += &format!("ulimit -f {} 2>/dev/null; ", job.limits.written_mib * 2048);
+        if job.limits.file_mib > 0 {
+            script += &format!("ulimit -f {} 2>/dev/null; ", job.limits.file_mib * 2048);
         }
         script += "exec \"$@\"";
         if let (Some(seccomp), true) = (&self.seccomp, self.sandboxed()) {

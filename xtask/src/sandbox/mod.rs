@@ -140,6 +140,9 @@ pub struct Limits {
     pub processes: u64,
     /// Bytes in all its writable folders and its `/tmp` together, in MiB.
     pub written_mib: u64,
+    /// The largest file any of its processes may write, in MiB (0: no
+    /// limit); a process writing past it is ended by `SIGXFSZ`.
+    pub file_mib: u64,
     /// Bytes of output (stdout and stderr) before it is stopped.
     pub output: u64,
     /// CPU seconds each process may take; 0: no limit but the time.
@@ -156,6 +159,7 @@ impl Limits {
             memory_mib: if memory_mib == 0 { 4096 } else { memory_mib },
             processes: 256,
             written_mib: 1024,
+            file_mib: 1024,
             output: 64 << 20,
             cpu_s: 0,
         }
@@ -165,8 +169,11 @@ impl Limits {
     /// (rustc on the whole course needs about 2; a `const` array past it
     /// stops rustc at once with "tried to allocate more memory than
     /// available to compiler"), as many processes as a
-    /// parallel build starts, its build folder's growth unmeasured (it is
-    /// the dependencies' too) and 64 MiB of compiler messages.
+    /// parallel build starts, its build folder's growth unmeasured while
+    /// it runs (it is the dependencies' too; the graded code's share is
+    /// counted when it ends, see `grade::build`), no file over 1 GiB (the
+    /// course's largest test program is some 40 MiB) and 64 MiB of
+    /// compiler messages.
     #[must_use]
     pub fn build(time: Duration) -> Self {
         Self {
@@ -174,6 +181,7 @@ impl Limits {
             memory_mib: 8192,
             processes: 1024,
             written_mib: 0,
+            file_mib: 1024,
             output: 64 << 20,
             cpu_s: 0,
         }
@@ -549,6 +557,8 @@ impl Jail {
         // A file past the size limit (`ulimit -f`) ends its writer with
         // SIGXFSZ before the count of the written bytes sees it.
         if exit.signal == Some(SIGXFSZ) && job.limits.written_mib > 0 {
+            // (A build's compiler ended so is reported by cargo: see
+            // `grade::build`.)
             exit.written_limit = Some(job.limits.written_mib);
         }
         Ok(Ended { exit, duration })

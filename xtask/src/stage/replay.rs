@@ -251,12 +251,27 @@ mod tests {
     fn a_replay_reads_the_graded_shaders_and_only_its_own_rust() {
         let text = |t: &str| Source::Text(t.as_bytes().to_vec());
         let files: Files = vec![
-            ("exercises/10-gpu/src/control.wgsl".into(), text("student's wgsl")),
-            ("exercises/10-gpu/src/domain.rs".into(), text("student's rust")),
-            ("exercises/10-gpu/tests/data.txt".into(), text("student's test data")),
-            ("replay/10-gpu/src/control.wgsl".into(), text("course's wgsl")),
+            (
+                "exercises/10-gpu/src/control.wgsl".into(),
+                text("student's wgsl"),
+            ),
+            (
+                "exercises/10-gpu/src/domain.rs".into(),
+                text("student's rust"),
+            ),
+            (
+                "exercises/10-gpu/tests/data.txt".into(),
+                text("student's test data"),
+            ),
+            (
+                "replay/10-gpu/src/control.wgsl".into(),
+                text("course's wgsl"),
+            ),
             ("replay/10-gpu/src/domain.rs".into(), text("course's rust")),
-            ("replay/10-gpu/tests/data.txt".into(), text("course's test data")),
+            (
+                "replay/10-gpu/tests/data.txt".into(),
+                text("course's test data"),
+            ),
         ];
         let staged = with_graded_data(&files);
         let at = |path: &str| {
