@@ -315,6 +315,12 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     let stdout = logs.join(scene.file).with_extension("out");
     let stderr = logs.join(scene.file).with_extension("err");
     let mut args: Vec<OsString> = scene.args.iter().map(OsString::from).collect();
+    // A pipeline topic not graded in this run (or not in this edition) is
+    // drawn by the course's given stand-in, so the picture shows what the
+    // graded stages did; a graded topic that does not compile stays out.
+    for topic in MESH_TOPICS.iter().filter(|t| !plan.graded.contains(t)) {
+        args.extend([OsString::from("--given"), OsString::from(topic)]);
+    }
     args.extend(["--size", SIZE, "--time-limit", "25", "--screenshot"].map(OsString::from));
     args.push(scratch.join(scene.file).into());
     let job = Job {

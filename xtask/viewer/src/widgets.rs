@@ -142,7 +142,7 @@ pub(crate) fn unit_to_screen(area: egui::Rect, p: glam::DVec2) -> egui::Pos2 {
 pub(crate) fn status_colour(status: &Status) -> Color32 {
     match status {
         Status::Ok => Color32::LIGHT_GREEN,
-        Status::Unused | Status::NotReached => Color32::GRAY,
+        Status::Unused | Status::NotReached | Status::Given => Color32::GRAY,
         Status::NotYet(_) => Color32::YELLOW,
         Status::Missing | Status::Panicked(_) | Status::Failed(_) => Color32::LIGHT_RED,
     }

@@ -190,6 +190,52 @@ fn a_panicking_depth_test_is_named_and_a_missing_topic_too() {
     assert!(frame.canvas.pixels_not(Rgba::BLACK).is_empty());
 }
 
+#[test]
+fn stages_of_topics_not_in_the_edition_are_drawn_by_the_given_code_and_say_so() {
+    let given: Vec<String> = ["04-clipping", "01-lines", "03-fill", "05-buffers"]
+        .map(String::from)
+        .to_vec();
+    let mesh = mesh("torus.ply");
+    // Without clipping, the given code draws what the course's own small
+    // rasterizer draws (the same band, coverage and `LESS`).
+    let settings = Settings {
+        mode: Mode::Fill,
+        clip: false,
+        ..Settings::default()
+    };
+    let frame = render(&mesh, &settings, &Stages::default().with_given(&given));
+    assert_eq!(
+        statuses(&frame.stages),
+        vec![
+            ("clipping", Status::Unused),
+            ("lines", Status::Unused),
+            ("fill", Status::Given),
+            ("depth test", Status::Given),
+        ]
+    );
+    let expected = by_the_course(&mesh, &settings);
+    assert!(frame.canvas.pixels_not(Rgba::BLACK).len() > 20_000);
+    assert!(
+        differing_fraction(&frame.canvas, &expected) < 0.001,
+        "the given stand-ins draw the course's picture"
+    );
+    // A topic that is not given (it is graded and does not compile) stays
+    // missing and draws nothing.
+    let stages = Stages::default().with_given(&given[..1]);
+    let frame = render(&mesh, &Settings::default(), &stages);
+    assert_eq!(frame.stages[0].status, Status::Given);
+    let frame = render(
+        &mesh,
+        &Settings {
+            mode: Mode::Fill,
+            ..Settings::default()
+        },
+        &stages,
+    );
+    assert_eq!(frame.stages[2].status, Status::Missing);
+    assert!(frame.canvas.pixels_not(Rgba::BLACK).is_empty());
+}
+
 /// The report's expected pictures are what the solutions draw (this suite
 /// runs with them staged): regenerate them with `cargo xtask view
 /// --reference -- --screenshot xtask/viewer/expected/<file> --size 200 ...`

@@ -79,7 +79,7 @@ fn clipped_polygons_are_outlined_by_the_window_without_your_lines() {
     settle(&mut harness);
     harness.get_by_label("clipping: ok");
     harness.get_by_label(
-        "lines: left out: its topic is not in this build (it does not compile, or was not graded with it)",
+        "lines: left out: its topic is not in this build (not in this edition, not graded in this run, or it does not compile)",
     );
     let frame = harness.state().frame().unwrap();
     assert!(!frame.clipped.is_empty());

@@ -114,6 +114,22 @@ pub struct Stage<F: ?Sized> {
     pub source: &'static str,
     /// The code; `None` when its topic is not part of the build.
     pub run: Option<Arc<F>>,
+    /// The course's given stand-in, which the pipeline scene draws with
+    /// where the stage's topic is not in this edition (or not graded in
+    /// this run): see [`Stages::with_given`].
+    pub given: Option<Arc<F>>,
+}
+
+impl<F: ?Sized> Stage<F> {
+    /// A stage without code.
+    const fn missing(name: &'static str, source: &'static str) -> Self {
+        Self {
+            name,
+            source,
+            run: None,
+            given: None,
+        }
+    }
 }
 
 impl<F: ?Sized> Clone for Stage<F> {
@@ -122,6 +138,7 @@ impl<F: ?Sized> Clone for Stage<F> {
             name: self.name,
             source: self.source,
             run: self.run.clone(),
+            given: self.given.clone(),
         }
     }
 }
@@ -167,86 +184,125 @@ pub struct Stages {
 impl Default for Stages {
     fn default() -> Self {
         Self {
-            clip: Stage {
-                name: "clipping",
-                source: "04-clipping · clip_planes::clip_planes, sutherland_hodgman::clip_polygon",
-                run: None,
-            },
-            line: Stage {
-                name: "lines",
-                source: "01-lines · dda::dda_line",
-                run: None,
-            },
-            fill: Stage {
-                name: "fill",
-                source: "03-fill · edge_function::fill_triangle",
-                run: None,
-            },
-            depth: Stage {
-                name: "depth test",
-                source: "05-buffers · zbuffer::depth_test",
-                run: None,
-            },
-            midpoint: Stage {
-                name: "midpoint line",
-                source: "01-lines · midpoint::midpoint_line",
-                run: None,
-            },
-            wu: Stage {
-                name: "Wu line",
-                source: "01-lines · wu::wu_line_traced (through the given wu::wu_line)",
-                run: None,
-            },
-            circle: Stage {
-                name: "midpoint circle",
-                source: "02-circles · midpoint_circle::midpoint_circle",
-                run: None,
-            },
-            curve: Stage {
-                name: "de Casteljau",
-                source: "07-bezier · de_casteljau::de_casteljau",
-                run: None,
-            },
-            nurbs: Stage {
-                name: "NURBS curve",
-                source: "08-nurbs · NurbsCurve::point (find_span, basis_funs)",
-                run: None,
-            },
-            decompose: Stage {
-                name: "decomposition",
-                source: "08-nurbs · NurbsSurface::decompose (insert_knot_u, insert_knot_v)",
-                run: None,
-            },
-            surface: Stage {
-                name: "surface",
-                source: "07-bezier · surface::partial_derivatives, surface::normal",
-                run: None,
-            },
-            trim: Stage {
-                name: "trim",
-                source: "07-bezier · simple_trim, newton_trim",
-                run: None,
-            },
-            surface_render: Stage {
-                name: "render",
-                source: "07-bezier · render::render_surface, render::phong",
-                run: None,
-            },
-            tessellate: Stage {
-                name: "tessellation",
-                source: "09-tessellation · uniform, per_patch, fully_adaptive, edge_tests",
-                run: None,
-            },
-            gpu: Stage {
-                name: "GPU passes",
-                source: "10-gpu-tessellation · control, domain, evaluation, shading, trimming",
-                run: None,
-            },
+            clip: Stage::missing(
+                "clipping",
+                "04-clipping · clip_planes::clip_planes, sutherland_hodgman::clip_polygon",
+            ),
+            line: Stage::missing("lines", "01-lines · dda::dda_line"),
+            fill: Stage::missing("fill", "03-fill · edge_function::fill_triangle"),
+            depth: Stage::missing("depth test", "05-buffers · zbuffer::depth_test"),
+            midpoint: Stage::missing("midpoint line", "01-lines · midpoint::midpoint_line"),
+            wu: Stage::missing(
+                "Wu line",
+                "01-lines · wu::wu_line_traced (through the given wu::wu_line)",
+            ),
+            circle: Stage::missing(
+                "midpoint circle",
+                "02-circles · midpoint_circle::midpoint_circle",
+            ),
+            curve: Stage::missing("de Casteljau", "07-bezier · de_casteljau::de_casteljau"),
+            nurbs: Stage::missing(
+                "NURBS curve",
+                "08-nurbs · NurbsCurve::point (find_span, basis_funs)",
+            ),
+            decompose: Stage::missing(
+                "decomposition",
+                "08-nurbs · NurbsSurface::decompose (insert_knot_u, insert_knot_v)",
+            ),
+            surface: Stage::missing(
+                "surface",
+                "07-bezier · surface::partial_derivatives, surface::normal",
+            ),
+            trim: Stage::missing("trim", "07-bezier · simple_trim, newton_trim"),
+            surface_render: Stage::missing(
+                "render",
+                "07-bezier · render::render_surface, render::phong",
+            ),
+            tessellate: Stage::missing(
+                "tessellation",
+                "09-tessellation · uniform, per_patch, fully_adaptive, edge_tests",
+            ),
+            gpu: Stage::missing(
+                "GPU passes",
+                "10-gpu-tessellation · control, domain, evaluation, shading, trimming",
+            ),
         }
     }
 }
 
+/// The topics of the pipeline scene's four stages.
+pub const CLIP_TOPIC: &str = "04-clipping";
+/// See [`CLIP_TOPIC`].
+pub const LINE_TOPIC: &str = "01-lines";
+/// See [`CLIP_TOPIC`].
+pub const FILL_TOPIC: &str = "03-fill";
+/// See [`CLIP_TOPIC`].
+pub const DEPTH_TOPIC: &str = "05-buffers";
+
 impl Stages {
+    /// These stages, and for each pipeline stage whose topic is among
+    /// `topics` (those not in this edition, or not graded in this run) and
+    /// not built in, the course's given code to draw with instead: polygons
+    /// leaving the view volume dropped whole (`scene::pipeline::discard_outside`),
+    /// the one-pixel band for lines, the coverage of `scene::raster` for
+    /// triangles, a `LESS` depth test. So a student of topic 05 alone sees
+    /// the torus drawn through their own depth test.
+    #[must_use]
+    pub fn with_given(mut self, topics: &[String]) -> Self {
+        let absent = |topic: &str| topics.iter().any(|t| t == topic);
+        if absent(CLIP_TOPIC) {
+            self.clip.given = Some(Arc::new(|polygon: &[ClipVertex]| {
+                Ok(scene::pipeline::discard_outside(&[polygon.to_vec()])
+                    .pop()
+                    .unwrap_or_default())
+            }));
+        }
+        if absent(LINE_TOPIC) {
+            self.line.given = Some(Arc::new(
+                |from: &Vertex, to: &Vertex, plot: &mut dyn FnMut(Fragment)| {
+                    let everywhere = Viewport::new(
+                        -canvas::MAX_COORD,
+                        -canvas::MAX_COORD,
+                        canvas::MAX_COORD,
+                        canvas::MAX_COORD,
+                    );
+                    scene::raster::band(*from, *to, everywhere, plot);
+                },
+            ));
+        }
+        if absent(FILL_TOPIC) {
+            self.fill.given = Some(Arc::new(
+                |vertices: [Vertex; 3],
+                 viewport: Viewport,
+                 plot: &mut dyn FnMut(Fragment, [i128; 3])| {
+                    let corners = vertices.map(|v| v.position.as_dvec2());
+                    scene::raster::cover(corners, viewport, |pixel, l| {
+                        let depth: f64 = (0..3).map(|k| l[k] * f64::from(vertices[k].depth)).sum();
+                        let colour = vertices[0].colour * l[0] as f32
+                            + vertices[1].colour * l[1] as f32
+                            + vertices[2].colour * l[2] as f32;
+                        let fragment = Fragment {
+                            pixel,
+                            depth: depth as f32,
+                            colour,
+                        };
+                        plot(fragment, [0; 3]);
+                    });
+                },
+            ));
+        }
+        if absent(DEPTH_TOPIC) {
+            self.depth.given = Some(Arc::new(|canvas: &mut Canvas, fragment: Fragment| {
+                let passes = canvas
+                    .depth(fragment.pixel)
+                    .is_some_and(|stored| fragment.depth < stored);
+                scene::raster::depth_test(canvas, fragment);
+                passes
+            }));
+        }
+        self
+    }
+
     /// Your stages: those of every topic this build holds.
     #[must_use]
     pub fn yours() -> Self {

@@ -14,6 +14,9 @@ pub enum Status {
     Ok,
     /// Its topic is not part of the build (it does not compile).
     Missing,
+    /// Drawn by the course's given stand-in: its topic is not in this
+    /// edition, or not graded in this run.
+    Given,
     /// It reached a `todo!()`: the message.
     NotYet(String),
     /// It panicked: the message.
@@ -36,8 +39,12 @@ impl Status {
             Self::Unused => "not used by this picture".to_owned(),
             Self::NotReached => "not reached: nothing came through the stages before it".to_owned(),
             Self::Ok => "ok".to_owned(),
+            Self::Given => {
+                "drawn by the course's given stand-in: its topic is not in this edition (or not graded in this run)"
+                    .to_owned()
+            }
             Self::Missing => {
-                "left out: its topic is not in this build (it does not compile, or was not graded with it)"
+                "left out: its topic is not in this build (not in this edition, not graded in this run, or it does not compile)"
                     .to_owned()
             }
             Self::NotYet(message) => format!("not written yet: {message}"),
