@@ -514,7 +514,7 @@ not json
     #[test]
     fn the_graded_code_s_programs_past_the_budget_are_removed_with_the_reason() {
         let dir = std::env::temp_dir().join(format!("budget-{}", std::process::id()));
-        let deps = dir.join("target/debug/deps");
+        let deps = dir.join("target").join("debug").join("deps");
         std::fs::create_dir_all(&deps).unwrap();
         let sized = |name: &str, bytes: u64| {
             let path = deps.join(name);
@@ -529,17 +529,21 @@ not json
         let dda = sized("dda-1", 2 << 20);
         let wu = sized("wu-2", 1 << 20);
         let glam = sized("libglam-3.rlib", 5 << 20);
-        let message = |manifest: &str, file: &Path| {
-            format!(
-                r#"{{"reason":"compiler-artifact","manifest_path":"{manifest}","filenames":["{}"],"executable":null}}"#,
-                file.display()
-            )
+        // (JSON written by serde: Windows paths hold backslashes.)
+        let message = |manifest: &Path, file: &Path| {
+            serde_json::json!({
+                "reason": "compiler-artifact",
+                "manifest_path": manifest,
+                "filenames": [file],
+                "executable": null,
+            })
+            .to_string()
         };
-        let graded = dir.join("exercises/01-lines/Cargo.toml");
+        let graded = dir.join("exercises").join("01-lines").join("Cargo.toml");
         let messages = [
-            message(&graded.to_string_lossy(), &dda),
-            message(&graded.to_string_lossy(), &wu),
-            message("/registry/glam/Cargo.toml", &glam),
+            message(&graded, &dda),
+            message(&graded, &wu),
+            message(Path::new("/registry/glam/Cargo.toml"), &glam),
         ]
         .join("\n");
         assert_eq!(graded_artifacts(&messages, &dir).1, 3 << 20);
