@@ -81,8 +81,9 @@ fn check_batches(
         if minor.to_bits() != expected.to_bits() {
             return Err(format!(
                 "column {major}: the lane holds minor = {minor:?}, the closed form \
-                 from.minor + slope · (X − from.major) gives {expected:?} \
-                 (a running sum `minor += slope` drifts off it in the last bits)"
+                 from.minor + slope · (X − from.major) gives {expected:?}, with \
+                 slope = f64(Δminor) / f64(Δmajor) and Δ = to − from taken in f32 \
+                 (a running sum, or differences taken in f64, differ in the last bits)"
             ));
         }
         let rounded = expected.round() as i32;

@@ -13,7 +13,56 @@ use testkit::assert_pixels_eq;
 use testkit::strategies::{hostile_pixel, pixel};
 
 fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
-    collect(|plot| midpoint_circle(centre, radius, plot))
+    collect(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {}))
+}
+
+/// The decisions `midpoint_circle` reports: `(x, y, d)` before each step.
+fn decisions(centre: Pixel, radius: i32) -> Vec<(i32, i32, f64)> {
+    let mut reported = Vec::new();
+    midpoint_circle(centre, radius, |_| {}, |x, y, d| reported.push((x, y, d)));
+    reported
+}
+
+/// The decisions by the definition: at every pixel `(x, y)` of the second
+/// octant with `y > x`, `F(x + 1, y − ½) = (x + 1)² + (y − ½)² − R²`,
+/// computed in integers as a quarter of `4(x + 1)² + (2y − 1)² − 4R²`
+/// (exact in an `f64`).
+fn decisions_by_definition(radius: i32) -> Vec<(i32, i32, f64)> {
+    let r = i64::from(radius);
+    second_octant(radius)
+        .into_iter()
+        .filter(|&(x, y)| y > x)
+        .map(|(x, y)| {
+            let quarters = 4 * (x + 1) * (x + 1) + (2 * y - 1) * (2 * y - 1) - 4 * r * r;
+            (x as i32, y as i32, quarters as f64 / 4.0)
+        })
+        .collect()
+}
+
+/// The first difference between the decisions reported and expected, in
+/// words.
+fn first_wrong_decision(
+    yours: &[(i32, i32, f64)],
+    expected: &[(i32, i32, f64)],
+) -> Option<String> {
+    for (k, (y, e)) in yours.iter().zip(expected).enumerate() {
+        if y.0 != e.0 || y.1 != e.1 || y.2.to_bits() != e.2.to_bits() {
+            return Some(format!(
+                "decision {k}: you reported d = {} at ({}, {}), the midpoint rule decides \
+                 with d = F(x + 1, y − ½) = {} at ({}, {}) (F = x² + y² − R², d starts at \
+                 5/4 − R and grows by 2x + 3 after E, 2(x − y) + 5 after SE)",
+                y.2, y.0, y.1, e.2, e.0, e.1
+            ));
+        }
+    }
+    (yours.len() != expected.len()).then(|| {
+        format!(
+            "you reported {} decisions, the walk takes {}: one at every pixel of the \
+             second octant with y > x, before the step from it",
+            yours.len(),
+            expected.len()
+        )
+    })
 }
 
 fn points(centre: Pixel, x: i32, y: i32) -> Vec<Pixel> {
@@ -112,9 +161,37 @@ fn radius_8_follows_the_slides_step_by_step() {
 }
 
 #[testkit::test]
+fn the_decision_variable_follows_the_slides_by_hand() {
+    // The traces above: d at each pixel before its step.
+    let traces: [(i32, &[(i32, i32, f64)]); 5] = [
+        (0, &[]),
+        (1, &[(0, 1, 0.25)]),
+        (2, &[(0, 2, -0.75), (1, 2, 2.25)]),
+        (5, &[(0, 5, -3.75), (1, 5, -0.75), (2, 5, 4.25), (3, 4, 3.25)]),
+        (
+            8,
+            &[
+                (0, 8, -6.75),
+                (1, 8, -3.75),
+                (2, 8, 1.25),
+                (3, 7, -5.75),
+                (4, 7, 3.25),
+                (5, 6, 2.25),
+            ],
+        ),
+    ];
+    for (radius, expected) in traces {
+        let yours = decisions(Pixel::new(4, -2), radius);
+        if let Some(wrong) = first_wrong_decision(&yours, expected) {
+            panic!("midpoint_circle((4, -2), {radius}): {wrong}");
+        }
+    }
+}
+
+#[testkit::test]
 fn circles_of_small_radii() {
     let sheet = radius_sheet(&[0, 1, 2, 3, 5, 8], |c, r, canvas| {
-        midpoint_circle(c, r, |p| canvas.set(p, INK))
+        midpoint_circle(c, r, |p| canvas.set(p, INK), |_, _, _| {})
     });
     testkit::insta::assert_snapshot!("circles_of_small_radii", sheet);
 }
@@ -134,7 +211,7 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
     ] {
         assert_eq!(
-            count(|plot| midpoint_circle(centre, radius, plot)),
+            count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {})),
             0,
             "midpoint_circle({centre}, {radius})"
         );
@@ -161,11 +238,16 @@ fn huge_radius_is_still_exact() {
     let radius = 10_313_530;
     let centre = Pixel::new(0, 0);
     let mut yours = Vec::new();
-    midpoint_circle(centre, radius, |p| {
-        if (0..COLUMNS).contains(&p.x) && p.x <= p.y {
-            yours.push(p);
-        }
-    });
+    midpoint_circle(
+        centre,
+        radius,
+        |p| {
+            if (0..COLUMNS).contains(&p.x) && p.x <= p.y {
+                yours.push(p);
+            }
+        },
+        |_, _, _| {},
+    );
     let r = i64::from(radius);
     let expected: Vec<Pixel> = (0..i64::from(COLUMNS))
         .map(|x| Pixel::new(x as i32, circle_row(r, x) as i32))
@@ -184,6 +266,14 @@ proptest! {
     fn pixels_are_the_nearest_in_each_column_of_the_second_octant(centre in pixel(50), radius in 0..120) {
         let yours = circle(centre, radius);
         assert_pixels_eq(&circle_pixels(centre, radius), &yours, &format!("midpoint_circle({centre}, {radius})"));
+    }
+
+    #[testkit::test]
+    fn each_decision_is_f_at_the_midpoint_before_the_step(centre in pixel(1000), radius in 0..3000) {
+        let yours = decisions(centre, radius);
+        if let Some(wrong) = first_wrong_decision(&yours, &decisions_by_definition(radius)) {
+            prop_assert!(false, "midpoint_circle({}, {}): {}", centre, radius, wrong);
+        }
     }
 
     #[testkit::test]
@@ -246,7 +336,7 @@ proptest! {
         let centre = Pixel::new(if sx { far } else { -far }, if sy { far } else { -far });
         assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
         let over = Pixel::new(centre.x, if sy { far + slack + 1 } else { -far - slack - 1 });
-        prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot)), 0, "midpoint_circle({}, {}) reaches beyond MAX_COORD", over, radius);
+        prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) reaches beyond MAX_COORD", over, radius);
     }
 
     #[testkit::test]
@@ -257,9 +347,9 @@ proptest! {
         if within_limits(centre, radius, radius) && radius < 1000 {
             assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
         } else if !within_limits(centre, radius, radius) {
-            prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot)), 0, "midpoint_circle({}, {}) must draw nothing", centre, radius);
+            prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) must draw nothing", centre, radius);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| midpoint_circle(Pixel::new(0, 0), 3, plot)) > 0, "midpoint_circle((0, 0), 3) drew nothing");
+        prop_assert!(count(|plot| midpoint_circle(Pixel::new(0, 0), 3, plot, |_, _, _| {})) > 0, "midpoint_circle((0, 0), 3) drew nothing");
     }
 }

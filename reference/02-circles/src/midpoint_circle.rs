@@ -55,7 +55,10 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 }
 
 /// Rasterizes the circle of `radius` around `centre` with the midpoint
-/// algorithm and calls `plot` once per pixel, in no particular order.
+/// algorithm and calls `plot` once per pixel, in no particular order; at
+/// every pixel `(x, y)` of the second octant with `y > x` it reports the
+/// decision it is about to take, `decide(x, y, d)` (offsets from the
+/// centre), before it steps on from there.
 ///
 /// With offsets `(x, y)` from the centre the circle is
 /// `F(x, y) = x² + y² − R² = 0`, negative inside and positive outside. The
@@ -70,7 +73,11 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 /// ```
 ///
 /// - `d` starts at `F(1, R − ½) = 5/4 − R`; both increments use `x` and `y`
-///   before the step; the walk goes on while `y > x`.
+///   before the step; the walk goes on while `y > x`. The `d` reported at
+///   `(x, y)` is `F(x + 1, y − ½)`, the value that decides the step from
+///   there (the tests check it against that closed form and the slides'
+///   traces, so a circle found another way, `round(√(R² − x²))` per
+///   column, say, shows in it).
 /// - The decision variable is an `f64`, as the slides' "float!" asks. It
 ///   is always an integer plus ¼, so it is never 0 (no midpoint lies on
 ///   the circle) and an `f64` holds it exactly: this version decides
@@ -85,8 +92,13 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 ///   beyond ±[`MAX_COORD`] (`|centre.x| + radius > MAX_COORD`, or the same
 ///   for y), plots nothing.
 #[transcript::task]
-pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
-    // BEGIN SOLUTION midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64
+pub fn midpoint_circle(
+    centre: Pixel,
+    radius: i32,
+    mut plot: impl FnMut(Pixel),
+    mut decide: impl FnMut(i32, i32, f64),
+) {
+    // BEGIN SOLUTION midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64, reporting (x, y, d) before each step
     let reach = |c: i32| i64::from(c).abs() + i64::from(radius);
     if radius < 0
         || reach(centre.x) > i64::from(MAX_COORD)
@@ -98,6 +110,7 @@ pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) 
     let mut d = 1.25 - f64::from(radius);
     circle_points(centre, x, y, &mut plot);
     while y > x {
+        decide(x, y, d);
         if d < 0.0 {
             d += 2.0 * f64::from(x) + 3.0;
         } else {

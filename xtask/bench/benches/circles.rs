@@ -46,7 +46,7 @@ fn circle_set() -> Vec<Circle> {
 fn pixel_count(circles: &[Circle]) -> u64 {
     let mut count = 0;
     for c in circles {
-        midpoint_circle(c.centre, c.radius, |_| count += 1);
+        midpoint_circle(c.centre, c.radius, |_| count += 1, |_, _, _| {});
     }
     count
 }
@@ -59,7 +59,12 @@ fn hollow(c: &mut Criterion) {
     group.bench_function("reference midpoint_circle", |b| {
         b.iter(|| {
             for c in &circles {
-                midpoint_circle(c.centre, c.radius, |p| canvas.set(p, Rgba::WHITE));
+                midpoint_circle(
+                    c.centre,
+                    c.radius,
+                    |p| canvas.set(p, Rgba::WHITE),
+                    |_, _, _| {},
+                );
             }
             black_box(&canvas);
         });

@@ -338,7 +338,7 @@ impl Stages {
         {
             stages.circle.run = Some(Arc::new(
                 |centre: Pixel, radius: i32, plot: &mut dyn FnMut(Pixel)| {
-                    circles::midpoint_circle::midpoint_circle(centre, radius, plot);
+                    circles::midpoint_circle::midpoint_circle(centre, radius, plot, |_, _, _| {});
                 },
             ));
         }
