@@ -50,9 +50,10 @@ pub fn filter(distance: f64) -> f32 {
 }
 
 /// Draws the antialiased line from `from` to `to` and calls
-/// `plot(pixel, intensity)` for three pixels per column of the major axis:
-/// the midpoint line's pixel and its two neighbours across the line, each
-/// with the intensity [`filter`] gives for its distance to the line.
+/// `plot(pixel, intensity)` for three pixels per column of the major axis,
+/// in this order: the midpoint line's pixel first, then its two neighbours
+/// across the line (along the minor axis), each with the intensity
+/// [`filter`] gives for its distance to the line.
 ///
 /// ```text
 ///        · ·  ■ above: D = |v − 1|·cos θ

@@ -58,8 +58,10 @@ pub struct Batch {
 ///   shorter).
 /// - Every lane is the closed form of the module documentation:
 ///   `minor = f64(from.minor) + slope · (f64(major) − f64(from.major))`
-///   with `slope = f64(Δminor) / f64(Δmajor)`, evaluated exactly so (the
-///   tests compare it bit for bit; a running sum differs in the last bits).
+///   with `slope = f64(Δminor) / f64(Δmajor)`, where `Δ = to − from` is
+///   taken in `f32` (the positions' type) and then widened, evaluated
+///   exactly so (the tests compare it bit for bit; a running sum, or the
+///   differences taken in `f64`, differ in the last bits).
 ///   The pixel is `(major, round(minor))`, swapped back for a steep line.
 /// - Colour and depth are mixed with `t = clamp((major − from.major) /
 ///   Δmajor, 0, 1)` in `f32`, as in task 1.

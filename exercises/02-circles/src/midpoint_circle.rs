@@ -41,7 +41,10 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 }
 
 /// Rasterizes the circle of `radius` around `centre` with the midpoint
-/// algorithm and calls `plot` once per pixel, in no particular order.
+/// algorithm and calls `plot` once per pixel, in no particular order; at
+/// every pixel `(x, y)` of the second octant with `y > x` it reports the
+/// decision it is about to take, `decide(x, y, d)` (offsets from the
+/// centre), before it steps on from there.
 ///
 /// With offsets `(x, y)` from the centre the circle is
 /// `F(x, y) = x² + y² − R² = 0`, negative inside and positive outside. The
@@ -56,7 +59,11 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 /// ```
 ///
 /// - `d` starts at `F(1, R − ½) = 5/4 − R`; both increments use `x` and `y`
-///   before the step; the walk goes on while `y > x`.
+///   before the step; the walk goes on while `y > x`. The `d` reported at
+///   `(x, y)` is `F(x + 1, y − ½)`, the value that decides the step from
+///   there (the tests check it against that closed form and the slides'
+///   traces, so a circle found another way, `round(√(R² − x²))` per
+///   column, say, shows in it).
 /// - The decision variable is an `f64`, as the slides' "float!" asks. It
 ///   is always an integer plus ¼, so it is never 0 (no midpoint lies on
 ///   the circle) and an `f64` holds it exactly: this version decides
@@ -71,8 +78,15 @@ pub fn circle_points(centre: Pixel, x: i32, y: i32, plot: &mut impl FnMut(Pixel)
 ///   beyond ±[`MAX_COORD`] (`|centre.x| + radius > MAX_COORD`, or the same
 ///   for y), plots nothing.
 #[transcript::task]
-pub fn midpoint_circle(centre: Pixel, radius: i32, mut plot: impl FnMut(Pixel)) {
+pub fn midpoint_circle(
+    centre: Pixel,
+    radius: i32,
+    mut plot: impl FnMut(Pixel),
+    mut decide: impl FnMut(i32, i32, f64),
+) {
     // Unused until you write the body:
-    let _ = (&centre, &radius, &mut plot);
-    todo!("midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64")
+    let _ = (&centre, &radius, &mut plot, &mut decide);
+    todo!(
+        "midpoint_circle: step E or SE from (0, R) while y > x, d = 5/4 − R as an f64, reporting (x, y, d) before each step"
+    )
 }

@@ -12,8 +12,23 @@ use proptest::prelude::*;
 use testkit::assert_pixels_eq;
 use testkit::strategies::{hostile_pixel, pixel};
 
+/// The pixels of `midpoint_circle(centre, radius)`, once the decisions it
+/// reported are checked against the definition's (see
+/// [`first_wrong_decision`]): every test of the walk checks the walk.
 fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
-    collect(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {}))
+    let mut decided = Vec::new();
+    let pixels = collect(|plot| {
+        midpoint_circle(centre, radius, plot, |x, y, d| decided.push((x, y, d)));
+    });
+    let expected = if within_limits(centre, radius, radius) {
+        decisions_by_definition(radius)
+    } else {
+        Vec::new()
+    };
+    if let Some(wrong) = first_wrong_decision(&decided, &expected) {
+        panic!("midpoint_circle({centre}, {radius}): {wrong}");
+    }
+    pixels
 }
 
 /// The decisions `midpoint_circle` reports: `(x, y, d)` before each step.
@@ -41,10 +56,7 @@ fn decisions_by_definition(radius: i32) -> Vec<(i32, i32, f64)> {
 
 /// The first difference between the decisions reported and expected, in
 /// words.
-fn first_wrong_decision(
-    yours: &[(i32, i32, f64)],
-    expected: &[(i32, i32, f64)],
-) -> Option<String> {
+fn first_wrong_decision(yours: &[(i32, i32, f64)], expected: &[(i32, i32, f64)]) -> Option<String> {
     for (k, (y, e)) in yours.iter().zip(expected).enumerate() {
         if y.0 != e.0 || y.1 != e.1 || y.2.to_bits() != e.2.to_bits() {
             return Some(format!(
@@ -167,7 +179,10 @@ fn the_decision_variable_follows_the_slides_by_hand() {
         (0, &[]),
         (1, &[(0, 1, 0.25)]),
         (2, &[(0, 2, -0.75), (1, 2, 2.25)]),
-        (5, &[(0, 5, -3.75), (1, 5, -0.75), (2, 5, 4.25), (3, 4, 3.25)]),
+        (
+            5,
+            &[(0, 5, -3.75), (1, 5, -0.75), (2, 5, 4.25), (3, 4, 3.25)],
+        ),
         (
             8,
             &[
