@@ -31,8 +31,11 @@ fn circle(centre: Pixel, radius: i32) -> Vec<Pixel> {
     pixels
 }
 
-/// The decisions `midpoint_circle` reports: `(x, y, d)` before each step.
-fn decisions(centre: Pixel, radius: i32) -> Vec<(i32, i32, f64)> {
+/// A decision `midpoint_circle` reports: `(x, y, d)` before each step.
+type Decision = (i32, i32, f64);
+
+/// The decisions `midpoint_circle` reports.
+fn decisions(centre: Pixel, radius: i32) -> Vec<Decision> {
     let mut reported = Vec::new();
     midpoint_circle(centre, radius, |_| {}, |x, y, d| reported.push((x, y, d)));
     reported
@@ -42,7 +45,7 @@ fn decisions(centre: Pixel, radius: i32) -> Vec<(i32, i32, f64)> {
 /// octant with `y > x`, `F(x + 1, y − ½) = (x + 1)² + (y − ½)² − R²`,
 /// computed in integers as a quarter of `4(x + 1)² + (2y − 1)² − 4R²`
 /// (exact in an `f64`).
-fn decisions_by_definition(radius: i32) -> Vec<(i32, i32, f64)> {
+fn decisions_by_definition(radius: i32) -> Vec<Decision> {
     let r = i64::from(radius);
     second_octant(radius)
         .into_iter()
@@ -175,7 +178,7 @@ fn radius_8_follows_the_slides_step_by_step() {
 #[testkit::test]
 fn the_decision_variable_follows_the_slides_by_hand() {
     // The traces above: d at each pixel before its step.
-    let traces: [(i32, &[(i32, i32, f64)]); 5] = [
+    let traces: [(i32, &[Decision]); 5] = [
         (0, &[]),
         (1, &[(0, 1, 0.25)]),
         (2, &[(0, 2, -0.75), (1, 2, 2.25)]),
