@@ -219,6 +219,22 @@ mod linux {
             )),
         );
 
+        // Threads without end: right only if 300 could be started at once
+        // (the limit is 256 processes and threads together).
+        let threads = "    let started: Vec<_> = (0..300).map(|_| std::thread::Builder::new()\n\
+             .spawn(|| std::thread::sleep(std::time::Duration::from_secs(2)))).collect();\n\
+             let refused = started.iter().filter(|s| s.is_err()).count();\n\
+             assert_eq!(refused, 0, \"{refused} of 300 threads were refused\");";
+        member(
+            official,
+            class,
+            "many-threads",
+            Some(&ops(
+                &format!("{threads}\n    x * 2"),
+                &format!("{threads}\n    -x"),
+            )),
+        );
+
         // Links without end where the grader lists a test's pictures; right.
         let loops = "    for dir in [std::env::var(\"TESTKIT_OUTPUT_DIR\").unwrap(), std::env::var(\"TMPDIR\").unwrap()] {\n\
              let _ = std::fs::create_dir_all(&dir);\n\
@@ -360,6 +376,15 @@ mod linux {
         } else {
             eprintln!(
                 "not checked: no cgroup here, so the memory of a test's processes together is not limited"
+            );
+        }
+        if honest["containment"]["aggregate_limits"] == true {
+            // Refused threads past the cgroup's pids.max, and the reason
+            // says which limit.
+            let why = zero("many-threads");
+            assert!(
+                why.contains("met the limit of 256 at once"),
+                "many-threads: {why}"
             );
         }
         let looped = report("link-loop");

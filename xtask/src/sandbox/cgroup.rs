@@ -311,6 +311,19 @@ impl Cgroup {
         self.dirs.iter().map(|d| d.join("cgroup.procs")).collect()
     }
 
+    /// Whether the kernel refused it a process for its `pids.max`
+    /// (`pids.events`' `max` counter, v1 and v2 alike).
+    pub(super) fn out_of_processes(&self) -> bool {
+        fs::read_to_string(self.dir_with("pids.events").join("pids.events"))
+            .ok()
+            .and_then(|text| {
+                text.lines()
+                    .find_map(|line| line.strip_prefix("max "))
+                    .and_then(|n| n.trim().parse::<u64>().ok())
+            })
+            .is_some_and(|refused| refused > 0)
+    }
+
     /// Whether the kernel had to stop a process of it for memory (or, on
     /// v1, refused it memory).
     pub(super) fn out_of_memory(&self) -> bool {
@@ -483,6 +496,28 @@ mod tests {
         );
         fs::write(&events, "low 0\nhigh 0\nmax 12\noom 1\noom_kill 1\n").unwrap();
         assert!(cgroup.out_of_memory());
+        drop(cgroup);
+        fs::remove_dir_all(&mount).unwrap();
+    }
+
+    #[test]
+    fn a_cgroup_that_met_its_process_limit_says_so() {
+        let (mount, hierarchy) = fake_unified("pids");
+        let cgroup = Cgroup::new_in(
+            &hierarchy,
+            OWN_V2,
+            &Limits::test(Duration::from_secs(1), 64),
+        )
+        .unwrap();
+        let events = cgroup.dirs[0].join("pids.events");
+        assert!(
+            !cgroup.out_of_processes(),
+            "no events file: nothing refused"
+        );
+        fs::write(&events, "max 0\n").unwrap();
+        assert!(!cgroup.out_of_processes());
+        fs::write(&events, "max 3\n").unwrap();
+        assert!(cgroup.out_of_processes());
         drop(cgroup);
         fs::remove_dir_all(&mount).unwrap();
     }

@@ -537,6 +537,9 @@ impl Jail {
             if cgroup.out_of_memory() {
                 exit.memory_limit = Some(job.limits.memory_mib);
             }
+            if cgroup.out_of_processes() {
+                exit.process_limit = Some(job.limits.processes);
+            }
             cgroup.kill_all();
         }
         drop(cgroup);

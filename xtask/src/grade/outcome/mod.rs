@@ -67,6 +67,10 @@ pub struct Exit {
     /// The grader killed it for writing more than this many MiB of files.
     #[serde(default)]
     pub written_limit: Option<u64>,
+    /// Its processes met the limit of this many at once (a cgroup's: the
+    /// kernel refused to start more). Not a stop: a test may still pass.
+    #[serde(default)]
+    pub process_limit: Option<u64>,
 }
 
 impl Exit {
@@ -226,6 +230,12 @@ pub fn judge(output: &str, exit: &Exit, token: &str, time_limit_s: f64) -> Verdi
             ),
             None => "the test process ended before the test finished".to_owned(),
         }
+    };
+    let reason = match exit.process_limit {
+        Some(limit) => format!(
+            "{reason} (its processes met the limit of {limit} at once, and the system refused to start more: processes that start processes without end?)"
+        ),
+        None => reason,
     };
     verdict.reason = Some(reason);
     verdict
@@ -468,6 +478,17 @@ FAILED
             "out of memory (an allocation of 1099511627776 bytes failed)"
         );
         assert_eq!(reason("test a ... ", &signal(6)), "aborted (signal 6)");
+        let forked = Exit {
+            process_limit: Some(256),
+            ..exit(101)
+        };
+        assert_eq!(
+            reason(
+                "test f ... \nthread 'f' (1) panicked at src/f.rs:3:5:\nfork: Resource temporarily unavailable\n",
+                &forked
+            ),
+            "panicked: fork: Resource temporarily unavailable (its processes met the limit of 256 at once, and the system refused to start more: processes that start processes without end?)"
+        );
         assert_eq!(
             reason("test a ... ", &signal(11)),
             "crashed (signal 11, segmentation fault)"
