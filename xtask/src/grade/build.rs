@@ -161,8 +161,15 @@ impl Builder {
             None
         };
         let stdout = read(&stdout);
-        let stopped =
-            stopped.or_else(|| over_budget(&stdout, &self.root, what, GRADED_BUILD_BUDGET_MIB));
+        let stopped = stopped.or_else(|| {
+            over_budget(
+                &stdout,
+                &self.root,
+                &self.target_dir,
+                what,
+                GRADED_BUILD_BUDGET_MIB,
+            )
+        });
         Ok(CargoRun {
             success: ended.success(),
             stdout,
@@ -344,8 +351,9 @@ pub fn add_replays(
 
 /// The files cargo reports having made for the graded packages (those
 /// under `<root>/exercises/`: the student's code, not the course's given
-/// crates or replay builds), with their bytes on disk.
-fn graded_artifacts(messages: &str, root: &Path) -> (Vec<PathBuf>, u64) {
+/// crates or replay builds), with their bytes on disk. Only files in the
+/// build folder `build_dir` count: nothing else is ever removed for them.
+fn graded_artifacts(messages: &str, root: &Path, build_dir: &Path) -> (Vec<PathBuf>, u64) {
     let graded = root.join("exercises");
     let mut files: Vec<PathBuf> = messages
         .lines()
@@ -358,6 +366,12 @@ fn graded_artifacts(messages: &str, root: &Path) -> (Vec<PathBuf>, u64) {
                 .is_some_and(|manifest| manifest.starts_with(&graded))
         })
         .flat_map(|message| message.filenames.into_iter().chain(message.executable))
+        .filter(|file| {
+            file.starts_with(build_dir)
+                && !file
+                    .components()
+                    .any(|c| c == std::path::Component::ParentDir)
+        })
         .collect();
     files.sort();
     files.dedup();
@@ -372,8 +386,14 @@ fn graded_artifacts(messages: &str, root: &Path) -> (Vec<PathBuf>, u64) {
 /// Past `budget_mib` ([`GRADED_BUILD_BUDGET_MIB`]), the reason, once the
 /// graded packages' files are removed again (the build folder is shared
 /// by a class: they would stay there).
-fn over_budget(messages: &str, root: &Path, what: &str, budget_mib: u64) -> Option<String> {
-    let (files, bytes) = graded_artifacts(messages, root);
+fn over_budget(
+    messages: &str,
+    root: &Path,
+    build_dir: &Path,
+    what: &str,
+    budget_mib: u64,
+) -> Option<String> {
+    let (files, bytes) = graded_artifacts(messages, root, build_dir);
     if bytes <= budget_mib << 20 {
         return None;
     }
@@ -540,16 +560,25 @@ not json
             .to_string()
         };
         let graded = dir.join("exercises").join("01-lines").join("Cargo.toml");
+        // A file outside the build folder named as an artifact (cargo never
+        // does) is neither counted nor removed.
+        let outside = dir.join("notes.txt");
+        std::fs::File::create(&outside)
+            .unwrap()
+            .set_len(4 << 20)
+            .unwrap();
         let messages = [
             message(&graded, &dda),
             message(&graded, &wu),
+            message(&graded, &outside),
             message(Path::new("/registry/glam/Cargo.toml"), &glam),
         ]
         .join("\n");
-        assert_eq!(graded_artifacts(&messages, &dir).1, 3 << 20);
-        assert_eq!(over_budget(&messages, &dir, "01-lines", 3), None);
+        let build = dir.join("target");
+        assert_eq!(graded_artifacts(&messages, &dir, &build).1, 3 << 20);
+        assert_eq!(over_budget(&messages, &dir, &build, "01-lines", 3), None);
         assert!(dda.exists() && wu.exists());
-        let reason = over_budget(&messages, &dir, "01-lines", 2).unwrap();
+        let reason = over_budget(&messages, &dir, &build, "01-lines", 2).unwrap();
         assert!(
             reason.contains("3 MiB") && reason.contains("2 MiB"),
             "{reason}"
@@ -559,6 +588,10 @@ not json
             "the graded programs are removed"
         );
         assert!(glam.exists(), "the dependencies' are not");
+        assert!(
+            outside.exists(),
+            "nothing outside the build folder is removed"
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
