@@ -6,6 +6,8 @@
 //! centre exactly on a crossing belongs to the span starting there (left
 //! ends included, right ends excluded, as for `rectangle`).
 
+use std::ops::ControlFlow;
+
 use canvas::{Pixel, Span, Vec2, Viewport};
 
 /// Where the edge from `a` to `b` crosses the row `y`, for an edge with
@@ -32,6 +34,10 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// a row left to right, never empty, never overlapping. Before the spans
 /// of a row, `table(y, active)` reports the active edge table of that row
 /// (see below); rows with no active edge are skipped and not reported.
+/// When `table` answers [`ControlFlow::Break`], the fill ends there, before
+/// that row's spans: a caller that needs only the lowest rows (a hit test,
+/// a renderer whose window shows part of the shape) stops the walk, and
+/// the rows above cost nothing.
 ///
 /// **Crossings.** Row `y` (through the pixel centres) meets edge `a–b` when
 /// `min(a.y, b.y) ≤ y < max(a.y, b.y)`: the lower end counts, the upper end
@@ -50,8 +56,11 @@ pub fn crossing(a: Vec2, b: Vec2, y: i32) -> f64 {
 /// **Active edge table.** Edges are sorted by their first row; going up
 /// row by row, edges join the active list when the row reaches them and
 /// leave it after their last row, so each row looks only at the edges
-/// that cross it. (Departure from the slides, which sort all intersection
-/// points of all rows at once: "hoher Sortieraufwand!")
+/// that cross it, and a row is ready as soon as the rows below it are.
+/// (Departure from the slides, which sort all intersection points of all
+/// rows at once: "hoher Sortieraufwand!" — and nothing can be filled until
+/// every row's crossings are known, so a shape four billion rows tall
+/// cannot even give its first row.)
 ///
 /// ```text
 ///   row 5   active: e2 (x 3.0)  e0 (x 7.5)     e1 left after row 4,
@@ -76,12 +85,12 @@ pub fn fill_spans(
     vertices: &[Vec2],
     viewport: Viewport,
     mut span: impl FnMut(Span),
-    mut table: impl FnMut(i32, &[ActiveEdge]),
+    mut table: impl FnMut(i32, &[ActiveEdge]) -> ControlFlow<()>,
 ) {
     // Unused until you write the body:
     let _ = (&vertices, &viewport, &mut span, &mut table);
     todo!(
-        "scanline: edge table sorted by first row; per row the active edges (report them to `table`, sorted by x), then one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
+        "scanline: edge table sorted by first row; per row the active edges (report them to `table`, sorted by x, and stop if it says so), then one span ⌈s1⌉ ..= ⌈s2⌉ − 1 per pair"
     )
 }
 
@@ -104,6 +113,6 @@ pub fn fill_polygon(vertices: &[Vec2], viewport: Viewport, mut plot: impl FnMut(
         vertices,
         viewport,
         |span| span.pixels().for_each(&mut plot),
-        |_, _| {},
+        |_, _| ControlFlow::Continue(()),
     );
 }

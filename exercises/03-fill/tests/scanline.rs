@@ -3,6 +3,7 @@
 mod common;
 
 use std::cell::RefCell;
+use std::ops::ControlFlow;
 
 use canvas::{Pixel, Span, Vec2, Viewport};
 use common::{
@@ -23,6 +24,7 @@ fn polygon(vertices: &[Vec2], viewport: Viewport) -> Vec<Pixel> {
 }
 
 /// What `fill_spans` reports, in order.
+#[derive(Clone, Debug, PartialEq)]
 enum Event {
     Span(Span),
     Table(i32, Vec<ActiveEdge>),
@@ -37,7 +39,10 @@ fn spans(vertices: &[Vec2], viewport: Viewport) -> Vec<Span> {
         vertices,
         viewport,
         |span| events.borrow_mut().push(Event::Span(span)),
-        |y, active| events.borrow_mut().push(Event::Table(y, active.to_vec())),
+        |y, active| {
+            events.borrow_mut().push(Event::Table(y, active.to_vec()));
+            ControlFlow::Continue(())
+        },
     );
     let mut rows: Vec<(i32, Vec<ActiveEdge>)> = Vec::new();
     let mut spans = Vec::new();
@@ -353,6 +358,7 @@ fn work_grows_with_the_active_edges_not_with_all_of_them() {
             if xs != [f64::from(y) - 0.5, f64::from(y) + 0.5] {
                 wrong_table.get_or_insert((y, active.to_vec()));
             }
+            ControlFlow::Continue(())
         },
     );
     assert_eq!(
@@ -365,4 +371,114 @@ fn work_grows_with_the_active_edges_not_with_all_of_them() {
         "row y's table holds two edges, at y − ½ and y + ½"
     );
     assert_eq!(rows, n, "one table per row");
+}
+
+/// Every call of `fill_spans`, in order, with `table` answering `Break` at
+/// its report number `stop` (counted from 0) and `Continue` otherwise.
+fn events_stopped_at(vertices: &[Vec2], viewport: Viewport, stop: Option<usize>) -> Vec<Event> {
+    let events: RefCell<Vec<Event>> = RefCell::default();
+    let mut tables = 0;
+    fill_spans(
+        vertices,
+        viewport,
+        |span| events.borrow_mut().push(Event::Span(span)),
+        |y, active| {
+            events.borrow_mut().push(Event::Table(y, active.to_vec()));
+            tables += 1;
+            if Some(tables - 1) == stop {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        },
+    );
+    events.into_inner()
+}
+
+proptest! {
+    #![proptest_config(testkit::proptest_config())]
+
+    /// The sheet: when `table` answers `Break`, the fill ends at once,
+    /// before that row's spans; what came before is the same as in a fill
+    /// that goes on.
+    #[testkit::test]
+    fn a_table_that_answers_break_ends_the_fill_before_its_row(shape in any_polygon(), at in 0usize..64) {
+        let whole = events_stopped_at(&shape, POLYGON_VIEWPORT, None);
+        let tables = whole.iter().filter(|e| matches!(e, Event::Table(..))).count();
+        prop_assume!(tables > 0);
+        let stop = at % tables;
+        // The whole run's events up to and including report number `stop`.
+        let mut seen = 0;
+        let end = whole
+            .iter()
+            .position(|e| {
+                let table = matches!(e, Event::Table(..));
+                seen += usize::from(table);
+                table && seen == stop + 1
+            })
+            .map_or(whole.len(), |i| i + 1);
+        let stopped = events_stopped_at(&shape, POLYGON_VIEWPORT, Some(stop));
+        prop_assert!(
+            stopped.len() <= end || stopped[..end] != whole[..end],
+            "fill_spans({:?}, {:?}): `table` answered Break at its report {} (row {:?}), \
+             yet the fill went on with {:?}: stop at once, before that row's spans",
+            shape, POLYGON_VIEWPORT, stop, whole[end - 1], stopped[end]
+        );
+        prop_assert_eq!(
+            &stopped[..], &whole[..end],
+            "fill_spans({:?}, {:?}) stopped by `table` at its report {}: the calls up to the stop \
+             must be those of a fill that goes on",
+            shape, POLYGON_VIEWPORT, stop
+        );
+    }
+}
+
+/// The active edge table's point: a row is ready when the rows below it
+/// are. A sliver four billion rows tall, stopped after its first thousand
+/// rows, costs a thousand rows; a fill that first finds every crossing of
+/// every row (the slides' global sort, or any table derived from it) needs
+/// eight billion crossings before its first row and runs out of memory or
+/// time.
+#[testkit::test]
+fn the_first_rows_of_a_shape_four_billion_rows_tall_come_at_once() {
+    let sliver = v(&[(-0.5, -2.0e9), (0.5, -2.0e9), (0.5, 2.0e9), (-0.5, 2.0e9)]);
+    let viewport = Viewport::new(-4, i32::MIN, 4, i32::MAX);
+    let first_row = -2_000_000_000;
+    let mut rows = Vec::new();
+    let mut spans = Vec::new();
+    fill_spans(
+        &sliver,
+        viewport,
+        |span| spans.push(span),
+        |y, active| {
+            rows.push((y, active.to_vec()));
+            if rows.len() == 1000 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        },
+    );
+    assert_eq!(
+        rows.len(),
+        1000,
+        "`table` answered Break at the 1000th row: stop there"
+    );
+    for (k, (y, active)) in rows.iter().enumerate() {
+        let expected = [
+            ActiveEdge { edge: 3, x: -0.5 },
+            ActiveEdge { edge: 1, x: 0.5 },
+        ];
+        assert!(
+            *y == first_row + k as i32 && active[..] == expected[..],
+            "report {k} of the sliver {sliver:?} in {viewport:?} is row {y} with {active:?}; \
+             the table's row {} holds edge 3 at −0.5 and edge 1 at 0.5",
+            first_row + k as i32
+        );
+    }
+    let expected: Vec<Span> = (0..999).map(|k| Span::new(first_row + k, 0, 0)).collect();
+    assert_eq!(
+        spans, expected,
+        "the sliver's spans: pixel 0 of each row before the stop, none in the row that stopped"
+    );
 }

@@ -20,6 +20,7 @@
 //! cover the same pixels.
 
 use std::hint::black_box;
+use std::ops::ControlFlow;
 
 use canvas::{Canvas, Rgba, Vec2, Vertex};
 use criterion::measurement::WallTime;
@@ -138,7 +139,7 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
                         tri,
                         viewport,
                         |span| canvas.fill_span(span, Rgba::WHITE),
-                        |_, _| {},
+                        |_, _| ControlFlow::Continue(()),
                     );
                 }
                 black_box(&canvas);
