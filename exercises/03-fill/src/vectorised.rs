@@ -73,11 +73,19 @@ pub struct Batch {
     /// Per lane: whether the pixel's centre is covered (top-left rule);
     /// `false` from `len` on.
     pub covered: [bool; LANES],
-    /// Per lane: the depth interpolated there, `Σ λ_k · depth_k`, computed
-    /// for every lane of a batch with a covered lane, as the seed's
-    /// matrices are (meaningful where covered; all 0 in a batch with no
-    /// covered lane).
+    /// Per vertex as given, per lane: the barycentric weight `λ` of that
+    /// vertex at the lane's pixel (the exact edge weight over twice the
+    /// area, see [`fill_triangle_vectorised`]), in every lane below `len`,
+    /// covered or not (outside the triangle some are negative); 0 from
+    /// `len` on.
+    pub lambda: [[f32; LANES]; 3],
+    /// Per lane: the depth mixed there, `Σ λ_v · depth_v`, in every lane
+    /// below `len`, covered or not, as the seed's matrices hold it for
+    /// every pixel of the box; 0 from `len` on.
     pub depth: [f32; LANES],
+    /// Per lane: the colour mixed there likewise, channel by channel;
+    /// [`Rgba::TRANSPARENT`] from `len` on.
+    pub colour: [Rgba; LANES],
 }
 
 /// Rasterizes the triangle like task 5 and calls `plot` once per covered
@@ -100,14 +108,15 @@ pub struct Batch {
 ///   right side clamped to ±2⁶² so that it fits `i64` too (beyond the
 ///   clamp no offset changes the answer). Lanes past `len` are switched
 ///   off.
-/// - **Interpolation**, in every lane of a batch with a covered lane:
-///   `λ(i+2) = (base_i + offset) · (1/D)` in `f64`, `1/D` computed once;
-///   depth `λ0·d0 + λ1·d1 + λ2·d2` and each channel of the colour
-///   likewise, in `f32`. A batch with no covered lane is reported with
-///   depths 0 and mixes nothing.
-/// - **Plot** the covered lanes in order, each with its batch's depth, the
-///   interpolated colour and the exact weights: `weights[k]` for vertex `k`
-///   as given is `−O_i` for the vertex `i + 2` of the clockwise triangle.
+/// - **Interpolation**, in every lane below `len`, covered or not (the
+///   seed mixes the whole box; a lane does not branch on its coverage):
+///   `λ(i+2) = (base_i + offset) · (1/D)` in `f64`, `1/D` computed once,
+///   then rounded to `f32`; depth `λ0·d0 + λ1·d1 + λ2·d2` and each channel
+///   of the colour likewise, in `f32`. Lanes from `len` on hold zeros.
+/// - **Report** the batch with its coverage, weights, depths and colours,
+///   then **plot** its covered lanes in order, each with its lane's depth
+///   and colour and the exact weights: `weights[k]` for vertex `k` as
+///   given is `−O_i` for the vertex `i + 2` of the clockwise triangle.
 ///
 /// A position that is NaN, infinite or beyond ±[`MAX_COORD`] plots nothing
 /// and reports no batch.

@@ -79,7 +79,7 @@ fn clipped_box(vertices: [Vertex; 3], viewport: Viewport) -> Option<([i64; 2], [
 
 /// What `fill_triangle_vectorised` reports, in order.
 enum Event {
-    Batch(Batch),
+    Batch(Box<Batch>),
     Plot(Fragment, EdgeWeights),
 }
 
@@ -92,7 +92,7 @@ fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
     fill_triangle_vectorised(
         vertices,
         viewport,
-        |batch| events.borrow_mut().push(Event::Batch(*batch)),
+        |batch| events.borrow_mut().push(Event::Batch(Box::new(*batch))),
         |fragment, weights| events.borrow_mut().push(Event::Plot(fragment, weights)),
     );
     check_batches(vertices, viewport, &events.into_inner())
@@ -100,17 +100,15 @@ fn fragments(vertices: [Vertex; 3], viewport: Viewport) -> Vec<Fragment> {
 
 /// The batches tile the clipped box row by row, bottom to top, each row
 /// from its left end in batches of [`LANES`] (fewer only at the right end);
-/// each lane's coverage is the definition's and its depth the
-/// definition's barycentric mix; after each batch come exactly its covered
-/// lanes' fragments, in lane order, with the batch's depth and the exact
-/// edge weights.
+/// every lane is checked (see [`check_lane`]); after each batch come
+/// exactly its covered lanes' fragments, in lane order, with their lane's
+/// depth and colour and the exact edge weights.
 #[track_caller]
 fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) -> Vec<Fragment> {
     let call = format!(
         "fill_triangle_vectorised({:?}, {viewport:?})",
         vertices.map(|v| v.position)
     );
-    let positions = vertices.map(|v| v.position);
     // The tiling the sheet prescribes.
     let mut tiling = Vec::new();
     if let Some((xs, ys)) = clipped_box(vertices, viewport) {
@@ -156,33 +154,16 @@ fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) ->
             Event::Batch(batch) => {
                 finish(&mut current);
                 for k in 0..LANES {
-                    let pixel = Pixel::new(batch.x + k as i32, batch.y);
-                    let covers = k < batch.len && triangle_covers(positions, pixel);
-                    assert_eq!(
-                        batch.covered[k], covers,
-                        "{call}: lane {k} of {batch:?} ({pixel}; lanes from `len` on are off)"
-                    );
-                    if covers {
-                        let (weights, area) = definition_weights(vertices, pixel).unwrap();
-                        let depth = (0..3)
-                            .map(|v| weights[v] as f64 / area as f64 * f64::from(vertices[v].depth))
-                            .sum::<f64>() as f32;
-                        assert!(
-                            (batch.depth[k] - depth).abs() <= MIX_TOLERANCE,
-                            "{call}: lane {k} of {batch:?} ({pixel}) has depth {}, the \
-                             barycentric mix gives {depth}",
-                            batch.depth[k]
-                        );
-                    }
+                    check_lane(&call, vertices, batch, k);
                 }
-                current = Some((*batch, Vec::new()));
+                current = Some((**batch, Vec::new()));
             }
             Event::Plot(fragment, weights) => {
                 let Some((batch, plotted)) = current.as_mut() else {
                     panic!("{call}: {fragment:?} is plotted before any batch was reported");
                 };
                 let k = (fragment.pixel.x - batch.x) as usize;
-                let (expected, area) =
+                let (expected, _) =
                     definition_weights(vertices, fragment.pixel).expect("a triangle that snaps");
                 assert_eq!(
                     *weights, expected,
@@ -191,24 +172,14 @@ fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) ->
                     fragment.pixel
                 );
                 assert!(
-                    k < LANES && fragment.depth.to_bits() == batch.depth[k].to_bits(),
-                    "{call}: {fragment:?} does not carry its lane's depth in {batch:?}"
-                );
-                let lambda = expected.map(|w| (w as f64 / area as f64) as f32);
-                let colour = vertices[0].colour * lambda[0]
-                    + vertices[1].colour * lambda[1]
-                    + vertices[2].colour * lambda[2];
-                let off = [
-                    fragment.colour.r - colour.r,
-                    fragment.colour.g - colour.g,
-                    fragment.colour.b - colour.b,
-                    fragment.colour.a - colour.a,
-                ];
-                assert!(
-                    off.iter().all(|d| d.abs() <= MIX_TOLERANCE),
-                    "{call}: the colour at {} is {:?}, the barycentric mix gives {colour:?}",
-                    fragment.pixel,
-                    fragment.colour
+                    k < LANES
+                        && fragment.depth.to_bits() == batch.depth[k].to_bits()
+                        && bits(fragment.colour) == bits(batch.colour[k]),
+                    "{call}: {fragment:?} does not carry the depth and colour of its lane {k} \
+                     in its batch (depth {}, colour {:?}): plot each covered lane with what the \
+                     batch holds",
+                    batch.depth[k],
+                    batch.colour[k]
                 );
                 plotted.push(fragment.pixel);
                 fragments.push(*fragment);
@@ -217,6 +188,91 @@ fn check_batches(vertices: [Vertex; 3], viewport: Viewport, events: &[Event]) ->
     }
     finish(&mut current);
     fragments
+}
+
+/// A colour's channels as bits, for comparing two colours exactly.
+fn bits(colour: Rgba) -> [u32; 4] {
+    [colour.r, colour.g, colour.b, colour.a].map(f32::to_bits)
+}
+
+/// Lane `k` of `batch`, as the sheet defines it: below `len`, covered or
+/// not, its coverage is the definition's and its weights, depth and colour
+/// the barycentric mix at its pixel; from `len` on, all zero.
+#[track_caller]
+fn check_lane(call: &str, vertices: [Vertex; 3], batch: &Batch, k: usize) {
+    let pixel = Pixel::new(batch.x + k as i32, batch.y);
+    let lambda = [0, 1, 2].map(|v| batch.lambda[v][k]);
+    if k >= batch.len {
+        assert!(
+            !batch.covered[k]
+                && lambda == [0.0; 3]
+                && batch.depth[k] == 0.0
+                && bits(batch.colour[k])
+                    .iter()
+                    .all(|&c| f32::from_bits(c) == 0.0),
+            "{call}: lane {k} of the batch at ({}, {}) lies past its len {}: it is off, with \
+             weights {lambda:?}, depth {} and colour {:?} all 0 (Rgba::TRANSPARENT)",
+            batch.x,
+            batch.y,
+            batch.len,
+            batch.depth[k],
+            batch.colour[k]
+        );
+        return;
+    }
+    let positions = vertices.map(|v| v.position);
+    let covers = triangle_covers(positions, pixel);
+    assert_eq!(
+        batch.covered[k],
+        covers,
+        "{call}: lane {k} of the batch at ({}, {}) is {pixel}, whose centre the triangle {} \
+         (top-left rule)",
+        batch.x,
+        batch.y,
+        if covers { "covers" } else { "does not cover" }
+    );
+    let (weights, area) = definition_weights(vertices, pixel).expect("a triangle that snaps");
+    let exact = weights.map(|w| w as f64 / area as f64);
+    let scale = exact.iter().map(|l| l.abs()).sum::<f64>().max(1.0);
+    for v in 0..3 {
+        assert!(
+            (f64::from(lambda[v]) - exact[v]).abs() <= 1e-6 * scale,
+            "{call}: lane {k} ({pixel}, {}) holds λ{v} = {}, the exact weight of vertex {v} \
+             over twice the area is {} (every lane below len is mixed, covered or not: \
+             λ(i+2) = (base_i + offset)·(1/D), rounded to f32)",
+            if covers { "covered" } else { "not covered" },
+            lambda[v],
+            exact[v]
+        );
+    }
+    let mix = |value: fn(&Vertex) -> f32| -> f64 {
+        (0..3)
+            .map(|v| exact[v] * f64::from(value(&vertices[v])))
+            .sum()
+    };
+    let tolerance = f64::from(MIX_TOLERANCE) * scale;
+    let depth = mix(|v| v.depth);
+    assert!(
+        (f64::from(batch.depth[k]) - depth).abs() <= tolerance,
+        "{call}: lane {k} ({pixel}, {}) has depth {}, the barycentric mix Σ λ_v·depth_v \
+         gives {depth} (every lane below len is mixed, covered or not)",
+        if covers { "covered" } else { "not covered" },
+        batch.depth[k]
+    );
+    let colour = batch.colour[k];
+    let wanted = [
+        mix(|v| v.colour.r),
+        mix(|v| v.colour.g),
+        mix(|v| v.colour.b),
+        mix(|v| v.colour.a),
+    ];
+    let yours = [colour.r, colour.g, colour.b, colour.a];
+    assert!(
+        (0..4).all(|c| (f64::from(yours[c]) - wanted[c]).abs() <= tolerance),
+        "{call}: lane {k} ({pixel}, {}) has colour {colour:?}, the barycentric mix channel by \
+         channel gives {wanted:?} (every lane below len is mixed, covered or not)",
+        if covers { "covered" } else { "not covered" }
+    );
 }
 
 fn pixels(positions: [Vec2; 3], viewport: Viewport) -> Vec<Pixel> {

@@ -71,11 +71,19 @@ pub struct Batch {
     /// Per lane: whether the pixel's centre is covered (top-left rule);
     /// `false` from `len` on.
     pub covered: [bool; LANES],
-    /// Per lane: the depth interpolated there, `Σ λ_k · depth_k`, computed
-    /// for every lane of a batch with a covered lane, as the seed's
-    /// matrices are (meaningful where covered; all 0 in a batch with no
-    /// covered lane).
+    /// Per vertex as given, per lane: the barycentric weight `λ` of that
+    /// vertex at the lane's pixel (the exact edge weight over twice the
+    /// area, see [`fill_triangle_vectorised`]), in every lane below `len`,
+    /// covered or not (outside the triangle some are negative); 0 from
+    /// `len` on.
+    pub lambda: [[f32; LANES]; 3],
+    /// Per lane: the depth mixed there, `Σ λ_v · depth_v`, in every lane
+    /// below `len`, covered or not, as the seed's matrices hold it for
+    /// every pixel of the box; 0 from `len` on.
     pub depth: [f32; LANES],
+    /// Per lane: the colour mixed there likewise, channel by channel;
+    /// [`Rgba::TRANSPARENT`] from `len` on.
+    pub colour: [Rgba; LANES],
 }
 
 /// Rasterizes the triangle like task 5 and calls `plot` once per covered
@@ -98,14 +106,15 @@ pub struct Batch {
 ///   right side clamped to ±2⁶² so that it fits `i64` too (beyond the
 ///   clamp no offset changes the answer). Lanes past `len` are switched
 ///   off.
-/// - **Interpolation**, in every lane of a batch with a covered lane:
-///   `λ(i+2) = (base_i + offset) · (1/D)` in `f64`, `1/D` computed once;
-///   depth `λ0·d0 + λ1·d1 + λ2·d2` and each channel of the colour
-///   likewise, in `f32`. A batch with no covered lane is reported with
-///   depths 0 and mixes nothing.
-/// - **Plot** the covered lanes in order, each with its batch's depth, the
-///   interpolated colour and the exact weights: `weights[k]` for vertex `k`
-///   as given is `−O_i` for the vertex `i + 2` of the clockwise triangle.
+/// - **Interpolation**, in every lane below `len`, covered or not (the
+///   seed mixes the whole box; a lane does not branch on its coverage):
+///   `λ(i+2) = (base_i + offset) · (1/D)` in `f64`, `1/D` computed once,
+///   then rounded to `f32`; depth `λ0·d0 + λ1·d1 + λ2·d2` and each channel
+///   of the colour likewise, in `f32`. Lanes from `len` on hold zeros.
+/// - **Report** the batch with its coverage, weights, depths and colours,
+///   then **plot** its covered lanes in order, each with its lane's depth
+///   and colour and the exact weights: `weights[k]` for vertex `k` as
+///   given is `−O_i` for the vertex `i + 2` of the clockwise triangle.
 ///
 /// A position that is NaN, infinite or beyond ±[`MAX_COORD`] plots nothing
 /// and reports no batch.
@@ -168,8 +177,10 @@ pub fn fill_triangle_vectorised(
     let offset: [[i64; LANES]; 3] =
         std::array::from_fn(|i| std::array::from_fn(|k| k as i64 * a[i] as i64 * ONE));
     let offset_f: [[f64; LANES]; 3] = offset.map(|lanes| lanes.map(|o| o as f64));
-    let depth = [v[0].depth, v[1].depth, v[2].depth];
-    let channel = |f: fn(&Rgba) -> f32| [f(&v[0].colour), f(&v[1].colour), f(&v[2].colour)];
+    // The values to mix, per vertex as given (λ is kept in that order).
+    let [u0, u1, u2] = vertices;
+    let depth = [u0.depth, u1.depth, u2.depth];
+    let channel = |f: fn(&Rgba) -> f32| [f(&u0.colour), f(&u1.colour), f(&u2.colour)];
     let colours = [
         channel(|c| c.r),
         channel(|c| c.g),
@@ -194,42 +205,34 @@ pub fn fill_triangle_vectorised(
                     *flag &= o <= threshold[i];
                 }
             }
-            // A batch with no covered lane needs no mix (half the box of
-            // a large triangle): report it with zero depths.
-            if !covered.contains(&true) {
-                batch(&Batch {
-                    y: row,
-                    x: column,
-                    len,
-                    covered,
-                    depth: [0.0; LANES],
-                });
-                bx += LANES as i64;
-                continue;
-            }
-            // λ(i+2) = O_i / D, lane by lane.
-            let mut weight = [[0.0_f32; LANES]; 3];
+            // λ(i+2) = O_i / D, lane by lane, for the vertices as given.
+            let mut lambda = [[0.0_f32; LANES]; 3];
             for i in 0..3 {
                 let start = base[i] as f64;
-                for k in 0..LANES {
+                let vertex = given[(i + 2) % 3];
+                for k in 0..len {
                     #[allow(clippy::cast_possible_truncation)] // a weight in f32, as task 5
                     let w = ((start + offset_f[i][k]) * inv_area) as f32;
-                    weight[(i + 2) % 3][k] = w;
+                    lambda[vertex][k] = w;
                 }
             }
+            // Σ λ_v · value_v in every lane: the lanes past `len` mix
+            // zero weights to zero.
             let mix = |values: [f32; 3]| -> [f32; LANES] {
                 std::array::from_fn(|k| {
-                    weight[0][k] * values[0] + weight[1][k] * values[1] + weight[2][k] * values[2]
+                    lambda[0][k] * values[0] + lambda[1][k] * values[1] + lambda[2][k] * values[2]
                 })
             };
+            let [r, g, bl, al] = colours.map(mix);
             let lanes = Batch {
                 y: row,
                 x: column,
                 len,
                 covered,
+                lambda,
                 depth: mix(depth),
+                colour: std::array::from_fn(|k| Rgba::new(r[k], g[k], bl[k], al[k])),
             };
-            let [r, g, bl, al] = colours.map(mix);
             batch(&lanes);
             for k in (0..len).filter(|&k| covered[k]) {
                 let mut exact = [0; 3];
@@ -239,7 +242,7 @@ pub fn fill_triangle_vectorised(
                 let fragment = Fragment {
                     pixel: Pixel::new(column + k as i32, row),
                     depth: lanes.depth[k],
-                    colour: Rgba::new(r[k], g[k], bl[k], al[k]),
+                    colour: lanes.colour[k],
                 };
                 plot(fragment, exact);
             }
