@@ -1,8 +1,9 @@
 //! Topic 05: buffers — the z-buffer with OpenGL's depth functions, depth
 //! along a scanline, the painter's algorithm, polygon offset for
 //! hidden-line drawing, the stencil buffer, double buffering, the
-//! accumulation buffer, stereo buffering, and when a swap is shown
-//! (tearing, VSYNC, triple buffering). The task sheet is `README.md`
+//! accumulation buffer, stereo buffering, when a swap is shown
+//! (tearing, VSYNC, triple buffering), and translucent surfaces with the
+//! z-buffer. The task sheet is `README.md`
 //! next to this crate.
 //!
 //! Each task module below is one task. You edit the files in `src/`: what
@@ -36,3 +37,6 @@ pub mod stereo;
 
 /// Task 8: when the back buffer is shown — tearing without VSYNC, VSYNC, triple buffering.
 pub mod presentation;
+
+/// Task 9: translucent surfaces with the z-buffer — opaque first, then the translucent ones sorted back to front, tested but not written.
+pub mod translucent;
