@@ -65,9 +65,10 @@ fn depth_complexity_counts_entry_faces_per_pixel() {
     let product = &model.products()[0];
     let mut buffer = Framebuffer::new(camera);
     let k = depth_complexity(&model, product, &mut buffer);
-    // The seed's Abbildung 10 ("Tiefenkomplexität"): each pixel's count as
-    // a grey level, 0 black and k white; first, so that a failing check
-    // below still leaves it.
+    // As the seed's Abbildung 11 ("Bestimmung der Tiefenkomplexität"; its
+    // Abbildung 10 shows depth complexity on another scene): each pixel's
+    // count as a grey level, 0 black and k white; first, so that a failing
+    // check below still leaves it.
     let mut counts = canvas::Canvas::new(camera.width(), camera.height());
     for p in camera.pixels() {
         let count = f32::from(buffer.stencil(p).unwrap_or(0));

@@ -105,7 +105,7 @@ fn trimming_everything_leaves_the_background() {
 
 #[testkit::test]
 fn figure_lit_hill_with_a_hole_and_wireframe() {
-    // Seed Figs. 15 and 26: the hill, a circle trimmed, two lights, the grid.
+    // Seed 000, Abb. 15 and 21: the hill, a circle trimmed, two lights, the grid.
     let [w, h] = common::FIGURE_SIZE;
     let mut canvas = Canvas::new(w, h);
     let disc = common::Disc {

@@ -7,7 +7,7 @@ use canvas::Canvas;
 /// The surfaces to tessellate (topic 09's examples).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Surface {
-    /// Seed 001's bicubic patch (Slika 2.2).
+    /// Seed 001's example surface, of degree 3 × 2 (Primjer 1.1.5; Slika 2.5).
     SeedSurface,
     /// Seed 000's hill.
     Hill,
