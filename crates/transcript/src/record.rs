@@ -2,7 +2,8 @@
 //! student's crate.
 
 use std::any::Any;
-use std::cell::Cell;
+use std::backtrace::Backtrace;
+use std::cell::{Cell, RefCell};
 use std::fs::File;
 use std::io::{BufWriter, Write as _};
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
@@ -16,6 +17,60 @@ thread_local! {
     /// student's own business). A callback of a recorded call runs at
     /// depth 0 again: it is the test's code.
     static DEPTH: Cell<usize> = const { Cell::new(0) };
+    /// What the thread's last panic inside the standard library adds to
+    /// its message (see [`note_panics`]).
+    static INSIDE_STD: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// Chains a panic hook that notes a panic placed inside the standard
+/// library: `i32::MIN.abs()` panics in `core/src/num`, not on the line that
+/// called it, so the recorded message says so and names the line of the
+/// code under test that called it where the backtrace can tell (a sandbox
+/// that keeps the process from reading its own program leaves the frames
+/// unnamed; the message then says what to look for). Other panics (an
+/// `unwrap`, an index, an assertion) already name the line that made them
+/// and cost nothing more.
+fn note_panics() {
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if let Some(at) = info
+            .location()
+            .filter(|at| std::path::Path::new(at.file()).is_absolute())
+        {
+            let file = at.file();
+            let library = file.find("library/").map_or(file, |i| &file[i + 8..]);
+            let note = match called_from(&Backtrace::force_capture().to_string()) {
+                Some(line) => {
+                    format!(" (raised in the standard library, {library}, called at {line})")
+                }
+                None => format!(
+                    " (raised in the standard library, {library}, by a method this function \
+                     called: `abs`, `pow`, `div_euclid` and the like panic there when they \
+                     overflow or are given a value they refuse)"
+                ),
+            };
+            INSIDE_STD.with(|inside| *inside.borrow_mut() = Some(note));
+        }
+        previous(info);
+    }));
+}
+
+/// The first location in a backtrace's text that lies in the code under
+/// test — the course's `exercises/` folder, wherever the build put it —
+/// as `exercises/…/file.rs:line:column`.
+fn called_from(backtrace: &str) -> Option<String> {
+    backtrace
+        .lines()
+        .filter_map(|line| line.trim_start().strip_prefix("at "))
+        .find_map(|at| {
+            let at = at.strip_prefix("./").unwrap_or(at);
+            if at.starts_with("exercises/") {
+                Some(at)
+            } else {
+                at.find("/exercises/").map(|i| &at[i + 1..])
+            }
+        })
+        .map(str::to_owned)
 }
 
 /// The transcript being written, when the grader asked for one.
@@ -63,6 +118,7 @@ impl Recorder {
         RECORDER
             .get_or_init(|| {
                 let path = std::env::var_os(crate::RECORD_VAR)?;
+                note_panics();
                 let file = File::create(&path).unwrap_or_else(|error| {
                     panic!(
                         "cannot create the transcript {}: {error}",
@@ -147,7 +203,10 @@ impl Call {
             Ok(value) => value,
             Err(payload) => {
                 if let Some(recorder) = self.recording.0 {
-                    let message = message(payload.as_ref());
+                    let mut message = message(payload.as_ref());
+                    if let Some(note) = INSIDE_STD.with(|inside| inside.borrow_mut().take()) {
+                        message.push_str(&note);
+                    }
                     recorder.write(|out| event::write_panic(out, &message), true);
                 }
                 resume_unwind(payload)
@@ -217,5 +276,42 @@ fn message(payload: &(dyn Any + Send)) -> String {
         text.clone()
     } else {
         "Box<dyn Any>".to_owned()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::called_from;
+
+    #[test]
+    fn the_first_frame_in_the_code_under_test_is_named() {
+        let relative = "   0: std::backtrace::Backtrace::force_capture
+             at /rustc/abc/library/std/src/backtrace.rs:310:9
+   1: transcript::record::note_panics::{{closure}}
+             at ./crates/transcript/src/record.rs:40:25
+   2: core::num::<impl i32>::abs
+             at /rustc/abc/library/core/src/num/mod.rs:394:5
+   3: lines::midpoint::midpoint_line
+             at ./exercises/01-lines/src/midpoint.rs:36:39
+   4: midpoint::first_octant
+             at ./exercises/01-lines/tests/midpoint.rs:12:5
+";
+        let absolute = "   0: core::num::<impl i32>::abs
+             at /rustc/abc/library/core/src/num/mod.rs:394:5
+   1: lines::midpoint::midpoint_line
+             at /course/exercises/01-lines/src/midpoint.rs:36:39
+   2: start_thread
+             at ./nptl/pthread_create.c:442:8
+";
+        for backtrace in [relative, absolute] {
+            assert_eq!(
+                called_from(backtrace).as_deref(),
+                Some("exercises/01-lines/src/midpoint.rs:36:39")
+            );
+        }
+        assert_eq!(
+            called_from("   0: start_thread\n             at ./nptl/pthread_create.c:442:8\n"),
+            None
+        );
     }
 }
