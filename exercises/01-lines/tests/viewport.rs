@@ -103,6 +103,9 @@ proptest! {
         prop_assert_eq!(yours, expected, "same pixels but not in order from `from` to `to`");
     }
 
+    /// Lines between random extreme pixels, billions of columns long,
+    /// through a small viewport: only a walk that starts at the viewport's
+    /// first visible column finishes in time.
     #[testkit::test]
     fn huge_lines_are_exact_inside(
         from in testkit::strategies::hostile_pixel(),

@@ -50,10 +50,16 @@ pub(super) fn topic_report(
         .collect();
     for (t, test) in plan.tests.into_iter().enumerate() {
         let task = &mut tasks[test.task];
-        let report = match finished(t) {
+        let mut report = match finished(t) {
             None => ignored_test(test.name),
             Some(run) => test_report(out, test, run, time_limit_s),
         };
+        if report.exit.timed_out
+            && let Some(reason) = &mut report.reason
+            && let Some(comment) = test_comment(&topic.dir, &task.id, &report.name)
+        {
+            reason.push_str(&format!("; the test says: \"{comment}\""));
+        }
         match report.status {
             TestStatus::Passed => task.passed += 1,
             TestStatus::Failed => task.failed += 1,
@@ -89,6 +95,52 @@ pub(super) fn topic_report(
         max_score: report::round2(tasks.iter().map(TaskReport::max_score).sum()),
         tasks,
     }
+}
+
+/// The comment that explains a test, from the course's test file of its
+/// task (`tests/<task>.rs` in the topic's folder, the grader's copy): the
+/// doc comment above `fn <test>` or else the comment that opens its body.
+/// A timeout says what the test expected (a line across the whole `i32`
+/// range, finished only by a walk that starts at the viewport), where
+/// "timed out" alone suggests an endless loop.
+fn test_comment(topic_dir: &Path, task: &str, test: &str) -> Option<String> {
+    let relative = Path::new("tests").join(format!("{task}.rs"));
+    let source = crate::files::read_plain(topic_dir, &relative)?;
+    comment_of(&String::from_utf8_lossy(&source), test)
+}
+
+/// See [`test_comment`]: at most 400 characters, the lines joined.
+fn comment_of(source: &str, test: &str) -> Option<String> {
+    let lines: Vec<&str> = source.lines().map(str::trim).collect();
+    let signature = format!("fn {test}(");
+    let at = lines.iter().position(|line| line.contains(&signature))?;
+    let above = lines[..at]
+        .iter()
+        .rev()
+        .skip_while(|line| line.starts_with("#["))
+        .map_while(|line| line.strip_prefix("///"))
+        .collect::<Vec<_>>();
+    let words: Vec<&str> = if above.is_empty() {
+        // The body opens on the first line ending in `{` (a signature may
+        // run over several lines).
+        let body = lines[at..].iter().position(|line| line.ends_with('{'))? + at + 1;
+        lines[body..]
+            .iter()
+            .map_while(|line| line.strip_prefix("//"))
+            .collect()
+    } else {
+        above.into_iter().rev().collect()
+    };
+    let text = words
+        .iter()
+        .map(|line| line.trim())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let text = text.trim();
+    (!text.is_empty()).then(|| match text.char_indices().nth(400) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text.to_owned(),
+    })
 }
 
 fn ignored_test(name: String) -> TestReport {
@@ -178,5 +230,60 @@ mod tests {
         assert!(cut.starts_with("[... "), "{cut}");
         assert!(cut.ends_with("\nlast line"), "{cut}");
         assert_eq!(excerpt(" short \n"), "short");
+    }
+}
+
+#[cfg(test)]
+mod comment_tests {
+    use super::comment_of;
+
+    const SOURCE: &str = "
+/// A line across the whole range:
+/// only a walk from the viewport ends.
+#[testkit::test]
+fn documented() {
+    assert!(true);
+}
+
+#[testkit::test]
+fn commented() {
+    // Billions of columns: only an implementation that starts at the
+    // viewport finishes within the time limit.
+    let x = 1;
+}
+
+proptest! {
+    #[testkit::test]
+    fn property(a in 0..3,
+    ) {
+        // Each case small.
+    }
+}
+
+#[testkit::test]
+fn silent() {
+    let x = 1; // not an opening comment
+}
+";
+
+    #[test]
+    fn a_tests_doc_comment_or_opening_comment_is_found() {
+        assert_eq!(
+            comment_of(SOURCE, "documented").as_deref(),
+            Some("A line across the whole range: only a walk from the viewport ends.")
+        );
+        assert_eq!(
+            comment_of(SOURCE, "commented").as_deref(),
+            Some(
+                "Billions of columns: only an implementation that starts at the viewport \
+                 finishes within the time limit."
+            )
+        );
+        assert_eq!(
+            comment_of(SOURCE, "property").as_deref(),
+            Some("Each case small.")
+        );
+        assert_eq!(comment_of(SOURCE, "silent"), None);
+        assert_eq!(comment_of(SOURCE, "absent"), None);
     }
 }

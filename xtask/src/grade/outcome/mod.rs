@@ -95,7 +95,7 @@ impl Exit {
             )
         } else if self.timed_out {
             format!(
-                "timed out after {} s (infinite loop?)",
+                "timed out after {} s (a loop without end, or far more steps than the test needs)",
                 seconds(time_limit_s)
             )
         } else if let Some(limit) = self.output_limit {
@@ -451,11 +451,13 @@ FAILED
         };
         assert_eq!(
             reason("test l ... ", &timed_out),
-            "timed out after 20 s (infinite loop?)"
+            "timed out after 20 s (a loop without end, or far more steps than the test needs)"
         );
         assert_eq!(
             judge("", &timed_out, TOKEN, 2.5).reason.as_deref(),
-            Some("timed out after 2.5 s (infinite loop?)")
+            Some(
+                "timed out after 2.5 s (a loop without end, or far more steps than the test needs)"
+            )
         );
         let flood = Exit {
             output_limit: Some(64 << 20),
