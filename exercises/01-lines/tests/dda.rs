@@ -82,6 +82,25 @@ fn t_is_clamped_when_the_first_column_lies_before_the_endpoint() {
 }
 
 #[testkit::test]
+fn the_first_column_starts_on_the_ideal_line() {
+    // From x = 0.4 the first column is 0, 0.4 before the endpoint: its
+    // minor coordinate is the ideal line's there, from.y + slope·(0 − 0.4)
+    // = −0.2, not from.y. Slope ½, so column x holds round(½x − 0.2).
+    let fragments = dda(&white(0.4, 0.0), &white(10.4, 5.0));
+    let expected: Vec<Pixel> = (0..=10)
+        .map(|x| Pixel::new(x, round_half_away(0.5 * x as f32 - 0.2)))
+        .collect();
+    assert_eq!(
+        pixels(&fragments),
+        expected,
+        "dda_line((0.4, 0), (10.4, 5)): the minor coordinate starts on the ideal line at the \
+         first column's centre, from.minor + slope·(first − from.major) = −0.2 at column 0, \
+         and grows by the slope ½ per column (starting at from.minor = 0 instead puts column \
+         1 at round(0.5) = 1)"
+    );
+}
+
+#[testkit::test]
 fn zero_length_line_is_one_fragment_with_the_first_colour() {
     let from = Vertex::new(Vec2::new(2.5, -1.5), 0.25, Rgba::RED);
     let to = Vertex::new(Vec2::new(2.5, -1.5), 0.75, Rgba::BLUE);

@@ -288,14 +288,21 @@ impl TestReport {
 
 impl TaskReport {
     /// The failing test that tells the most, if any: one that ran before
-    /// one not run (after a timeout), a literal, named test before a
+    /// one not run (after a timeout), one that checks a rule before one
+    /// that compares a whole picture, a literal, named test before a
     /// property's shrunk random case; otherwise in the order of the tests.
     #[must_use]
     pub fn first_failure(&self) -> Option<&TestReport> {
         self.tests
             .iter()
             .filter(|test| test.status == TestStatus::Failed)
-            .min_by_key(|test| (test.exit.not_run, test.minimal_input.is_some()))
+            // A test that names its rule before one that compares a whole
+            // picture (a snapshot, a reference image): the picture shows
+            // where, the rule says why.
+            .min_by_key(|test| {
+                let picture = test.snapshot_diff.is_some() || !test.images.is_empty();
+                (test.exit.not_run, picture, test.minimal_input.is_some())
+            })
     }
 
     /// The full points, or 0 for a bonus task (for maxima).
