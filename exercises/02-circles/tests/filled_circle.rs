@@ -60,7 +60,8 @@ fn small_discs_are_their_outlines_filled() {
         assert_eq!(
             first_duplicate(&yours),
             None,
-            "radius {radius}: a pixel plotted twice"
+            "filled_circle({centre}, {radius}) plots the pixel on the left twice: each row is one \
+             span, every pixel plotted once"
         );
     }
 }
@@ -85,10 +86,11 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(0, i32::MIN), 2),
         (Pixel::new(-MAX_COORD, 0), 1),
     ] {
-        assert_eq!(
-            count(|plot| filled_circle(centre, radius, plot)),
-            0,
-            "filled_circle({centre}, {radius})"
+        let drawn = count(|plot| filled_circle(centre, radius, plot));
+        assert!(
+            drawn == 0,
+            "filled_circle({centre}, {radius}) must draw nothing (a negative radius, or a circle \
+             reaching beyond ±MAX_COORD = {MAX_COORD}); yours drew {drawn} pixels"
         );
     }
     let corner = Pixel::new(MAX_COORD - 2, MAX_COORD - 2);
@@ -148,18 +150,20 @@ proptest! {
     #[testkit::test]
     fn each_row_is_one_span_symmetric_about_the_centre(centre in pixel(50), radius in 0..40) {
         let yours = disc(centre, radius);
-        prop_assert!(missing_mirror_image(&yours, centre, true).is_none(), "filled_circle({}, {}) is not symmetric", centre, radius);
+        if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
+            prop_assert!(false, "filled_circle({}, {}) fills {} but not its mirror image {}: the filled circle is symmetric about both axes and both diagonals", centre, radius, p, image);
+        }
         let mut rows: BTreeMap<i32, Vec<i32>> = BTreeMap::new();
         for p in &yours {
             rows.entry(p.y).or_default().push(p.x);
         }
-        prop_assert_eq!(rows.len() as i32, 2 * radius + 1, "filled_circle({}, {}) fills {} rows", centre, radius, rows.len());
+        prop_assert_eq!(rows.len() as i32, 2 * radius + 1, "filled_circle({}, {}) fills {} rows (left), the rows from centre.y − R to centre.y + R are 2R + 1 (right)", centre, radius, rows.len());
         for (y, mut xs) in rows {
             xs.sort();
             xs.dedup();
             let (lo, hi) = (xs[0], xs[xs.len() - 1]);
-            prop_assert_eq!(xs.len() as i32, hi - lo + 1, "row {} of filled_circle({}, {}) has a gap", y, centre, radius);
-            prop_assert_eq!(lo + hi, 2 * centre.x, "row {} of filled_circle({}, {}) is off centre", y, centre, radius);
+            prop_assert_eq!(xs.len() as i32, hi - lo + 1, "filled_circle({}, {}): row {} holds {} pixels (left) between x = {} and {}, one span holds {} (right): a row is one span without gaps", centre, radius, y, xs.len(), lo, hi, hi - lo + 1);
+            prop_assert_eq!(lo + hi, 2 * centre.x, "filled_circle({}, {}): row {} spans x = {} to {}, a span symmetric about centre.x = {} has lo + hi = {} (right)", centre, radius, y, lo, hi, centre.x, 2 * centre.x);
         }
     }
 
@@ -171,9 +175,9 @@ proptest! {
         if within_limits(centre, radius, radius) && radius < 100 {
             assert_pixels_eq(&disc_pixels(centre, radius), &disc(centre, radius), &format!("filled_circle({centre}, {radius})"));
         } else if !within_limits(centre, radius, radius) {
-            prop_assert_eq!(count(|plot| filled_circle(centre, radius, plot)), 0, "filled_circle({}, {}) must draw nothing", centre, radius);
+            prop_assert_eq!(count(|plot| filled_circle(centre, radius, plot)), 0, "filled_circle({}, {}) reaches beyond ±MAX_COORD = {} or has a negative radius: it must draw nothing (left: the pixels yours drew)", centre, radius, MAX_COORD);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| filled_circle(Pixel::new(0, 0), 3, plot)) > 0, "filled_circle((0, 0), 3) drew nothing");
+        prop_assert!(count(|plot| filled_circle(Pixel::new(0, 0), 3, plot)) > 0, "filled_circle((0, 0), 3), called after filled_circle({}, {}), drew nothing: refusing one circle is no reason to refuse the next", centre, radius);
     }
 }

@@ -181,7 +181,8 @@ fn small_radii_match_the_slides_by_hand() {
         assert_eq!(
             first_duplicate(&yours),
             None,
-            "radius {radius}: a pixel plotted twice"
+            "integer_circle({centre}, {radius}) plots the pixel on the left twice: mirror images \
+             that coincide are plotted once"
         );
     }
 }
@@ -218,7 +219,8 @@ fn radius_8_follows_the_differences_step_by_step() {
             (4, 7, 3, 11, -1),
             (5, 6, 2, 13, 3),
         ],
-        "(x, y, h, ΔE, ΔSE) at each pixel of the walk"
+        "integer_circle((0, 0), 8): the reported states (x, y, h, ΔE, ΔSE), one at each pixel \
+         of the walk with y > x, from Walk::start(8) by the table's sums"
     );
 }
 
@@ -234,21 +236,42 @@ fn a_step_adds_what_the_walk_holds() {
         delta_e,
         delta_se,
     };
-    assert_eq!(Walk::start(8), walk(0, 8, -7, 3, -11), "Walk::start(8)");
-    assert_eq!(Walk::start(0), walk(0, 0, 1, 3, 5), "Walk::start(0)");
+    const START: &str = "the state at (0, R) is h = 1 − R, ΔE = 3, ΔSE = 5 − 2R";
+    const E: &str = "h < 0 steps E: x + 1, h + ΔE, ΔE + 2, ΔSE + 2";
+    const SE: &str = "h ≥ 0 steps SE: x + 1, y − 1, h + ΔSE, ΔE + 2, ΔSE + 4";
+    assert_eq!(
+        Walk::start(8),
+        walk(0, 8, -7, 3, -11),
+        "Walk::start(8): {START}"
+    );
+    assert_eq!(
+        Walk::start(0),
+        walk(0, 0, 1, 3, 5),
+        "Walk::start(0): {START}"
+    );
     let mut at = walk(3, 7, -6, 9, -3);
     at.step();
-    assert_eq!(at, walk(4, 7, 3, 11, -1), "E from (3, 7)");
+    assert_eq!(at, walk(4, 7, 3, 11, -1), "step from (3, 7), h = −6: {E}");
     at.step();
-    assert_eq!(at, walk(5, 6, 2, 13, 3), "SE from (4, 7)");
+    assert_eq!(at, walk(5, 6, 2, 13, 3), "step from (4, 7), h = 3: {SE}");
     // States no circle has: the step adds what it holds all the same. An
     // f64 holds 2⁶⁰ + 1 as 2⁶⁰, and 2x + 3 would be 3 here, not 1000.
     let mut odd = walk(0, 100, (1 << 60) + 1, 1000, -7);
     odd.step();
-    assert_eq!(odd, walk(1, 99, (1 << 60) - 6, 1002, -3), "SE, h ≥ 0");
+    assert_eq!(
+        odd,
+        walk(1, 99, (1 << 60) - 6, 1002, -3),
+        "step from {{ x: 0, y: 100, h: 2⁶⁰ + 1, ΔE: 1000, ΔSE: −7 }}, no circle's state: {SE}, \
+         adding what it holds, in integers"
+    );
     let mut odd = walk(10, 20, -(1 << 60) - 1, 1000, -7);
     odd.step();
-    assert_eq!(odd, walk(11, 20, -(1 << 60) + 999, 1002, -5), "E, h < 0");
+    assert_eq!(
+        odd,
+        walk(11, 20, -(1 << 60) + 999, 1002, -5),
+        "step from {{ x: 10, y: 20, h: −2⁶⁰ − 1, ΔE: 1000, ΔSE: −7 }}, no circle's state: {E}, \
+         adding what it holds, in integers"
+    );
 }
 
 #[testkit::test]
@@ -290,14 +313,20 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(MAX_COORD, 0), 1),
         (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
     ] {
-        assert_eq!(
-            count(|plot| draw(centre, radius, plot)),
-            0,
-            "integer_circle({centre}, {radius})"
+        let drawn = count(|plot| draw(centre, radius, plot));
+        assert!(
+            drawn == 0,
+            "integer_circle({centre}, {radius}) must draw nothing (a negative radius, or a circle \
+             reaching beyond ±MAX_COORD = {MAX_COORD}); yours drew {drawn} pixels"
         );
     }
     let edge = Pixel::new(-MAX_COORD, MAX_COORD);
-    assert_eq!(circle(edge, 0), [edge]);
+    let yours = circle(edge, 0);
+    assert_eq!(
+        yours,
+        [edge],
+        "integer_circle({edge}, 0): radius 0 is the centre pixel, plotted once, even at ±MAX_COORD"
+    );
     // Refusing one is no reason to refuse the next.
     assert_pixels_eq(
         &circle_pixels(origin, 3),
@@ -349,7 +378,7 @@ proptest! {
         if let Some((p, image)) = missing_mirror_image(&yours, centre, true) {
             prop_assert!(false, "integer_circle({}, {}) draws {} but not its mirror image {}", centre, radius, p, image);
         }
-        closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
+        closed_loop(&yours, centre).map_err(|e| TestCaseError::fail(format!("integer_circle({centre}, {radius}) is not a closed 8-connected loop: {e}")))?;
     }
 
     #[testkit::test]
@@ -360,9 +389,9 @@ proptest! {
         if within_limits(centre, radius, radius) && radius < 1000 {
             assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("integer_circle({centre}, {radius})"));
         } else if !within_limits(centre, radius, radius) {
-            prop_assert_eq!(count(|plot| draw(centre, radius, plot)), 0, "integer_circle({}, {}) must draw nothing", centre, radius);
+            prop_assert_eq!(count(|plot| draw(centre, radius, plot)), 0, "integer_circle({}, {}) reaches beyond ±MAX_COORD = {} or has a negative radius: it must draw nothing (left: the pixels yours drew)", centre, radius, MAX_COORD);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| draw(Pixel::new(0, 0), 3, plot)) > 0, "integer_circle((0, 0), 3) drew nothing");
+        prop_assert!(count(|plot| draw(Pixel::new(0, 0), 3, plot)) > 0, "integer_circle((0, 0), 3), called after integer_circle({}, {}), drew nothing: refusing one circle is no reason to refuse the next", centre, radius);
     }
 }

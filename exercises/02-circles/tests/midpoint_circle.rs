@@ -126,7 +126,11 @@ fn circle_points_plots_each_mirror_image_once() {
         "circle_points(c, 3, 3)",
     );
     // Radius 0: the centre, once.
-    assert_eq!(points(c, 0, 0), [c]);
+    assert_eq!(
+        points(c, 0, 0),
+        [c],
+        "circle_points({c}, 0, 0): all eight mirror images are the centre, plotted once"
+    );
 }
 
 #[testkit::test]
@@ -151,7 +155,8 @@ fn small_radii_match_the_slides_by_hand() {
         assert_eq!(
             first_duplicate(&yours),
             None,
-            "radius {radius}: a pixel plotted twice"
+            "midpoint_circle({centre}, {radius}) plots the pixel on the left twice: mirror images \
+             that coincide are plotted once"
         );
     }
 }
@@ -228,16 +233,21 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(0, -MAX_COORD), 1),
         (Pixel::new(MAX_COORD / 2, 0), MAX_COORD / 2 + 1),
     ] {
-        assert_eq!(
-            count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {})),
-            0,
-            "midpoint_circle({centre}, {radius})"
+        let drawn = count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {}));
+        assert!(
+            drawn == 0,
+            "midpoint_circle({centre}, {radius}) must draw nothing (a negative radius, or a circle \
+             reaching beyond ±MAX_COORD = {MAX_COORD}); yours drew {drawn} pixels"
         );
     }
     // Right at the limit: radius 0 is the centre, and a circle touching
     // ±MAX_COORD is drawn.
     let edge = Pixel::new(MAX_COORD, -MAX_COORD);
-    assert_eq!(circle(edge, 0), [edge]);
+    assert_eq!(
+        circle(edge, 0),
+        [edge],
+        "midpoint_circle({edge}, 0): radius 0 is the centre pixel, plotted once, even at ±MAX_COORD"
+    );
     let touching = Pixel::new(MAX_COORD - 3, 3 - MAX_COORD);
     assert_pixels_eq(
         &circle_pixels(touching, 3),
@@ -340,12 +350,12 @@ proptest! {
         octant.sort();
         let columns: Vec<i32> = octant.iter().map(|&(dx, _)| dx).collect();
         let expected: Vec<i32> = (0..second_octant(radius).len() as i32).collect();
-        prop_assert_eq!(columns, expected, "the columns of the second octant (0 ≤ dx ≤ dy), each once");
+        prop_assert_eq!(columns, expected, "midpoint_circle({}, {}): the columns dx of its pixels in the second octant (0 ≤ dx ≤ dy), left, must be 0, 1, 2, … each once, right", centre, radius);
         for w in octant.windows(2) {
-            prop_assert!(w[1].1 == w[0].1 || w[1].1 == w[0].1 - 1, "offsets {:?} then {:?}: not E or SE", w[0], w[1]);
+            prop_assert!(w[1].1 == w[0].1 || w[1].1 == w[0].1 - 1, "midpoint_circle({}, {}): in the second octant offset {:?} is followed by {:?}; the next column is on the same row (E) or one below (SE)", centre, radius, w[0], w[1]);
         }
         // All around: a closed loop of touching pixels.
-        closed_loop(&yours, centre).map_err(TestCaseError::fail)?;
+        closed_loop(&yours, centre).map_err(|e| TestCaseError::fail(format!("midpoint_circle({centre}, {radius}) is not a closed 8-connected loop: {e}")))?;
     }
 
     #[testkit::test]
@@ -354,7 +364,7 @@ proptest! {
         let centre = Pixel::new(if sx { far } else { -far }, if sy { far } else { -far });
         assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
         let over = Pixel::new(centre.x, if sy { far + slack + 1 } else { -far - slack - 1 });
-        prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) reaches beyond MAX_COORD", over, radius);
+        prop_assert_eq!(count(|plot| midpoint_circle(over, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) reaches beyond ±MAX_COORD = {}: it must draw nothing (left: the pixels yours drew)", over, radius, MAX_COORD);
     }
 
     #[testkit::test]
@@ -365,9 +375,9 @@ proptest! {
         if within_limits(centre, radius, radius) && radius < 1000 {
             assert_pixels_eq(&circle_pixels(centre, radius), &circle(centre, radius), &format!("midpoint_circle({centre}, {radius})"));
         } else if !within_limits(centre, radius, radius) {
-            prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) must draw nothing", centre, radius);
+            prop_assert_eq!(count(|plot| midpoint_circle(centre, radius, plot, |_, _, _| {})), 0, "midpoint_circle({}, {}) reaches beyond ±MAX_COORD = {} or has a negative radius: it must draw nothing (left: the pixels yours drew)", centre, radius, MAX_COORD);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| midpoint_circle(Pixel::new(0, 0), 3, plot, |_, _, _| {})) > 0, "midpoint_circle((0, 0), 3) drew nothing");
+        prop_assert!(count(|plot| midpoint_circle(Pixel::new(0, 0), 3, plot, |_, _, _| {})) > 0, "midpoint_circle((0, 0), 3), called after midpoint_circle({}, {}), drew nothing: refusing one circle is no reason to refuse the next", centre, radius);
     }
 }

@@ -69,7 +69,12 @@ fn flat_ellipse_stays_in_region_one_along_the_axis() {
         &yours,
         "midpoint_ellipse((0, 0), 8, 1)",
     );
-    assert_eq!(first_duplicate(&yours), None, "a pixel plotted twice");
+    assert_eq!(
+        first_duplicate(&yours),
+        None,
+        "midpoint_ellipse({centre}, 8, 1) plots the pixel on the left twice: where region 1 \
+         reaches the axis and region 2 begins, (8, 0) is plotted once"
+    );
 }
 
 #[testkit::test]
@@ -124,15 +129,22 @@ fn hostile_input_draws_nothing_and_returns_at_once() {
         (Pixel::new(MAX_COORD, 0), 1, 0),
         (Pixel::new(0, -MAX_COORD), 4, 1),
     ] {
-        assert_eq!(
-            count(|plot| midpoint_ellipse(centre, a, b, plot)),
-            0,
-            "midpoint_ellipse({centre}, {a}, {b})"
+        let drawn = count(|plot| midpoint_ellipse(centre, a, b, plot));
+        assert!(
+            drawn == 0,
+            "midpoint_ellipse({centre}, {a}, {b}) must draw nothing (a negative semi-axis, one \
+             beyond MAX_SEMI_AXIS = {MAX_SEMI_AXIS}, or an ellipse reaching beyond ±MAX_COORD = \
+             {MAX_COORD}); yours drew {drawn} pixels"
         );
     }
     // At the limits: the centre alone, and a segment touching MAX_COORD.
     let edge = Pixel::new(MAX_COORD, MAX_COORD);
-    assert_eq!(ellipse(edge, 0, 0), [edge]);
+    assert_eq!(
+        ellipse(edge, 0, 0),
+        [edge],
+        "midpoint_ellipse({edge}, 0, 0): both semi-axes 0 is the centre pixel, plotted once, \
+         even at ±MAX_COORD"
+    );
     let touching = Pixel::new(0, MAX_COORD - 2);
     assert_pixels_eq(
         &expected(touching, 0, 2),
@@ -184,14 +196,14 @@ proptest! {
     #[testkit::test]
     fn no_pixel_is_plotted_twice(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
-        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point {}", centre, a, b, Pixel::new(centre.x + a, centre.y));
         prop_assert_eq!(first_duplicate(&yours), None, "midpoint_ellipse({}, {}, {}) plots a pixel twice", centre, a, b);
     }
 
     #[testkit::test]
     fn ellipse_has_fourfold_symmetry(centre in pixel(50), a in 0..60, b in 0..60) {
         let yours = ellipse(centre, a, b);
-        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point {}", centre, a, b, Pixel::new(centre.x + a, centre.y));
         if let Some((p, image)) = missing_mirror_image(&yours, centre, false) {
             prop_assert!(false, "midpoint_ellipse({}, {}, {}) draws {} but not its mirror image {}", centre, a, b, p, image);
         }
@@ -209,7 +221,7 @@ proptest! {
     fn every_pixel_is_the_nearest_in_its_column_or_its_row(centre in pixel(50), a in 1..60, b in 1..60) {
         // Within half a pixel of the ellipse: along its column or its row.
         let yours = ellipse(centre, a, b);
-        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point", centre, a, b);
+        prop_assert!(yours.contains(&Pixel::new(centre.x + a, centre.y)), "midpoint_ellipse({}, {}, {}) does not draw its rightmost point {}", centre, a, b, Pixel::new(centre.x + a, centre.y));
         for p in yours {
             let (x, y) = (i64::from(p.x - centre.x).abs(), i64::from(p.y - centre.y).abs());
             let in_column = x <= i64::from(a) && nearest_row(a.into(), b.into(), x) == y;
@@ -226,9 +238,9 @@ proptest! {
         let quadrant: Vec<Pixel> = yours.iter().copied().filter(|p| p.x >= centre.x && p.y >= centre.y).collect();
         let columns: BTreeSet<i32> = quadrant.iter().map(|p| p.x - centre.x).collect();
         let rows: BTreeSet<i32> = quadrant.iter().map(|p| p.y - centre.y).collect();
-        prop_assert_eq!(columns, (0..=a).collect::<BTreeSet<_>>(), "the columns of the first quadrant");
-        prop_assert_eq!(rows, (0..=b).collect::<BTreeSet<_>>(), "the rows of the first quadrant");
-        prop_assert!(connected(&yours), "midpoint_ellipse({}, {}, {}) falls apart", centre, a, b);
+        prop_assert_eq!(columns, (0..=a).collect::<BTreeSet<_>>(), "midpoint_ellipse({}, {}, {}): the columns dx its first-quadrant pixels fill (left) must be every column 0..=a (right)", centre, a, b);
+        prop_assert_eq!(rows, (0..=b).collect::<BTreeSet<_>>(), "midpoint_ellipse({}, {}, {}): the rows dy its first-quadrant pixels fill (left) must be every row 0..=b (right)", centre, a, b);
+        prop_assert!(connected(&yours), "midpoint_ellipse({}, {}, {}) falls apart: its pixels are not one 8-connected outline", centre, a, b);
     }
 
     #[testkit::test]
@@ -241,9 +253,9 @@ proptest! {
         if drawable && a < 1000 && b < 1000 {
             assert_pixels_eq(&expected(centre, a, b), &ellipse(centre, a, b), &format!("midpoint_ellipse({centre}, {a}, {b})"));
         } else if !drawable {
-            prop_assert_eq!(count(|plot| midpoint_ellipse(centre, a, b, plot)), 0, "midpoint_ellipse({}, {}, {}) must draw nothing", centre, a, b);
+            prop_assert_eq!(count(|plot| midpoint_ellipse(centre, a, b, plot)), 0, "midpoint_ellipse({}, {}, {}) has a negative semi-axis, one beyond MAX_SEMI_AXIS = {}, or reaches beyond ±MAX_COORD = {}: it must draw nothing (left: the pixels yours drew)", centre, a, b, MAX_SEMI_AXIS, MAX_COORD);
         }
         // Refusing one is no reason to refuse the next.
-        prop_assert!(count(|plot| midpoint_ellipse(Pixel::new(0, 0), 4, 2, plot)) > 0, "midpoint_ellipse((0, 0), 4, 2) drew nothing");
+        prop_assert!(count(|plot| midpoint_ellipse(Pixel::new(0, 0), 4, 2, plot)) > 0, "midpoint_ellipse((0, 0), 4, 2), called after midpoint_ellipse({}, {}, {}), drew nothing: refusing one ellipse is no reason to refuse the next", centre, a, b);
     }
 }
