@@ -2,10 +2,11 @@
 //! one from compute passes: the control stage (levels per patch), the
 //! evaluation stage (de Casteljau for bicubic patches and Bézier
 //! triangles), then shading (Phong, two lights, a texture, a wireframe)
-//! and trimming in the fragment shader. The task sheet is `README.md` next
+//! and trimming in the fragment shader; and a PN pass's control stage,
+//! which builds Bézier triangles from flat ones. The task sheet is `README.md` next
 //! to this crate.
 //!
-//! Your code is WGSL in four `.wgsl` files and Rust in two (the primitive
+//! Your code is WGSL in five `.wgsl` files and Rust in two (the primitive
 //! generator and the wireframe's edges): the given modules put the WGSL
 //! together with their own ([`wgsl::compose`]),
 //! check it, run it on the GPU (or on a software adapter such as
@@ -16,6 +17,7 @@
 //!  patches ─▶ control pass (src/control.wgsl) ─▶ levels ─▶ src/domain.rs (CPU)
 //!          ─▶ evaluation pass (src/evaluation.wgsl) ─▶ vertices ─▶ render pass:
 //!             src/shading.wgsl + src/trimming.wgsl + wireframe (shading.rs)
+//!  flat triangles + normals ─▶ PN pass (src/pn.wgsl) ─▶ Bézier triangles ─▶ evaluation
 //! ```
 #![warn(missing_docs)]
 
@@ -30,7 +32,7 @@ pub mod render;
 /// Given: the WGSL around your functions.
 pub mod shaders;
 
-/// Your WGSL files (tasks 1, 3, 4 and 5), compiled in, and how a pass
+/// Your WGSL files (tasks 1, 3, 4, 5 and 6), compiled in, and how a pass
 /// checks them.
 pub mod wgsl;
 

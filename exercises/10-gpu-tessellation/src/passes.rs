@@ -1,6 +1,7 @@
 //! The compute passes that stand in for the tessellation stages wgpu lacks:
-//! the control pass (levels per patch, your task 1) and the evaluation pass
-//! (surface points per domain point, your task 3). Given code: it puts
+//! the control pass (levels per patch, your task 1; PN triangles from flat
+//! ones, your task 6) and the evaluation pass (surface points per domain
+//! point, your task 3). Given code: it puts
 //! your WGSL file and the given WGSL of [`crate::shaders`] together
 //! ([`crate::wgsl::compose`]), runs it and reads the results back.
 //!
@@ -343,6 +344,87 @@ pub fn run_control(
             outer: l.outer,
             inner: l.inner,
         })
+        .collect())
+}
+
+/// A flat triangle with a normal at each vertex: what the PN pass (task 6)
+/// turns into a cubic Bézier triangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlatTriangle {
+    /// `P1, P2, P3`.
+    pub corners: [Vec3; 3],
+    /// `N1, N2, N3`, any non-zero length.
+    pub normals: [Vec3; 3],
+}
+
+/// WGSL `FlatTriangle` (96 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct GpuFlatTriangle {
+    corners: [[f32; 4]; 3],
+    normals: [[f32; 4]; 3],
+}
+
+/// Runs the PN pass with `pn` (task 6, [`crate::wgsl::PN`]) over
+/// `triangles` and returns the PN triangle of each, read back from the
+/// GPU: what seed 001's control stage hands to the evaluation stage.
+///
+/// Errors: a non-finite corner or normal, or a normal too short to
+/// normalise in `f32` ([`TessError::Invalid`]); WGSL that does not compile
+/// or validate ([`TessError::Wgsl`]).
+pub fn run_pn_control(
+    gpu: &Gpu,
+    pn: Piece,
+    triangles: &[FlatTriangle],
+) -> Result<Vec<BezierTriangle>, TessError> {
+    for (k, t) in triangles.iter().enumerate() {
+        if !t.corners.iter().chain(&t.normals).all(|v| v.is_finite()) {
+            return Err(TessError::Invalid(format!(
+                "flat triangle {k} has a non-finite corner or normal"
+            )));
+        }
+        if t.normals.iter().any(|n| n.length_squared() < f32::MIN_POSITIVE) {
+            return Err(TessError::Invalid(format!(
+                "flat triangle {k} has a zero normal, which has no direction"
+            )));
+        }
+    }
+    if triangles.is_empty() {
+        return Ok(Vec::new());
+    }
+    let source = crate::wgsl::compose(&[
+        Part::Yours(pn),
+        Part::Given("crate::shaders::COMMON", shaders::COMMON),
+        Part::Given("crate::shaders::PN", shaders::PN),
+    ])?;
+    let module = gpu.shader("pn", &source)?;
+    let pipeline = compute_pipeline(gpu, &module, "pn_main")?;
+    let flat: Vec<GpuFlatTriangle> = triangles
+        .iter()
+        .map(|t| GpuFlatTriangle {
+            corners: t.corners.map(|c| c.extend(1.0).to_array()),
+            normals: t.normals.map(|n| n.extend(0.0).to_array()),
+        })
+        .collect();
+    let flat_buffer = storage(
+        gpu,
+        "flat triangles",
+        bytemuck::cast_slice(&flat),
+        wgpu::BufferUsages::empty(),
+    );
+    let zeros = vec![[Vec4::ZERO; 10]; triangles.len()];
+    let pn_buffer = storage(
+        gpu,
+        "PN triangles",
+        bytemuck::cast_slice(&zeros),
+        wgpu::BufferUsages::COPY_SRC,
+    );
+    let group = bind(gpu, &pipeline, &[(0, &flat_buffer), (1, &pn_buffer)])?;
+    dispatch(gpu, &pipeline, &group, [triangles.len() as u32, 1]);
+    let points: Vec<[Vec4; 10]> = read_buffer(gpu, &pn_buffer)?;
+    Ok(points[..triangles.len()]
+        .iter()
+        .map(|p| BezierTriangle::from_points(p.map(|q| q.truncate().as_dvec3())))
         .collect())
 }
 

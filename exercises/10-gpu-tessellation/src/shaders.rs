@@ -49,6 +49,23 @@ fn control_main(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 ";
 
+/// Task 6's surroundings: the PN pass, one invocation per flat triangle,
+/// as the control stage of seed 001 §4.1 builds each PN triangle before
+/// the evaluation stage evaluates it.
+pub const PN: &str = r"
+// A flat triangle with a normal per vertex: corners[i].xyz and
+// normals[i].xyz (w unused; the normals need not be unit length).
+struct FlatTriangle { corners: array<vec4<f32>, 3>, normals: array<vec4<f32>, 3> }
+@group(0) @binding(0) var<storage, read> flat_triangles: array<FlatTriangle>;
+@group(0) @binding(1) var<storage, read_write> pn_triangles: array<TrianglePatch>;
+
+@compute @workgroup_size(64)
+fn pn_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x >= arrayLength(&flat_triangles) { return; }
+    pn_triangles[id.x] = pn_triangle(flat_triangles[id.x]);
+}
+";
+
 /// Task 3's surroundings: the evaluation pass, one invocation per
 /// (patch, domain point).
 pub const EVALUATION: &str = r"

@@ -1,5 +1,6 @@
 //! Your WGSL: the files `src/control.wgsl` (task 1), `src/evaluation.wgsl`
-//! (task 3), `src/shading.wgsl` (task 4) and `src/trimming.wgsl` (task 5),
+//! (task 3), `src/shading.wgsl` (task 4), `src/trimming.wgsl` (task 5) and
+//! `src/pn.wgsl` (task 6),
 //! compiled into the crate. They are WGSL files, so that an editor
 //! highlights and checks them as WGSL; each begins with what it must
 //! define.
@@ -75,6 +76,14 @@ pub const TRIMMING: Piece = Piece {
         "fn newton_root(c: TrimCurve, v: f32, t0: f32) -> f32",
         "fn inside_bezier_region(uv: vec2<f32>, upper: TrimCurve, lower: TrimCurve) -> bool",
     ],
+};
+
+/// Task 6: the PN triangle built from a flat one in the control stage.
+pub const PN: Piece = Piece {
+    task: "pn_control",
+    file: "src/pn.wgsl",
+    text: include_str!("pn.wgsl"),
+    functions: &["fn pn_triangle(t: FlatTriangle) -> TrianglePatch"],
 };
 
 impl Piece {
