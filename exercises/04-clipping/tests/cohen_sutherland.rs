@@ -15,16 +15,31 @@ fn outcodes_of_the_nine_regions() {
     //    0101 │ 0100 │ 0110
     let w = ten();
     let code = |x: f32, y: f32| outcode(Vec2::new(x, y), w);
-    assert_eq!(code(5.0, 5.0), Outcode::INSIDE);
-    assert_eq!(code(-1.0, 5.0), Outcode::LEFT);
-    assert_eq!(code(11.0, 5.0), Outcode::RIGHT);
-    assert_eq!(code(5.0, -1.0), Outcode::BOTTOM);
-    assert_eq!(code(5.0, 11.0), Outcode::TOP);
-    assert_eq!(code(-1.0, 11.0), Outcode::LEFT | Outcode::TOP);
-    assert_eq!(code(11.0, 11.0), Outcode::RIGHT | Outcode::TOP);
-    assert_eq!(code(-1.0, -1.0), Outcode::LEFT | Outcode::BOTTOM);
-    assert_eq!(code(11.0, -1.0), Outcode::RIGHT | Outcode::BOTTOM);
-    assert_eq!(Outcode::LEFT | Outcode::TOP, Outcode(0b1001));
+    for ((x, y), expected) in [
+        ((5.0, 5.0), Outcode::INSIDE),
+        ((-1.0, 5.0), Outcode::LEFT),
+        ((11.0, 5.0), Outcode::RIGHT),
+        ((5.0, -1.0), Outcode::BOTTOM),
+        ((5.0, 11.0), Outcode::TOP),
+        ((-1.0, 11.0), Outcode::LEFT | Outcode::TOP),
+        ((11.0, 11.0), Outcode::RIGHT | Outcode::TOP),
+        ((-1.0, -1.0), Outcode::LEFT | Outcode::BOTTOM),
+        ((11.0, -1.0), Outcode::RIGHT | Outcode::BOTTOM),
+    ] {
+        let yours = code(x, y);
+        assert!(
+            yours == expected,
+            "outcode(({x}, {y}), [0, 10]²): expected {:04b}, yours {:04b} (8 TOP y > max.y, \
+             4 BOTTOM y < min.y, 2 RIGHT x > max.x, 1 LEFT x < min.x)",
+            expected.0,
+            yours.0
+        );
+    }
+    assert_eq!(
+        Outcode::LEFT | Outcode::TOP,
+        Outcode(0b1001),
+        "LEFT | TOP is the bits 1 and 8 together, 1001"
+    );
 }
 
 #[testkit::test]
@@ -37,9 +52,21 @@ fn points_on_the_border_are_inside() {
         (5.0, 10.0),
         (10.0, 0.0),
     ] {
-        assert_eq!(outcode(Vec2::new(x, y), w), Outcode::INSIDE, "({x}, {y})");
+        let yours = outcode(Vec2::new(x, y), w);
+        assert!(
+            yours == Outcode::INSIDE,
+            "outcode(({x}, {y}), [0, 10]²): the window is closed, a point on its border is \
+             inside, 0000; yours {:04b}",
+            yours.0
+        );
     }
-    assert_eq!(outcode(Vec2::new(-1e-6, 10.0), w), Outcode::LEFT);
+    let yours = outcode(Vec2::new(-1e-6, 10.0), w);
+    assert!(
+        yours == Outcode::LEFT,
+        "outcode((−1e-6, 10), [0, 10]²): just left of the border (x < min.x) and on the top one, \
+         0001 LEFT; yours {:04b}",
+        yours.0
+    );
 }
 
 #[testkit::test]
@@ -78,6 +105,7 @@ proptest! {
         .into_iter()
         .filter(|(beyond, _)| *beyond)
         .fold(Outcode::INSIDE, |code, (_, bit)| code | bit);
-        prop_assert_eq!(outcode(p, window), expected);
+        let yours = outcode(p, window);
+        prop_assert!(yours == expected, "outcode({}, {:?}): expected {:04b}, yours {:04b} (8 TOP y > max.y, 4 BOTTOM y < min.y, 2 RIGHT x > max.x, 1 LEFT x < min.x)", p, window, expected.0, yours.0);
     }
 }

@@ -6,7 +6,10 @@ mod common;
 use canvas::{Rgba, Vec2, Vec4};
 use clipping::sutherland_hodgman::{clip_against_plane, clip_polygon};
 use clipping::{ClipError, ClipPlane, ClipVertex};
-use common::{VOLUME_PLANES, cv, excess, flat, is_on_edge, outline_distance, shoelace};
+use common::{
+    VOLUME_PLANES, assert_same_polygon, cv, excess, flat, is_on_edge, outline_distance,
+    polygon_text, shoelace, vertex_text,
+};
 use proptest::prelude::*;
 
 /// The plane `x ≤ w`.
@@ -14,16 +17,54 @@ const RIGHT: ClipPlane = VOLUME_PLANES[0];
 /// Positions of order 1..10 in `f32`: rounding stays far below this.
 const TOLERANCE: f32 = 1e-5;
 
+/// `clip_polygon` against the six planes, for valid input.
+#[track_caller]
 fn clip(polygon: &[ClipVertex]) -> Vec<ClipVertex> {
-    clip_polygon(polygon, &VOLUME_PLANES).expect("valid input")
+    clip_polygon(polygon, &VOLUME_PLANES).unwrap_or_else(|e| {
+        panic!(
+            "clip_polygon(…, the six planes): every coordinate is finite and within \
+             MAX_CLIP_COORD, so the answer is Ok; yours {e:?}\ninput:\n{}",
+            polygon_text(polygon)
+        )
+    })
 }
 
-fn assert_close(got: &[ClipVertex], expected: &[ClipVertex]) {
-    assert_eq!(got.len(), expected.len(), "vertex count: got {got:#?}");
+/// `clip_against_plane`, for valid input.
+#[track_caller]
+fn clip_one(polygon: &[ClipVertex], plane: ClipPlane) -> Vec<ClipVertex> {
+    clip_against_plane(polygon, plane).unwrap_or_else(|e| {
+        panic!(
+            "clip_against_plane(…, {}): every coordinate is finite and within MAX_CLIP_COORD, \
+             so the answer is Ok; yours {e:?}\ninput:\n{}",
+            plane.vector,
+            polygon_text(polygon)
+        )
+    })
+}
+
+/// Asserts that `got` is `expected` vertex for vertex, to [`TOLERANCE`]
+/// in position and colour; names `what` and shows both polygons.
+#[track_caller]
+fn assert_close(got: &[ClipVertex], expected: &[ClipVertex], what: &str) {
+    let both = || {
+        format!(
+            "expected:\n{}\nyours:\n{}",
+            polygon_text(expected),
+            polygon_text(got)
+        )
+    };
+    assert!(
+        got.len() == expected.len(),
+        "{what}: yours has {} vertices, expected {}\n{}",
+        got.len(),
+        expected.len(),
+        both()
+    );
     for (i, (g, e)) in got.iter().zip(expected).enumerate() {
         assert!(
             g.position.distance(e.position) <= TOLERANCE && g.colour.approx_eq(e.colour, TOLERANCE),
-            "vertex {i}: expected {e:?}, got {g:?}"
+            "{what}: vertex {i} differs by more than {TOLERANCE} in position or colour\n{}",
+            both()
         );
     }
 }
@@ -34,8 +75,11 @@ fn keeps_what_is_inside(polygon: &[ClipVertex], got: &[ClipVertex]) -> Result<()
     let inside = polygon.len() >= 3 && polygon.iter().any(|v| excess(v.position) < -1e-3);
     if inside && got.len() < 3 {
         return Err(TestCaseError::fail(format!(
-            "a polygon with a vertex inside the volume was clipped to {} vertices",
-            got.len()
+            "a polygon with a vertex inside the volume keeps at least that vertex (3 or more \
+             vertices), yours clipped it to {}\ninput:\n{}\nyours:\n{}",
+            got.len(),
+            polygon_text(polygon),
+            polygon_text(got)
         )));
     }
     Ok(())
@@ -68,10 +112,20 @@ fn triangle_across_the_right_plane_becomes_a_quadrilateral() {
         ),
         colour: Rgba::GREEN.lerp(Rgba::BLUE, 2.0 / 3.0 + eps),
     };
-    let got = clip_against_plane(&[a, b, c], RIGHT).expect("valid input");
-    assert_close(&got, &[a, i1, i2, c]);
+    let got = clip_one(&[a, b, c], RIGHT);
+    assert_close(
+        &got,
+        &[a, i1, i2, c],
+        "clip_against_plane(A (0, 0), B (3, 0), C (0, 3); x ≤ w): from the closing edge C → A \
+         on, inside E emits E, leaving emits I, entering emits I then E: A, I₁, I₂, C",
+    );
     // The new vertices lie just inside, by the nudge.
-    assert!(got[1].position.x < 1.0 && got[2].position.x < 1.0);
+    let (x1, x2) = (got[1].position.x, got[2].position.x);
+    assert!(
+        x1 < 1.0 && x2 < 1.0,
+        "the crossings I₁, I₂ lie just inside x = w = 1, t moved by CLIP_NUDGE towards the inside \
+         endpoint: yours at x = {x1} and x = {x2}"
+    );
 }
 
 #[testkit::test]
@@ -85,8 +139,15 @@ fn the_closing_edge_is_clipped_too() {
         flat(0.0, 0.5, Rgba::WHITE),
         flat(3.0, 0.25, Rgba::WHITE),
     ];
-    let got = clip_against_plane(&polygon, RIGHT).expect("valid input");
-    assert_eq!(got.len(), 4, "{got:#?}");
+    let got = clip_one(&polygon, RIGHT);
+    let call = "clip_against_plane(A (0, 0), B (0, 0.5), C (3, 0.25); x ≤ w)";
+    assert!(
+        got.len() == 4,
+        "{call}: A, B and the crossings on B → C and on the closing edge C → A are 4 vertices, \
+         yours {}:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
     // Both new vertices on x ≈ 1: one on B → C (y ≈ 5/12), one on C → A
     // (y ≈ 1/12).
     let ys: Vec<f32> = got
@@ -94,9 +155,21 @@ fn the_closing_edge_is_clipped_too() {
         .filter(|v| (v.position.x - 1.0).abs() < 1e-4)
         .map(|v| v.position.y)
         .collect();
-    assert_eq!(ys.len(), 2, "{got:#?}");
-    assert!(ys.iter().any(|y| (y - 5.0 / 12.0).abs() < 1e-4), "{ys:?}");
-    assert!(ys.iter().any(|y| (y - 1.0 / 12.0).abs() < 1e-4), "{ys:?}");
+    assert!(
+        ys.len() == 2,
+        "{call}: two new vertices on x = 1 (B → C and C → A cross it), yours has {}:\n{}",
+        ys.len(),
+        polygon_text(&got)
+    );
+    assert!(
+        ys.iter().any(|y| (y - 5.0 / 12.0).abs() < 1e-4),
+        "{call}: the crossing of B → C at y = 5/12 is missing; yours on x = 1 at y = {ys:?}"
+    );
+    assert!(
+        ys.iter().any(|y| (y - 1.0 / 12.0).abs() < 1e-4),
+        "{call}: the crossing of the closing edge C → A at y = 1/12 is missing (the walk starts \
+         with the edge from the last vertex to the first); yours on x = 1 at y = {ys:?}"
+    );
 }
 
 #[testkit::test]
@@ -111,11 +184,24 @@ fn crossing_at_a_vertex_on_the_plane_is_that_vertex() {
         flat(3.0, 0.0, Rgba::GREEN),
         flat(0.0, 1.0, Rgba::BLUE),
     );
-    let got = clip_against_plane(&[a, b, c], RIGHT).expect("valid input");
-    assert_eq!(got.len(), 4, "{got:#?}");
-    assert_eq!(got[0], a);
-    assert_eq!(got[1], a, "the crossing on A → B");
-    assert_eq!(got[3], c);
+    let got = clip_one(&[a, b, c], RIGHT);
+    let call = "clip_against_plane(A (1, 0), B (3, 0), C (0, 1); x ≤ w), A on the plane";
+    assert!(
+        got.len() == 4,
+        "{call}: A (on the plane counts as inside), the crossing on A → B (A itself), the \
+         crossing on B → C, and C are 4 vertices, yours {}:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
+    let rule = "the crossing at t = 0 is A itself, the nudged t kept in [0, 1]";
+    for (i, vertex, name) in [(0, a, "A"), (1, a, "the crossing on A → B"), (3, c, "C")] {
+        assert!(
+            got[i] == vertex,
+            "{call}: vertex {i} is {name}, {} ({rule}); yours {}",
+            vertex_text(vertex),
+            vertex_text(got[i])
+        );
+    }
 }
 
 #[testkit::test]
@@ -127,7 +213,12 @@ fn polygon_inside_comes_back_unchanged() {
         cv(1.0, 1.0, 1.0, 1.0, Rgba::BLUE),
         cv(-1.0, 1.0, 1.0, 1.0, Rgba::WHITE),
     ];
-    assert_eq!(clip(&face), face);
+    assert_same_polygon(
+        &clip(&face),
+        &face,
+        "a face of the cube on the far plane z = w (on a plane counts as inside) comes back \
+         unchanged, starting with the same vertex",
+    );
     // Homogeneous: w = 4 makes the cube 4 times larger before the division.
     let pentagon: Vec<ClipVertex> = (0..5)
         .map(|k| {
@@ -141,7 +232,11 @@ fn polygon_inside_comes_back_unchanged() {
             )
         })
         .collect();
-    assert_eq!(clip(&pentagon), pentagon);
+    assert_same_polygon(
+        &clip(&pentagon),
+        &pentagon,
+        "a pentagon inside −w ≤ x, y, z ≤ w with w = 4 (|x|, |y| ≤ 3) comes back unchanged",
+    );
 }
 
 #[testkit::test]
@@ -151,14 +246,25 @@ fn polygon_outside_vanishes() {
         flat(4.0, -3.0, Rgba::WHITE),
         flat(4.0, 3.0, Rgba::WHITE),
     ];
-    assert!(clip(&beyond_right).is_empty());
+    let got = clip(&beyond_right);
+    assert!(
+        got.is_empty(),
+        "a triangle wholly beyond x = w vanishes, yours:\n{}",
+        polygon_text(&got)
+    );
     // Behind the eye (w < 0): outside although x/w, y/w, z/w look fine.
     let behind = [
         cv(-0.1, 0.0, -0.1, -1.0, Rgba::WHITE),
         cv(0.1, 0.0, -0.1, -1.0, Rgba::WHITE),
         cv(0.0, 0.1, -0.1, -1.0, Rgba::WHITE),
     ];
-    assert!(clip(&behind).is_empty());
+    let got = clip(&behind);
+    assert!(
+        got.is_empty(),
+        "a triangle behind the eye (w = −1) is outside, although x/w, y/w, z/w lie in [−1, 1]; \
+         yours:\n{}",
+        polygon_text(&got)
+    );
     // A large triangle passing a corner of the square: no vertex beyond a
     // common plane, yet nothing of it is inside.
     //
@@ -170,10 +276,23 @@ fn polygon_outside_vanishes() {
         flat(0.0, -2.5, Rgba::WHITE),
         flat(-9.0, -9.0, Rgba::WHITE),
     ];
-    assert!(clip(&passing).is_empty());
+    let got = clip(&passing);
+    assert!(
+        got.is_empty(),
+        "(−2.5, 0), (0, −2.5), (−9, −9) passes below the corner (−1, −1): nothing of it is \
+         inside, yours:\n{}",
+        polygon_text(&got)
+    );
     // Moved onto the square, the same triangle is kept in part.
     let crossing = passing.map(|v| flat(v.position.x + 2.0, v.position.y + 2.0, v.colour));
-    assert!(clip(&crossing).len() >= 3, "{:#?}", clip(&crossing));
+    let got = clip(&crossing);
+    assert!(
+        got.len() >= 3,
+        "the same triangle moved by (2, 2) overlaps the square: 3 or more vertices are left, \
+         yours {}:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
 }
 
 #[testkit::test]
@@ -190,16 +309,28 @@ fn triangle_covering_the_square_is_cut_to_the_square() {
         flat(-3.0, 9.0, Rgba::WHITE),
     ];
     let got = clip(&polygon);
-    assert_eq!(got.len(), 4, "{got:#?}");
+    let call = "clip((−3, −3), (9, −3), (−3, 9)), covering [−1, 1]²";
+    assert!(
+        got.len() == 4,
+        "{call}: the square's four corners are left, yours {} vertices:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
     for corner in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
         let c = Vec2::new(corner.0, corner.1);
         assert!(
             got.iter()
                 .any(|v| v.position.truncate().truncate().distance(c) < 1e-4),
-            "corner {c} missing: {got:#?}"
+            "{call}: the corner {c} is missing (it comes from an edge an earlier pass made \
+             along the border); yours:\n{}",
+            polygon_text(&got)
         );
     }
-    assert!((shoelace(&got) - 4.0).abs() < 1e-4);
+    let area = shoelace(&got);
+    assert!(
+        (area - 4.0).abs() < 1e-4,
+        "{call}: the square, counter-clockwise, has area 4; yours {area}"
+    );
 }
 
 #[testkit::test]
@@ -215,28 +346,65 @@ fn depth_and_colour_are_interpolated_at_the_near_plane() {
     ];
     let got = clip(&polygon);
     let new: Vec<&ClipVertex> = got.iter().filter(|v| !polygon.contains(v)).collect();
-    assert_eq!(new.len(), 2, "{got:#?}");
+    assert!(
+        new.len() == 2,
+        "the edges into and out of (0, 0.5, −3, 1) cross the near plane −z ≤ w: two new \
+         vertices, yours {}:\n{}",
+        new.len(),
+        polygon_text(&got)
+    );
     for v in new {
         let depth = v.position.z / v.position.w;
-        assert!((depth + 1.0).abs() < 1e-4, "depth {depth}");
-        assert!((v.colour.r - 1.0 / 3.0).abs() < 1e-4, "{:?}", v.colour);
+        assert!(
+            (depth + 1.0).abs() < 1e-4,
+            "a vertex on the near plane has z/w = −1; yours {} has {depth}",
+            vertex_text(*v)
+        );
+        assert!(
+            (v.colour.r - 1.0 / 3.0).abs() < 1e-4,
+            "the crossing lies at t = l_a / (l_a − l_b) = 1/3 from the black vertex inside, so \
+             its colour is black.lerp(white, 1/3), red 1/3 (interpolated in clip space); yours {}",
+            vertex_text(*v)
+        );
     }
 }
 
 #[testkit::test]
 fn degenerate_polygons_are_clipped_like_any_other() {
-    assert_eq!(clip(&[]), vec![]);
+    assert_same_polygon(&clip(&[]), &[], "no vertices clip to no vertices");
     let point = [flat(0.5, 0.5, Rgba::WHITE)];
-    assert_eq!(clip(&point), point);
-    assert!(clip(&[flat(5.0, 0.5, Rgba::WHITE)]).is_empty());
+    assert_same_polygon(
+        &clip(&point),
+        &point,
+        "one vertex inside comes back unchanged",
+    );
+    assert_same_polygon(
+        &clip(&[flat(5.0, 0.5, Rgba::WHITE)]),
+        &[],
+        "one vertex outside (x = 5 > w) vanishes",
+    );
     // A "polygon" of two vertices is an edge there and back: its part
     // inside, end to end.
     let got = clip(&[flat(0.0, 0.0, Rgba::WHITE), flat(4.0, 0.0, Rgba::WHITE)]);
-    assert_eq!(got.len(), 3, "{got:#?}");
-    assert!(got.iter().all(|v| excess(v.position) <= 0.0));
-    assert_eq!(
-        clip_polygon(&point, &[]).expect("no planes: nothing to do"),
-        point
+    let call = "clip((0, 0), (4, 0))";
+    assert!(
+        got.len() == 3,
+        "{call}, an edge there and back: the edge (0, 0) → (4, 0) leaves at x = 1, the closing \
+         edge comes back in, so (0, 0) and two crossings near (1, 0) are left; yours {}:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
+    assert!(
+        got.iter().all(|v| excess(v.position) <= 0.0),
+        "{call}: every vertex left lies inside the volume; yours:\n{}",
+        polygon_text(&got)
+    );
+    assert_same_polygon(
+        &clip_polygon(&point, &[]).unwrap_or_else(|e| {
+            panic!("clip_polygon(one vertex, &[]): with no planes there is nothing to do, Ok; yours {e:?}")
+        }),
+        &point,
+        "clip_polygon(polygon, &[]): an empty list of planes returns the polygon unchanged",
     );
 }
 
@@ -245,32 +413,46 @@ fn bad_input_is_an_error_not_a_panic() {
     let good = flat(0.0, 0.0, Rgba::WHITE);
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
         let polygon = [good, good, cv(0.0, bad, 0.0, 1.0, Rgba::WHITE)];
+        let rule = format!(
+            "vertex 2 has y = {bad}: a non-finite coordinate is ClipError::NonFinite naming \
+             the first such vertex"
+        );
         assert_eq!(
             clip_polygon(&polygon, &VOLUME_PLANES),
-            Err(ClipError::NonFinite { index: 2 })
+            Err(ClipError::NonFinite { index: 2 }),
+            "clip_polygon: {rule}"
         );
         assert_eq!(
             clip_against_plane(&polygon, RIGHT),
-            Err(ClipError::NonFinite { index: 2 })
+            Err(ClipError::NonFinite { index: 2 }),
+            "clip_against_plane: {rule}"
         );
         let plane = ClipPlane::new(Vec4::new(bad, 0.0, 0.0, -1.0));
         assert_eq!(
             clip_polygon(&[good], &[RIGHT, plane]),
-            Err(ClipError::InvalidPlane { index: 1 })
+            Err(ClipError::InvalidPlane { index: 1 }),
+            "clip_polygon with planes [x ≤ w, ({bad}, 0, 0, −1)]: a non-finite plane is \
+             ClipError::InvalidPlane naming its index in the list"
         );
         assert_eq!(
             clip_against_plane(&[good], plane),
-            Err(ClipError::InvalidPlane { index: 0 })
+            Err(ClipError::InvalidPlane { index: 0 }),
+            "clip_against_plane with the plane ({bad}, 0, 0, −1): a non-finite plane is \
+             ClipError::InvalidPlane with index 0"
         );
     }
     let huge = [good, cv(1e30, 0.0, 0.0, 1.0, Rgba::WHITE), good];
+    let rule = "vertex 1 has x = 1e30: a coordinate beyond ±MAX_CLIP_COORD (1e18) is \
+                ClipError::OutOfRange naming the vertex";
     assert_eq!(
         clip_polygon(&huge, &VOLUME_PLANES),
-        Err(ClipError::OutOfRange { index: 1 })
+        Err(ClipError::OutOfRange { index: 1 }),
+        "clip_polygon: {rule}"
     );
     assert_eq!(
         clip_against_plane(&huge, RIGHT),
-        Err(ClipError::OutOfRange { index: 1 })
+        Err(ClipError::OutOfRange { index: 1 }),
+        "clip_against_plane: {rule}"
     );
 }
 
@@ -288,7 +470,9 @@ fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
     assert!(
         got.iter()
             .all(|v| v.position.is_finite() && excess(v.position) < 1e-3),
-        "{got:#?}"
+        "a triangle with corners at ±1e17: whatever is left must be finite and inside the \
+         volume (to 1e-3); yours:\n{}",
+        polygon_text(&got)
     );
     // At the same scale but with w as large, the triangle lies in the
     // volume (touching its faces) and is kept.
@@ -301,7 +485,14 @@ fn large_coordinates_within_the_limit_give_finite_vertices_inside() {
             v.colour,
         )
     });
-    assert!(clip(&polygon).len() >= 3, "{:#?}", clip(&polygon));
+    let got = clip(&polygon);
+    assert!(
+        got.len() >= 3,
+        "the triangle at ±1e15 with w = 1e15 lies in the volume (touching its faces) and is \
+         kept; yours {} vertices:\n{}",
+        got.len(),
+        polygon_text(&got)
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -393,7 +584,11 @@ fn clipped_meshes_keep_everything_inside_and_lose_what_is_outside() {
         for polygon in &polygons {
             let got = clip(polygon);
             if polygon.iter().all(|v| excess(v.position) <= 0.0) {
-                assert_eq!(&got, polygon, "{name}: a face inside changed");
+                assert_same_polygon(
+                    &got,
+                    polygon,
+                    &format!("{name}: a face inside the volume comes back unchanged"),
+                );
             } else if got.is_empty() {
                 dropped += 1;
             } else {
@@ -401,11 +596,18 @@ fn clipped_meshes_keep_everything_inside_and_lose_what_is_outside() {
             }
             assert!(
                 got.iter().all(|v| excess(v.position) <= 1e-5),
-                "{name}: {got:?}"
+                "{name}: every vertex of a clipped face lies inside the volume (to 1e-5); \
+                 face:\n{}\nyours:\n{}",
+                polygon_text(polygon),
+                polygon_text(&got)
             );
         }
         // The sheet's point of these meshes: some faces cross the border.
-        assert!(cut > 0, "{name}: {cut} cut, {dropped} dropped");
+        assert!(
+            cut > 0,
+            "{name}: some faces cross the border of the volume and are cut to what is inside; \
+             yours cut none ({dropped} dropped, the rest unchanged)"
+        );
     }
 }
 
@@ -480,7 +682,7 @@ proptest! {
         let got = clip(&polygon);
         keeps_what_is_inside(&polygon, &got)?;
         for v in got {
-            prop_assert!(excess(v.position) <= 1e-5, "{:?} outside by {}", v, excess(v.position));
+            prop_assert!(excess(v.position) <= 1e-5, "every vertex clip returns lies inside −w ≤ x, y, z ≤ w (to 1e-5); yours {} is outside by {}", vertex_text(v), excess(v.position));
         }
     }
 
@@ -495,7 +697,7 @@ proptest! {
         // Keep only vertices that are inside in f32 too (x·w may round out).
         let polygon: Vec<ClipVertex> =
             polygon.into_iter().filter(|v| excess(v.position) <= 0.0).collect();
-        prop_assert_eq!(clip(&polygon), polygon);
+        assert_same_polygon(&clip(&polygon), &polygon, "a polygon inside the volume comes back unchanged, starting with the same vertex");
     }
 
     #[testkit::test]
@@ -516,10 +718,12 @@ proptest! {
                 v
             })
             .collect();
-        prop_assert!(clip(&moved).is_empty());
+        let got = clip(&moved);
+        prop_assert!(got.is_empty(), "a polygon wholly beyond plane {} ({}) vanishes\ninput:\n{}\nyours:\n{}", k, VOLUME_PLANES[k].vector, polygon_text(&moved), polygon_text(&got));
         // Refusing one is no reason to refuse the next.
         let inside = [flat(-0.5, -0.5, Rgba::WHITE), flat(0.5, -0.5, Rgba::WHITE), flat(0.0, 0.5, Rgba::WHITE)];
-        prop_assert_eq!(clip(&inside).len(), 3);
+        let got = clip(&inside);
+        prop_assert_eq!(got.len(), 3, "a triangle inside, clipped after one that vanished, keeps its 3 vertices (left: yours):\n{}", polygon_text(&got));
     }
 
     #[testkit::test]
@@ -530,7 +734,7 @@ proptest! {
         // A vertex that rounding left a hair outside may be cut off again,
         // by a crossing anywhere on an edge that runs along the plane; the
         // outline moves no further than that hair.
-        prop_assert!(outline_distance(&once, &twice) <= 1e-4, "{:#?}\nvs\n{:#?}", once, twice);
+        prop_assert!(outline_distance(&once, &twice) <= 1e-4, "a clipped polygon lies in the volume: clipping it again moves its outline by no more than rounding (1e-4), yours by {}\nonce:\n{}\ntwice:\n{}", outline_distance(&once, &twice), polygon_text(&once), polygon_text(&twice));
     }
 
     #[testkit::test]
@@ -539,7 +743,7 @@ proptest! {
         k in 0usize..6,
     ) {
         let plane = VOLUME_PLANES[k];
-        let got = clip_against_plane(&polygon, plane).expect("valid input");
+        let got = clip_one(&polygon, plane);
         // The test `v · p ≤ 0` written out: task 1's `inside` is not used,
         // so that this task is graded on its own.
         let inside = |v: ClipVertex| plane.distance(v.position) <= 0.0;
@@ -549,14 +753,14 @@ proptest! {
                 let (a, b) = (polygon[i], polygon[(i + 1) % n]);
                 inside(a) != inside(b) && is_on_edge(*v, a, b, 1e-4)
             });
-            prop_assert!(on_an_edge, "{:?} lies on no crossing edge", v);
-            prop_assert!(v.position.dot(plane.vector) <= 0.0, "{:?} outside", v);
+            prop_assert!(on_an_edge, "clip_against_plane(…, {}): the new vertex {} is not S.lerp(E, t) in position and colour for any edge S → E with one endpoint inside\ninput:\n{}", plane.vector, vertex_text(*v), polygon_text(&polygon));
+            prop_assert!(v.position.dot(plane.vector) <= 0.0, "clip_against_plane(…, {}): the new vertex {} lies outside (v · p = {} > 0); t is nudged towards the inside endpoint", plane.vector, vertex_text(*v), v.position.dot(plane.vector));
         }
         // Inside vertices are kept, in order; outside ones are dropped.
         let kept: Vec<ClipVertex> = got.iter().copied().filter(|v| polygon.contains(v)).collect();
         let expected: Vec<ClipVertex> =
             polygon.iter().copied().filter(|&v| inside(v)).collect();
-        prop_assert_eq!(kept, expected);
+        assert_same_polygon(&kept, &expected, &format!("clip_against_plane(…, {}): the input's vertices in yours are exactly those inside (v · p ≤ 0), in order", plane.vector));
     }
 
     #[testkit::test]
@@ -578,7 +782,7 @@ proptest! {
             let c = [v.position.x, v.position.y, v.position.z, v.position.w,
                      v.colour.r, v.colour.g, v.colour.b, v.colour.a];
             for i in 0..8 {
-                prop_assert!(lo[i] - 1e-5 <= c[i] && c[i] <= hi[i] + 1e-5, "{:?}", v);
+                prop_assert!(lo[i] - 1e-5 <= c[i] && c[i] <= hi[i] + 1e-5, "every vertex is a mix of the input's, inside its bounding box: {} of {} is {}, the input's lie in [{}, {}]", ["x", "y", "z", "w", "red", "green", "blue", "alpha"][i], vertex_text(v), c[i], lo[i], hi[i]);
             }
         }
     }
@@ -589,7 +793,7 @@ proptest! {
         let got = clip(&vertices);
         let expected = common::convex_area_in_square(&polygon);
         prop_assert!((shoelace(&got).abs() - expected).abs() <= 1e-4,
-            "area {} vs {} (by the hull of the crossings)", shoelace(&got), expected);
+            "a convex polygon keeps exactly its area inside [−1, 1]²: yours {}, expected {} (the hull of the vertices inside and the edges' crossings)\nyours:\n{}", shoelace(&got).abs(), expected, polygon_text(&got));
     }
 
     #[testkit::test]
@@ -597,8 +801,8 @@ proptest! {
         let got = clip(&polygon);
         keeps_what_is_inside(&polygon, &got)?;
         let (before, after) = (shoelace(&polygon), shoelace(&got));
-        prop_assert!(after.abs() <= before.abs() + 1e-5, "{} → {}", before, after);
+        prop_assert!(after.abs() <= before.abs() + 1e-5, "clipping never adds area: the polygon's signed area {}, yours after clipping {}", before, after);
         // Nor does it change the winding.
-        prop_assert!(after * before >= -1e-9);
+        prop_assert!(after * before >= -1e-9, "clipping keeps the winding: signed area {} before, yours {} after (the sign flipped)", before, after);
     }
 }

@@ -47,9 +47,11 @@ pub fn kept_if_visible(
         super::visible_part(segment, window).is_some_and(|[a, b]| super::dist(a, b) > 1e-3);
     prop_assert!(
         !visible || got.is_some(),
-        "{:?} crosses {:?} but was rejected",
+        "{:?} crosses {:?}: its visible part {:?} is longer than rounding and is kept, yours \
+         rejected it",
         segment,
-        window
+        window,
+        super::visible_part(segment, window)
     );
     Ok(())
 }
@@ -80,7 +82,8 @@ pub fn segment_inside_is_unchanged(clipper: Clipper) {
         assert_eq!(
             clip(clipper, seg, ten()),
             Some(seg),
-            "a segment inside the window (its border included) is kept as it is"
+            "{seg:?} in [0, 10]²: a segment inside the window (its border included) is kept as \
+             it is"
         );
     }
 }
@@ -227,13 +230,17 @@ pub fn degenerate_windows_clip_to_a_line_or_a_point(clipper: Clipper) {
 
 pub fn very_long_segments_are_cut_to_the_window(clipper: Clipper) {
     let m = MAX_COORD as f32;
-    let got = clip(clipper, s(-m, -m, m, m), ten()).expect("crosses the window");
+    let got = clip(clipper, s(-m, -m, m, m), ten()).expect(
+        "(−MAX_COORD, −MAX_COORD) → (MAX_COORD, MAX_COORD) crosses [0, 10]²: a piece is left, \
+         yours None",
+    );
     assert_close(
         Some(got),
         Some(s(0.0, 0.0, 10.0, 10.0)),
         "a diagonal from −MAX_COORD to MAX_COORD",
     );
-    let got = clip(clipper, s(-m, 5.0, m, 5.0), ten()).expect("crosses the window");
+    let got = clip(clipper, s(-m, 5.0, m, 5.0), ten())
+        .expect("(−MAX_COORD, 5) → (MAX_COORD, 5) crosses [0, 10]²: a piece is left, yours None");
     assert_eq!(
         got,
         s(0.0, 5.0, 10.0, 5.0),
@@ -247,24 +254,28 @@ pub fn bad_endpoints_are_errors_not_panics(clipper: Clipper) {
         assert_eq!(
             clipper(s(bad, 0.0, 1.0, 1.0), window),
             Err(ClipError::NonFinite { index: 0 }),
-            "a {bad} coordinate of endpoint 0"
+            "({bad}, 0) → (1, 1): a NaN or infinite coordinate is ClipError::NonFinite naming \
+             the endpoint, 0 here, not a panic"
         );
         assert_eq!(
             clipper(s(0.0, 0.0, 1.0, bad), window),
             Err(ClipError::NonFinite { index: 1 }),
-            "a {bad} coordinate of endpoint 1"
+            "(0, 0) → (1, {bad}): a NaN or infinite coordinate is ClipError::NonFinite naming \
+             the endpoint, 1 here, not a panic"
         );
     }
     for huge in [1e30, -1e9, f32::MAX, 2.0 * MAX_COORD as f32] {
         assert_eq!(
             clipper(s(0.0, 0.0, huge, 1.0), window),
             Err(ClipError::OutOfRange { index: 1 }),
-            "endpoint 1 at x = {huge}, beyond MAX_COORD"
+            "(0, 0) → ({huge}, 1): a coordinate beyond ±MAX_COORD is ClipError::OutOfRange \
+             naming the endpoint, 1 here"
         );
         assert_eq!(
             clipper(s(0.0, huge, 1.0, 1.0), window),
             Err(ClipError::OutOfRange { index: 0 }),
-            "endpoint 0 at y = {huge}, beyond MAX_COORD"
+            "(0, {huge}) → (1, 1): a coordinate beyond ±MAX_COORD is ClipError::OutOfRange \
+             naming the endpoint, 0 here"
         );
     }
 }
@@ -301,24 +312,29 @@ pub fn result_lies_in_the_window_on_the_segment_in_its_direction(
         .expect("valid window");
         prop_assert!(
             grown.contains(got.from) && grown.contains(got.to),
-            "the piece {:?} leaves the window {:?}",
-            got,
-            window
+            "{:?} in {:?}: the piece lies in the window (to 1e-4), yours {:?} leaves it",
+            segment,
+            window,
+            got
         );
         let d = segment.to - segment.from;
         prop_assert!(
             (got.to - got.from).dot(d) >= -1e-6,
-            "direction reversed: {:?} from {:?}",
-            got,
-            segment
+            "{:?} in {:?}: the piece keeps the segment's direction, yours {:?} runs the other way",
+            segment,
+            window,
+            got
         );
         for p in [got.from, got.to] {
             let off = (p - segment.from).perp_dot(d).abs() / d.length().max(1e-30);
             prop_assert!(
                 off <= 1e-3 || d.length() == 0.0,
-                "{:?} is off the line of {:?} by {}",
-                p,
+                "{:?} in {:?}: the piece lies on the segment's line (to 1e-3), yours {:?} has the \
+                 endpoint {} off it by {}",
                 segment,
+                window,
+                got,
+                p,
                 off
             );
         }
@@ -362,13 +378,33 @@ pub fn reversed_segment_gives_the_reversed_piece(
     match (forward, backward) {
         (Some(f), Some(b)) => prop_assert!(
             f.from.distance(b.to) <= 1e-4 && f.to.distance(b.from) <= 1e-4,
-            "the reversed segment must give the reversed piece: {:?} vs {:?}",
+            "{:?} in {:?}: the reversed segment gives the reversed piece (to 1e-4); yours \
+             {:?} forwards, {:?} reversed",
+            segment,
+            window,
             f,
             b
         ),
         (None, None) => {}
         (Some(x), None) | (None, Some(x)) => {
-            prop_assert!(x.from.distance(x.to) <= 1e-4, "kept one way only: {:?}", x)
+            prop_assert!(
+                x.from.distance(x.to) <= 1e-4,
+                "{:?} in {:?}: the reversed segment gives the reversed piece; yours keeps {:?} \
+                 {} and rejects it {}",
+                segment,
+                window,
+                x,
+                if forward.is_some() {
+                    "forwards"
+                } else {
+                    "reversed"
+                },
+                if forward.is_some() {
+                    "reversed"
+                } else {
+                    "forwards"
+                }
+            )
         }
     }
     Ok(())

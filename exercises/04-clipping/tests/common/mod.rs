@@ -36,6 +36,53 @@ pub fn flat(x: f32, y: f32, colour: Rgba) -> ClipVertex {
     cv(x, y, 0.0, 1.0, colour)
 }
 
+/// A vertex in one line: `(x, y, z, w) rgba(r, g, b, a)`.
+pub fn vertex_text(v: ClipVertex) -> String {
+    let ([x, y, z, w], c) = (v.position.to_array(), v.colour);
+    format!(
+        "({x}, {y}, {z}, {w}) rgba({}, {}, {}, {})",
+        c.r, c.g, c.b, c.a
+    )
+}
+
+/// A polygon for a message: one numbered vertex a line (see
+/// [`vertex_text`]), or `no vertices`.
+pub fn polygon_text(polygon: &[ClipVertex]) -> String {
+    if polygon.is_empty() {
+        return "  no vertices".to_string();
+    }
+    polygon
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| format!("  {i}: {}", vertex_text(v)))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Asserts that `yours` is `expected`, vertex for vertex and exactly. On
+/// failure it names `what`, the first vertex that differs (or both vertex
+/// counts) and lists both polygons one vertex a line, rather than dumping
+/// two vectors of structs.
+#[track_caller]
+pub fn assert_same_polygon(yours: &[ClipVertex], expected: &[ClipVertex], what: &str) {
+    if yours == expected {
+        return;
+    }
+    let first = match yours.iter().zip(expected).position(|(y, e)| y != e) {
+        Some(i) => format!("vertex {i} differs"),
+        None => format!(
+            "yours has {} vertices, expected {}",
+            yours.len(),
+            expected.len()
+        ),
+    };
+    panic!(
+        "{what}: {first}\nexpected:\n{}\nyours:\n{}",
+        polygon_text(expected),
+        polygon_text(yours)
+    );
+}
+
 /// How far outside the volume `v` lies: the largest of `|x| − w`,
 /// `|y| − w`, `|z| − w`, in `f64` (≤ 0 inside).
 pub fn excess(v: Vec4) -> f64 {
