@@ -14,6 +14,10 @@ pub mod midpoint;
 /// Task 3: the double-step (N-step) line, equal to the midpoint line.
 pub mod double_step;
 
+/// Task 3b (bonus): the N-step line for any N, one decision per N pixels,
+/// equal to the midpoint line.
+pub mod n_step;
+
 /// Task 4: the midpoint line started and ended at the viewport border.
 pub mod viewport;
 
