@@ -35,8 +35,10 @@ use crate::topics::{self, Topic};
 
 /// Paths (relative to the course root) that only the course's authors
 /// need: never released.
-const COURSE_ONLY: [&str; 6] = [
+const COURSE_ONLY: [&str; 7] = [
     ".ci",
+    // The tutors' and authors' guides and the tutor notes.
+    "docs",
     // The course's own workflows (the hosted macOS and Windows runs); an
     // edition gets its Classroom workflow from `--classroom`.
     ".github",
@@ -271,6 +273,7 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
     };
     let absent_layout = |line: &str| {
         line.starts_with("reference/")
+            || line.starts_with("docs/")
             || line.starts_with("xtask/bench")
             || line
                 .strip_prefix("crates/")
