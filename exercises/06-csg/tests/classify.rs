@@ -20,34 +20,35 @@ fn unit_box() -> Primitive {
 #[testkit::test]
 fn box_interior_faces_edges_and_outside() {
     let b = unit_box();
-    assert_eq!(classify_point(&b, Vec3::ZERO), Class::Inside);
-    assert_eq!(
-        classify_point(&b, Vec3::new(0.99, 1.99, 2.99)),
-        Class::Inside
-    );
-    assert_eq!(
-        classify_point(&b, Vec3::new(1.0, 0.0, 0.0)),
-        Class::On,
-        "a face"
-    );
-    assert_eq!(
-        classify_point(&b, Vec3::new(0.0, -2.0, 3.0)),
-        Class::On,
-        "an edge"
-    );
-    assert_eq!(
-        classify_point(&b, Vec3::new(-1.0, -2.0, -3.0)),
-        Class::On,
-        "a corner"
-    );
-    assert_eq!(
-        classify_point(&b, Vec3::new(1.01, 0.0, 0.0)),
-        Class::Outside
-    );
-    assert_eq!(
-        classify_point(&b, Vec3::new(0.0, 0.0, -3.5)),
-        Class::Outside
-    );
+    for (p, expected, what) in [
+        (Vec3::ZERO, Class::Inside, "the centre"),
+        (
+            Vec3::new(0.99, 1.99, 2.99),
+            Class::Inside,
+            "just inside a corner",
+        ),
+        (Vec3::new(1.0, 0.0, 0.0), Class::On, "on a face"),
+        (Vec3::new(0.0, -2.0, 3.0), Class::On, "on an edge"),
+        (Vec3::new(-1.0, -2.0, -3.0), Class::On, "on a corner"),
+        (
+            Vec3::new(1.01, 0.0, 0.0),
+            Class::Outside,
+            "beyond the face x = 1",
+        ),
+        (
+            Vec3::new(0.0, 0.0, -3.5),
+            Class::Outside,
+            "beyond the face z = −3",
+        ),
+    ] {
+        assert_eq!(
+            classify_point(&b, p),
+            expected,
+            "classify_point(box [−1, 1] × [−2, 2] × [−3, 3], {p}), {what}: strictly between \
+             min and max in every axis is Inside, equal to a bound in one axis (and within the \
+             others) is On, compared exactly"
+        );
+    }
 }
 
 #[testkit::test]
@@ -56,15 +57,25 @@ fn sphere_centre_surface_and_outside() {
         centre: Vec3::new(1.0, 2.0, 3.0),
         radius: 2.0,
     };
-    assert_eq!(classify_point(&s, Vec3::new(1.0, 2.0, 3.0)), Class::Inside);
     // (1, 2, 3) + (0, 2, 0) and (1, 2, 3) + (−2, 0, 0): exactly on it.
-    assert_eq!(classify_point(&s, Vec3::new(1.0, 4.0, 3.0)), Class::On);
-    assert_eq!(classify_point(&s, Vec3::new(-1.0, 2.0, 3.0)), Class::On);
     // Offsets (1.5, 0, 0): 1.5 < 2; (1.5, 1.5, 0): √4.5 > 2.
-    assert_eq!(classify_point(&s, Vec3::new(2.5, 2.0, 3.0)), Class::Inside);
-    assert_eq!(classify_point(&s, Vec3::new(2.5, 3.5, 3.0)), Class::Outside);
     // The corner of the bounding box is outside the ball.
-    assert_eq!(classify_point(&s, Vec3::new(2.9, 3.9, 4.9)), Class::Outside);
+    for (p, expected) in [
+        (Vec3::new(1.0, 2.0, 3.0), Class::Inside),
+        (Vec3::new(1.0, 4.0, 3.0), Class::On),
+        (Vec3::new(-1.0, 2.0, 3.0), Class::On),
+        (Vec3::new(2.5, 2.0, 3.0), Class::Inside),
+        (Vec3::new(2.5, 3.5, 3.0), Class::Outside),
+        (Vec3::new(2.9, 3.9, 4.9), Class::Outside),
+    ] {
+        let d2 = (p - Vec3::new(1.0, 2.0, 3.0)).length_squared();
+        assert_eq!(
+            classify_point(&s, p),
+            expected,
+            "classify_point(sphere at (1, 2, 3) of radius 2, {p}): |p − c|² = {d2} against r² = 4, \
+             less is Inside, equal is On, more is Outside"
+        );
+    }
 }
 
 #[testkit::test]
@@ -79,47 +90,44 @@ fn cylinder_axis_caps_rim_and_outside_for_every_axis() {
         };
         // A unit vector across the axis.
         let across = if axis == Axis::X { Vec3::Y } else { Vec3::X };
-        let what = format!("{axis:?}");
-        assert_eq!(classify_point(&cyl, c), Class::Inside, "{what}");
-        assert_eq!(classify_point(&cyl, c + 1.5 * e), Class::Inside, "{what}");
-        assert_eq!(classify_point(&cyl, c + 2.0 * e), Class::On, "{what}: cap");
-        assert_eq!(
-            classify_point(&cyl, c - 2.0 * e + 0.5 * across),
-            Class::On,
-            "{what}: cap"
-        );
-        assert_eq!(classify_point(&cyl, c + across), Class::On, "{what}: side");
-        assert_eq!(
-            classify_point(&cyl, c + 2.0 * e + across),
-            Class::On,
-            "{what}: rim"
-        );
-        assert_eq!(
-            classify_point(&cyl, c + 2.5 * e),
-            Class::Outside,
-            "{what}: beyond the cap"
-        );
-        assert_eq!(
-            classify_point(&cyl, c + 1.25 * across),
-            Class::Outside,
-            "{what}: beside"
-        );
         // Inside the bounding box, outside the round side.
         let corner = c + 0.9 * across + 0.9 * e.cross(across);
-        assert_eq!(
-            classify_point(&cyl, corner),
-            Class::Outside,
-            "{what}: box corner"
-        );
+        for (p, expected, what) in [
+            (c, Class::Inside, "the centre"),
+            (c + 1.5 * e, Class::Inside, "on the axis inside"),
+            (c + 2.0 * e, Class::On, "a cap's centre"),
+            (c - 2.0 * e + 0.5 * across, Class::On, "on a cap"),
+            (c + across, Class::On, "on the side"),
+            (c + 2.0 * e + across, Class::On, "on the rim"),
+            (c + 2.5 * e, Class::Outside, "beyond the cap"),
+            (c + 1.25 * across, Class::Outside, "beside it"),
+            (corner, Class::Outside, "a corner of its bounding box"),
+        ] {
+            assert_eq!(
+                classify_point(&cyl, p),
+                expected,
+                "classify_point(cylinder along {axis:?} at {c}, radius 1, half length 2, {p}), \
+                 {what}: |along the axis| ≤ 2 and distance² across ≤ 1, both strict for Inside, \
+                 one equal for On"
+            );
+        }
     }
 }
 
 #[testkit::test]
 fn nan_points_and_broken_primitives_are_outside_everything() {
     let p = Vec3::new(f32::NAN, 0.0, 0.0);
-    assert_eq!(classify_point(&unit_box(), p), Class::Outside);
+    assert_eq!(
+        classify_point(&unit_box(), p),
+        Class::Outside,
+        "classify_point(box, {p}): a NaN coordinate is Outside everything"
+    );
     let scene = Scene::new(vec![unit_box()], Csg::leaf(0)).expect("valid");
-    assert!(!contains(&scene, p));
+    assert!(
+        !contains(&scene, p),
+        "contains(the box alone, {p}): a NaN coordinate is outside every solid, yours says it \
+         is in"
+    );
     // A scene refuses broken primitives and unknown leaves; a primitive
     // classified on its own with a NaN parameter contains nothing.
     let nan_sphere = Primitive::Sphere {
@@ -131,13 +139,21 @@ fn nan_points_and_broken_primitives_are_outside_everything() {
         max: Vec3::new(1.0, 0.0, 1.0),
     };
     for bad in [nan_sphere, flat_box] {
-        assert!(Scene::new(vec![bad], Csg::leaf(0)).is_err(), "{bad:?}");
+        assert!(
+            Scene::new(vec![bad], Csg::leaf(0)).is_err(),
+            "Scene::new refuses a primitive with a non-finite number or an empty extent: {bad:?}"
+        );
     }
     assert!(
         Scene::new(vec![unit_box()], Csg::leaf(1)).is_err(),
-        "unknown leaf"
+        "Scene::new refuses a tree naming primitive 1 of a scene of one"
     );
-    assert_eq!(classify_point(&nan_sphere, Vec3::ZERO), Class::Outside);
+    assert_eq!(
+        classify_point(&nan_sphere, Vec3::ZERO),
+        Class::Outside,
+        "classify_point(sphere of radius NaN, (0, 0, 0)): a primitive with a NaN parameter \
+         contains nothing"
+    );
 }
 
 /// Two overlapping unit-ish boxes along x: A = [0, 2]³, B = [1, 3] × [0, 2]².
@@ -175,9 +191,25 @@ fn the_three_rules_on_two_boxes() {
         // On A's face x = 0: in A, not in B.
         (0.0, true, false, true),
     ] {
-        assert_eq!(contains(&union, at(x)), u, "A ∪ B at x = {x}");
-        assert_eq!(contains(&inter, at(x)), i, "A ∩ B at x = {x}");
-        assert_eq!(contains(&diff, at(x)), d, "A − B at x = {x}");
+        let p = at(x);
+        assert_eq!(
+            contains(&union, p),
+            u,
+            "contains(A ∪ B, {p}), A = [0, 2]³, B = [1, 3] × [0, 2]²: P ∈ X ∪ Y ⟺ P ∈ X ∨ P ∈ Y \
+             (On counts as ∈)"
+        );
+        assert_eq!(
+            contains(&inter, p),
+            i,
+            "contains(A ∩ B, {p}), A = [0, 2]³, B = [1, 3] × [0, 2]²: P ∈ X ∩ Y ⟺ P ∈ X ∧ P ∈ Y \
+             (On counts as ∈)"
+        );
+        assert_eq!(
+            contains(&diff, p),
+            d,
+            "contains(A − B, {p}), A = [0, 2]³, B = [1, 3] × [0, 2]²: P ∈ X − Y ⟺ P ∈ X ∧ P ∉ Y, \
+             On counts as ∈ (not regularized: a point on B's face is not in A − B)"
+        );
     }
 }
 
@@ -212,7 +244,7 @@ proptest! {
     #[testkit::test]
     fn primitive_classes_match_the_definition(prim in primitive(), p in point()) {
         let class = classify_point(&prim, p);
-        prop_assert_eq!(class != Class::Outside, in_primitive(&prim, p), "{:?} at {:?}", prim, p);
+        prop_assert_eq!(class != Class::Outside, in_primitive(&prim, p), "classify_point({:?}, {}) = {:?}: a point of the closed primitive is Inside or On, any other Outside (left: yours in, right: by the definition)", prim, p, class);
     }
 
     #[testkit::test]
@@ -224,9 +256,9 @@ proptest! {
         let r = f32::from(r);
         let e = [Vec3::X, Vec3::Y, Vec3::Z][axis] * if sign { 1.0 } else { -1.0 };
         let s = Primitive::Sphere { centre: c, radius: r };
-        prop_assert_eq!(classify_point(&s, c + r * e), Class::On);
-        prop_assert_eq!(classify_point(&s, c + 0.5 * r * e), Class::Inside);
-        prop_assert_eq!(classify_point(&s, c + 1.5 * r * e), Class::Outside);
+        prop_assert_eq!(classify_point(&s, c + r * e), Class::On, "classify_point(sphere at {} of radius {}, {}): the point r along an axis is exactly on it, |p − c|² = r²", c, r, c + r * e);
+        prop_assert_eq!(classify_point(&s, c + 0.5 * r * e), Class::Inside, "classify_point(sphere at {} of radius {}, {}): r/2 from the centre is Inside", c, r, c + 0.5 * r * e);
+        prop_assert_eq!(classify_point(&s, c + 1.5 * r * e), Class::Outside, "classify_point(sphere at {} of radius {}, {}): 1.5·r from the centre is Outside", c, r, c + 1.5 * r * e);
     }
 
     #[testkit::test]
@@ -237,7 +269,7 @@ proptest! {
     ) {
         let scene = Scene::new(primitives.clone(), tree.clone()).expect("valid");
         for p in points {
-            prop_assert_eq!(contains(&scene, p), in_tree(&tree, &primitives, p), "{} at {:?}", tree, p);
+            prop_assert_eq!(contains(&scene, p), in_tree(&tree, &primitives, p), "contains({}, {}) (left: yours, right: by ∪ as ∨, ∩ as ∧, X − Y as P ∈ X ∧ P ∉ Y, On counts as ∈)", tree, p);
         }
     }
 }

@@ -185,8 +185,14 @@ fn bad_models_are_refused_the_empty_sum_draws_nothing_and_rendering_merges_z_les
              naming a primitive twice or one that does not exist)"
         );
     }
-    assert!(Camera::new(0, 10, Vec3::ZERO, 0.0, 0.0, 1.0).is_err());
-    assert!(Camera::new(10, 10, Vec3::ZERO, f32::NAN, 0.0, 1.0).is_err());
+    assert!(
+        Camera::new(0, 10, Vec3::ZERO, 0.0, 0.0, 1.0).is_err(),
+        "Camera::new refuses a camera 0 pixels wide"
+    );
+    assert!(
+        Camera::new(10, 10, Vec3::ZERO, f32::NAN, 0.0, 1.0).is_err(),
+        "Camera::new refuses a NaN angle"
+    );
     let empty = Model::new(vec![sphere(Vec3::ZERO, 1.0)], vec![]).expect("valid");
     let (frame, tests) = rendered(&empty, camera);
     assert_eq!(tests, 0, "the empty sum has no literal to test");
@@ -350,7 +356,7 @@ proptest! {
         let mut frame = Framebuffer::new(camera);
         let stats = render(&model, &mut frame);
         let expected: usize = model.products().iter().map(|p| p.literals.len() * (p.literals.len() - 1)).sum();
-        prop_assert_eq!(stats.parity_tests, expected as u64);
+        prop_assert_eq!(stats.parity_tests, expected as u64, "{}: a product of m literals costs m·(m − 1) parity tests, each literal against every other (left: yours, right: the sum over the products {})", tree, common::sum_text(model.products()));
         assert_frames_equal(&frame, &truth_of(&tree, &instances, camera), &format!("{tree}, each leaf a primitive moved by the maps above it"));
     }
 
@@ -360,7 +366,7 @@ proptest! {
         let model = dnf_model(&scene);
         let (frame, tests) = rendered(&model, camera);
         let expected: usize = model.products().iter().map(|p| p.literals.len() * (p.literals.len() - 1)).sum();
-        prop_assert_eq!(tests, expected as u64);
+        prop_assert_eq!(tests, expected as u64, "{}: a product of m literals costs m·(m − 1) parity tests, each literal against every other (left: yours, right: the sum over the products {})", scene.tree(), common::sum_text(model.products()));
         assert_frames_equal(&frame, &truth(&scene, camera), &scene.tree().to_string());
     }
 }

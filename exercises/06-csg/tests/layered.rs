@@ -137,7 +137,11 @@ fn a_drilled_plate_needs_two_layers_however_many_holes() {
             2 * m,
             "{holes} holes: 2 layers · {m} literals"
         );
-        assert_frames_equal(&frame, &truth(&scene, camera), &format!("{holes} holes"));
+        assert_frames_equal(
+            &frame,
+            &truth(&scene, camera),
+            &format!("a plate with {holes} dent(s)"),
+        );
     }
 }
 
@@ -382,8 +386,8 @@ proptest! {
             expected_layers += k;
             expected_tests += k * product.literals.len() as u64;
         }
-        prop_assert_eq!(stats.layers, expected_layers);
-        prop_assert_eq!(stats.parity_tests, expected_tests);
+        prop_assert_eq!(stats.layers, expected_layers, "{}: each product needs k layers, k its depth complexity (the most entry faces over one pixel); left: yours, right: the sum over the products {}", tree, common::sum_text(model.products()));
+        prop_assert_eq!(stats.parity_tests, expected_tests, "{}: each layer is parity-tested against every literal of its product, itself included, k·m per product (left: yours, right: the sum over {})", tree, common::sum_text(model.products()));
         assert_frames_equal(&frame, &truth_of(&tree, &instances, camera), &format!("{tree}, each leaf a primitive moved by the maps above it"));
     }
 
@@ -400,8 +404,8 @@ proptest! {
             expected_layers += k;
             expected_tests += k * product.literals.len() as u64;
         }
-        prop_assert_eq!(stats.layers, expected_layers);
-        prop_assert_eq!(stats.parity_tests, expected_tests);
+        prop_assert_eq!(stats.layers, expected_layers, "{}: each product needs k layers, k its depth complexity (the most entry faces over one pixel); left: yours, right: the sum over the products {}", scene.tree(), common::sum_text(model.products()));
+        prop_assert_eq!(stats.parity_tests, expected_tests, "{}: each layer is parity-tested against every literal of its product, itself included, k·m per product (left: yours, right: the sum over {})", scene.tree(), common::sum_text(model.products()));
         assert_frames_equal(&frame, &truth(&scene, camera), &scene.tree().to_string());
     }
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{in_sum, point, primitive};
+use common::{assert_sum_eq, in_sum, point, primitive, sum_text};
 use csg::Vec3;
 use csg::csg::{Literal, Model, Product};
 use csg::primitive::Primitive;
@@ -39,10 +39,11 @@ fn three_spheres(products: Vec<Product>) -> Model {
 #[testkit::test]
 fn disjoint_bounds_empty_a_product() {
     let model = three_spheres(vec![product(&[A, B]), product(&[A, C])]);
-    assert_eq!(
-        prune(&model),
-        vec![product(&[A, C])],
-        "A ∩ B = ∅, A ∩ C stays"
+    assert_sum_eq(
+        &prune(&model),
+        &[product(&[A, C])],
+        "prune(P0 ∩ P1 ∪ P0 ∩ P2), spheres P0 at x = 0, P1 at x = 5, P2 at x = 1, radius 1.5: \
+         bound(P0) ∩ bound(P1) = ∅ drops the product P0 ∩ P1, P0 ∩ P2 overlaps and stays",
     );
 }
 
@@ -50,10 +51,12 @@ fn disjoint_bounds_empty_a_product() {
 fn subtracting_something_elsewhere_leaves_the_product_whole() {
     // The seed's table says A − B = ∅ here; it is A.
     let model = three_spheres(vec![product(&[A, NOT_B]), product(&[A, NOT_C])]);
-    assert_eq!(
-        prune(&model),
-        vec![product(&[A]), product(&[A, NOT_C])],
-        "A − B = A, A − C stays"
+    assert_sum_eq(
+        &prune(&model),
+        &[product(&[A]), product(&[A, NOT_C])],
+        "prune(P0 − P1 ∪ P0 − P2), spheres P0 at x = 0, P1 at x = 5, P2 at x = 1, radius 1.5: \
+         A − B = A when the bounds miss (not ∅, as the seed's table says), so P0 − P1 becomes \
+         P0; P0 − P2 overlaps and stays",
     );
 }
 
@@ -79,10 +82,13 @@ fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
         ],
     )
     .expect("valid");
-    assert_eq!(
-        prune(&model),
-        vec![product(&[A, d]), product(&[d, NOT_B]), product(&[d, A])],
-        "touching bounds count as overlapping"
+    assert_sum_eq(
+        &prune(&model),
+        &[product(&[A, d]), product(&[d, NOT_B]), product(&[d, A])],
+        "prune(P0 ∩ P3 ∩ P1 ∪ P0 ∩ P3 − P1 ∪ P3 − P1 ∪ P3 ∩ P0 − P1): the product bound is the \
+         intersection of all positive bounds (P0 ∩ P3: the plane x = 1.5, touching counts as \
+         overlapping), a product whose product bound is empty goes, and so does each complement \
+         whose bound misses the product bound",
     );
 }
 
@@ -90,11 +96,17 @@ fn the_product_bound_is_the_intersection_of_all_positive_bounds() {
 fn order_is_kept_and_nothing_else_changes() {
     let products = vec![product(&[C, A, NOT_B]), product(&[A, NOT_C]), product(&[B])];
     let model = three_spheres(products);
-    assert_eq!(
-        prune(&model),
-        vec![product(&[C, A]), product(&[A, NOT_C]), product(&[B])]
+    assert_sum_eq(
+        &prune(&model),
+        &[product(&[C, A]), product(&[A, NOT_C]), product(&[B])],
+        "prune(P2 ∩ P0 − P1 ∪ P0 − P2 ∪ P1): the order of the products and of their literals is \
+         kept; only − P1, whose bound misses P2 ∩ P0's, goes",
     );
-    assert_eq!(prune(&three_spheres(vec![])), vec![]);
+    assert_sum_eq(
+        &prune(&three_spheres(vec![])),
+        &[],
+        "prune of the empty sum is the empty sum",
+    );
 }
 
 fn random_model() -> impl Strategy<Value = Model> {
@@ -135,12 +147,12 @@ proptest! {
     #[testkit::test]
     fn pruning_never_changes_membership(model in random_model(), points in prop::collection::vec(point(), 32)) {
         let pruned = prune(&model);
-        prop_assert!(Model::new(model.primitives().to_vec(), pruned.clone()).is_ok(), "{:?}", pruned);
+        prop_assert!(Model::new(model.primitives().to_vec(), pruned.clone()).is_ok(), "prune({}) = {}: not a valid sum (Model::new refuses it: an empty product, one starting with a complement, or a primitive named twice)", sum_text(model.products()), sum_text(&pruned));
         for q in points {
             prop_assert_eq!(
                 in_sum(&pruned, model.primitives(), q),
                 in_sum(model.products(), model.primitives(), q),
-                "at {:?}", q
+                "prune({}) = {}: pruning never changes the solid, but at {} yours (left) and the original sum (right) differ", sum_text(model.products()), sum_text(&pruned), q
             );
         }
     }
@@ -157,7 +169,7 @@ proptest! {
                 p.literals.iter().all(|l| lits.by_ref().any(|m| m == l))
                     && o.literals.iter().filter(|l| !l.complement).eq(p.literals.iter().filter(|l| !l.complement))
             });
-            prop_assert!(found, "{} is not a pruned original", p);
+            prop_assert!(found, "prune({}) = {}: the product {} is not one of the originals, in order, with some complements left out (pruning only removes)", sum_text(model.products()), sum_text(&pruned), p);
         }
         // Rule 1 drops exactly the products whose positive bounds miss.
         let bounds: Vec<_> = model.primitives().iter().map(Primitive::bounds).collect();
@@ -170,6 +182,6 @@ proptest! {
                 }
             }).is_some()
         }).count();
-        prop_assert_eq!(pruned.len(), non_empty, "products kept (rule 1 drops those whose positive bounds do not overlap)");
+        prop_assert_eq!(pruned.len(), non_empty, "prune({}) = {}: the products kept (left: yours), rule 1 drops exactly those whose positive bounds do not overlap (right: how many remain)", sum_text(model.products()), sum_text(&pruned));
     }
 }

@@ -4,8 +4,8 @@ mod common;
 
 use canvas::Canvas;
 use common::{
-    affine, in_primitive, point, primitive, shade_by_depth, tree, turned_camera, turned_scene,
-    with_transforms,
+    affine, affine_text, in_primitive, node_text, point, primitive, shade_by_depth, tree,
+    turned_camera, turned_scene, with_transforms,
 };
 use csg::Vec3;
 use csg::csg::Csg;
@@ -68,7 +68,11 @@ fn flatten_composes_the_transforms_outermost_last() {
     let b = Affine3A::from_scale(Vec3::splat(2.0));
     let (instances, tree) = flatten(&Node::transform(a, Node::transform(b, Node::leaf(0))));
     assert_eq!(tree, Csg::leaf(0), "one leaf, one instance");
-    assert_eq!(instances.len(), 1);
+    assert_eq!(
+        instances.len(),
+        1,
+        "flatten(Transform(translate 5, Transform(scale 2, leaf 0))): one leaf, one instance"
+    );
     let moved = instances[0].to_world.transform_point3(Vec3::X);
     assert!(
         close(moved, Vec3::new(7.0, 0.0, 0.0)),
@@ -76,7 +80,10 @@ fn flatten_composes_the_transforms_outermost_last() {
          primitive first: (1, 0, 0) → (2, 0, 0) → (7, 0, 0), yours gives {moved} \
          (the product is outer · inner)"
     );
-    assert_eq!(instances[0].primitive, 0);
+    assert_eq!(
+        instances[0].primitive, 0,
+        "the instance of leaf 0 names primitive 0"
+    );
 }
 
 #[testkit::test]
@@ -107,8 +114,10 @@ fn flatten_numbers_the_leaves_left_to_right_and_keeps_the_operations() {
     for (k, (instance, m)) in instances.iter().zip(expected).enumerate() {
         assert!(
             instance.to_world.abs_diff_eq(m, 1e-6),
-            "instance {k}: to_world {:?}, expected {m:?}",
-            instance.to_world
+            "instance {k}: to_world is the product of the maps on its leaf's path, outermost \
+             first: expected {}, yours {}",
+            affine_text(&m),
+            affine_text(&instance.to_world)
         );
     }
 }
@@ -144,10 +153,10 @@ proptest! {
             prop_assert_eq!(
                 in_instances(&tree, &instances, &primitives, p),
                 truth,
-                "the flattened tree of {:?} classifies {} differently", node, p
+                "flatten({}) = {} over its instances is not the same solid at {} (left: the flattened tree, right: the definition, P ∈ M(X) ⟺ M⁻¹·P ∈ X)", node_text(&node), tree, p
             );
             let yours = contains(&node, p, &|i, q| in_primitive(&primitives[i], q));
-            prop_assert_eq!(yours, truth, "contains({:?}, {})", node, p);
+            prop_assert_eq!(yours, truth, "contains({}, {}): the rules of task 1, and P ∈ M(X) ⟺ M⁻¹·P ∈ X at a transform (left: yours, right: the definition)", node_text(&node), p);
         }
     }
 }
@@ -172,25 +181,52 @@ fn contains_asks_the_child_about_the_inverse_point() {
         Affine3A::from_scale(Vec3::new(3.0, 1.0, 1.0)),
         Node::leaf(0),
     );
-    assert!(contains(&stretched, Vec3::new(2.5, 0.0, 0.0), &inside));
-    assert!(!contains(&stretched, Vec3::new(0.0, 1.5, 0.0), &inside));
+    let stretch = "the unit sphere stretched by 3 along x, (x/3)² + y² + z² ≤ 1,";
+    assert!(
+        contains(&stretched, Vec3::new(2.5, 0.0, 0.0), &inside),
+        "{stretch} holds (2.5, 0, 0): ask the sphere about M⁻¹·p = (2.5/3, 0, 0)"
+    );
+    assert!(
+        !contains(&stretched, Vec3::new(0.0, 1.5, 0.0), &inside),
+        "{stretch} does not hold (0, 1.5, 0): M⁻¹·p = (0, 1.5, 0) is outside the sphere"
+    );
     // The ellipsoid minus the sphere: the ends of the ellipsoid remain.
     let cut = Node::difference(stretched, Node::leaf(0));
-    assert!(contains(&cut, Vec3::new(2.0, 0.0, 0.0), &inside));
-    assert!(!contains(&cut, Vec3::new(0.5, 0.0, 0.0), &inside));
+    assert!(
+        contains(&cut, Vec3::new(2.0, 0.0, 0.0), &inside),
+        "the stretched sphere minus the unit sphere holds (2, 0, 0), an end of the ellipsoid"
+    );
+    assert!(
+        !contains(&cut, Vec3::new(0.5, 0.0, 0.0), &inside),
+        "the stretched sphere minus the unit sphere does not hold (0.5, 0, 0): the sphere cuts \
+         it away (P ∈ X − Y ⟺ P ∈ X ∧ P ∉ Y)"
+    );
     // What has no inverse never reaches `contains`: `check` refuses it.
     let flat = Node::transform(
         Affine3A::from_scale(Vec3::new(1.0, 0.0, 1.0)),
         Node::leaf(0),
     );
-    assert_eq!(flat.check(1), Err(TransformError::Singular));
+    assert_eq!(
+        flat.check(1),
+        Err(TransformError::Singular),
+        "Node::check refuses a map without an inverse (scale 0 along y)"
+    );
     let nan = Node::transform(Affine3A::from_translation(Vec3::NAN), Node::leaf(0));
-    assert_eq!(nan.check(1), Err(TransformError::NotFinite));
+    assert_eq!(
+        nan.check(1),
+        Err(TransformError::NotFinite),
+        "Node::check refuses a map with a NaN"
+    );
     assert_eq!(
         Node::leaf(3).check(1),
-        Err(TransformError::UnknownPrimitive(3))
+        Err(TransformError::UnknownPrimitive(3)),
+        "Node::check refuses leaf 3 in a scene of one primitive"
     );
-    assert_eq!(cut.check(1), Ok(()));
+    assert_eq!(
+        cut.check(1),
+        Ok(()),
+        "Node::check accepts the stretched sphere minus the sphere"
+    );
 }
 
 fn ray(origin: Vec3, direction: Vec3) -> Ray {
@@ -282,7 +318,7 @@ proptest! {
         let (yours, expected) = (instance_interval(&local, quarter, &r), turned.interval(&r));
         // Grazing rays may round either way.
         let grazing = expected.is_some_and(|s| s.far - s.near < 1e-3);
-        prop_assert!(grazing || close_spans(yours, expected), "{r:?}: yours {yours:?}, expected {expected:?}");
+        prop_assert!(grazing || close_spans(yours, expected), "instance_interval(box [−1, 1] × [−2, 2] × [−3, 3], a quarter turn about z, ray from {} along {}): the turned box is [−2, 2] × [−1, 1] × [−3, 3], met at {:?}; yours {:?} (to 1e-4)", r.origin, r.direction, expected, yours);
     }
 
     /// Stretched by 3 along x, the unit sphere is the ellipsoid
@@ -299,11 +335,12 @@ proptest! {
         let ellipsoid = |p: Vec3| (p.x / 3.0).powi(2) + p.y * p.y + p.z * p.z;
         match instance_interval(&unit_sphere(), stretch, &r) {
             Some(span) => {
-                prop_assert!((ellipsoid(r.at(span.near)) - 1.0).abs() < 1e-3, "entry {} is off the ellipsoid", r.at(span.near));
-                prop_assert!((ellipsoid(r.at(span.far)) - 1.0).abs() < 1e-3, "exit {} is off the ellipsoid", r.at(span.far));
-                prop_assert!(ellipsoid(r.at(0.5 * (span.near + span.far))) < 1.0);
+                prop_assert!((ellipsoid(r.at(span.near)) - 1.0).abs() < 1e-3, "the unit sphere stretched by 3 along x, ray from {} along {}: the entry at depth {}, {}, lies on the ellipsoid (x/3)² + y² + z² = 1, yours gives {}", r.origin, r.direction, span.near, r.at(span.near), ellipsoid(r.at(span.near)));
+                prop_assert!((ellipsoid(r.at(span.far)) - 1.0).abs() < 1e-3, "the unit sphere stretched by 3 along x, ray from {} along {}: the exit at depth {}, {}, lies on the ellipsoid (x/3)² + y² + z² = 1, yours gives {}", r.origin, r.direction, span.far, r.at(span.far), ellipsoid(r.at(span.far)));
+                let middle = r.at(0.5 * (span.near + span.far));
+                prop_assert!(ellipsoid(middle) < 1.0, "the unit sphere stretched by 3 along x, ray from {} along {}: the middle {} of yours {:?} lies inside the ellipsoid, (x/3)² + y² + z² < 1, yours gives {}", r.origin, r.direction, middle, span, ellipsoid(middle));
             }
-            None => prop_assert!(false, "{r:?} aims at a point inside the ellipsoid and must meet it"),
+            None => prop_assert!(false, "the unit sphere stretched by 3 along x: the ray from {} along {} aims at a point inside the ellipsoid and must meet it, yours None", r.origin, r.direction),
         }
     }
 }

@@ -163,7 +163,18 @@ pub fn product_tree(product: &Product) -> Csg {
 // ---------------------------------------------------------------------------
 // Frames.
 
-/// The pixels where two frames disagree in surface or depth.
+/// What a frame shows at a pixel, in words: `P1's back face at depth −1`
+/// or `nothing`.
+pub fn shown(frame: &Framebuffer, p: canvas::Pixel) -> String {
+    match (frame.surface(p), frame.depth(p)) {
+        (Some(s), Some(d)) => format!("P{}'s {:?} face at depth {d}", s.primitive, s.face),
+        (Some(s), None) => format!("P{}'s {:?} face at no depth", s.primitive, s.face),
+        (None, _) => "nothing".to_string(),
+    }
+}
+
+/// The pixels where two frames disagree in surface or depth, each as
+/// `pixel (x, y): yours …, truth …`.
 pub fn frame_differences(a: &Framebuffer, b: &Framebuffer) -> Vec<String> {
     a.camera()
         .pixels()
@@ -171,7 +182,7 @@ pub fn frame_differences(a: &Framebuffer, b: &Framebuffer) -> Vec<String> {
             let (sa, sb) = (a.surface(p), b.surface(p));
             let (da, db) = (a.depth(p), b.depth(p));
             (sa != sb || (sa.is_some() && da != db))
-                .then(|| format!("{p:?}: {sa:?} at {da:?} vs {sb:?} at {db:?}"))
+                .then(|| format!("pixel {p}: yours {}, truth {}", shown(a, p), shown(b, p)))
         })
         .collect()
 }
@@ -182,10 +193,63 @@ pub fn assert_frames_equal(yours: &Framebuffer, truth: &Framebuffer, what: &str)
     let diff = frame_differences(yours, truth);
     assert!(
         diff.is_empty(),
-        "{what}: {} pixels differ from the ray caster (yours vs truth), first ones:\n{}",
+        "{what}: {} pixels differ from the ray caster (the truth: the first entry into the \
+         solid along each pixel's ray), first ones:\n{}",
         diff.len(),
         diff[..diff.len().min(8)].join("\n")
     );
+}
+
+/// A sum of products in one line, `P0 ∩ P1 − P2 ∪ P3`, or `∅` for none.
+pub fn sum_text(products: &[Product]) -> String {
+    if products.is_empty() {
+        return "∅ (no products)".to_string();
+    }
+    products
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join("  ∪  ")
+}
+
+/// Asserts that `yours` is the sum `expected`, product for product and
+/// literal for literal; on failure names `what` and shows both sums as
+/// `P0 ∩ P1 − P2 ∪ …` rather than dumping the structs.
+#[track_caller]
+pub fn assert_sum_eq(yours: &[Product], expected: &[Product], what: &str) {
+    assert!(
+        yours == expected,
+        "{what}\n  expected: {}\n  yours:    {}",
+        sum_text(expected),
+        sum_text(yours)
+    );
+}
+
+/// An affine map in one line: its 3 × 4 matrix, rows `a b c | t`, to 3
+/// decimals.
+pub fn affine_text(m: &Affine3A) -> String {
+    let rows: Vec<String> = (0..3)
+        .map(|r| {
+            let row = m.matrix3.row(r);
+            format!(
+                "{:.3} {:.3} {:.3} | {:.3}",
+                row.x, row.y, row.z, m.translation[r]
+            )
+        })
+        .collect();
+    format!("M[{}]", rows.join("; "))
+}
+
+/// A transformed tree in one line, like `Csg`'s display, a transform as
+/// `M[…](X)` (see [`affine_text`]).
+pub fn node_text(node: &Node) -> String {
+    match node {
+        Node::Leaf(i) => format!("P{i}"),
+        Node::Union(x, y) => format!("({} ∪ {})", node_text(x), node_text(y)),
+        Node::Intersection(x, y) => format!("({} ∩ {})", node_text(x), node_text(y)),
+        Node::Difference(x, y) => format!("({} − {})", node_text(x), node_text(y)),
+        Node::Transform(m, x) => format!("{}({})", affine_text(m), node_text(x)),
+    }
 }
 
 /// The ray caster's frame of `scene`.
