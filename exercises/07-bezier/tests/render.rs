@@ -31,7 +31,13 @@ fn phong_lit_from_above_seen_from_the_side() {
     // gives φ₂ = 0, ψ₂ = 0. Colour = 0.1 d + d.
     let d = DVec3::new(0.5, 0.25, 1.0);
     let c = phong(DVec3::Y, DVec3::ZERO, DVec3::new(0.0, 0.0, 10.0), d);
-    assert!(c.abs_diff_eq(d * 1.1, 1e-15), "{c}");
+    assert!(
+        c.abs_diff_eq(d * 1.1, 1e-15),
+        "phong(n = +y at the origin, eye (0, 0, 10), d = {d}): light 1 above gives φ₁ = 1, its \
+         reflection misses the eye (ψ₁ = 0), light 2 below gives nothing: d · AMBIENT + d = \
+         {}; yours {c}",
+        d * 1.1
+    );
 }
 
 #[testkit::test]
@@ -39,7 +45,12 @@ fn phong_highlight_when_the_eye_is_in_the_reflection() {
     // Eye straight above: r₁ · e = 1, so ψ₁ = 1 and white is added.
     let d = DVec3::new(0.5, 0.25, 1.0);
     let c = phong(DVec3::Y, DVec3::ZERO, DVec3::new(0.0, 5.0, 0.0), d);
-    assert!(c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15), "{c}");
+    assert!(
+        c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15),
+        "phong(n = +y at the origin, eye (0, 5, 0), d = {d}): the eye lies in light 1's \
+         reflection, r₁ · e = 1, ψ₁ = 1: d · 1.1 + SPECULAR = {}; yours {c}",
+        d * 1.1 + DVec3::ONE
+    );
     // Tilted 10° away: r₁ · e = cos 10°, and cos¹⁵⁰(10°) ≈ 0.10 of the
     // highlight is left.
     let e = DVec3::new(
@@ -51,7 +62,9 @@ fn phong_highlight_when_the_eye_is_in_the_reflection() {
     let psi = 10.0_f64.to_radians().cos().powf(SHININESS);
     assert!(
         c.abs_diff_eq(d * 1.1 + DVec3::splat(psi), 1e-12),
-        "{c} (ψ = {psi})"
+        "phong(n = +y, the eye 10° off the reflection, d = {d}): ψ₁ = max(r₁ · e, 0)^150 = \
+         cos¹⁵⁰(10°) = {psi}, colour d · 1.1 + ψ₁ · SPECULAR = {}; yours {c}",
+        d * 1.1 + DVec3::splat(psi)
     );
 }
 
@@ -60,7 +73,13 @@ fn phong_underside_is_lit_by_the_second_light() {
     // n = −y: light 2 at (0, −10, 0) is straight below, eye below too.
     let d = DVec3::new(0.2, 0.4, 0.6);
     let c = phong(DVec3::NEG_Y, DVec3::ZERO, DVec3::new(0.0, -3.0, 0.0), d);
-    assert!(c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15), "{c}");
+    assert!(
+        c.abs_diff_eq(d * 1.1 + DVec3::ONE, 1e-15),
+        "phong(n = −y at the origin, eye (0, −3, 0), d = {d}): light 2 at (0, −10, 0) lies \
+         straight below, φ₂ = 1, and the eye in its reflection, ψ₂ = 1: d · 1.1 + SPECULAR = \
+         {}; yours {c}",
+        d * 1.1 + DVec3::ONE
+    );
 }
 
 #[testkit::test]
@@ -71,15 +90,18 @@ fn bad_levels_and_surface_errors_are_reported() {
             tess_level: level,
             ..settings(false)
         };
-        assert!(matches!(
-            render_surface(&mut canvas, hill, &common::NoTrim, &s),
-            Err(BezierError::InvalidSetting(_))
-        ));
+        let yours = render_surface(&mut canvas, hill, &common::NoTrim, &s);
+        assert!(
+            matches!(yours, Err(BezierError::InvalidSetting(_))),
+            "render_surface with tess_level {level}: a level of 0 or above MAX_TESS_LEVEL = \
+             {MAX_TESS_LEVEL} is InvalidSetting; yours {yours:?}"
+        );
     }
     let failing = |_uv: DVec2| Err(BezierError::Empty);
     assert_eq!(
         render_surface(&mut canvas, failing, &common::NoTrim, &settings(false)),
-        Err(BezierError::Empty)
+        Err(BezierError::Empty),
+        "render_surface with a surface closure that fails: its error is passed on"
     );
 }
 
@@ -96,11 +118,23 @@ fn trimming_everything_leaves_the_background() {
     render_surface(&mut canvas, hill, &All, &settings(false)).unwrap();
     // The canvas stores 8-bit levels: compare with the stored background.
     let background = canvas::Rgba::from_rgba8(common::BACKGROUND.to_rgba8());
-    assert!(canvas.pixels_not(background).is_empty());
+    let drawn = canvas.pixels_not(background);
+    assert!(
+        drawn.is_empty(),
+        "render_surface with a trim that trims every (u, v): every fragment is discarded, only \
+         the background is left; yours drew {} pixels, first {:?}",
+        drawn.len(),
+        drawn.first()
+    );
     // Without the trim the hill covers a good part of the picture.
     render_surface(&mut canvas, hill, &common::NoTrim, &settings(false)).unwrap();
     let covered = canvas.pixels_not(background).len();
-    assert!(covered > (w * h / 5) as usize, "{covered} pixels");
+    assert!(
+        covered > (w * h / 5) as usize,
+        "render_surface of the hill without a trim covers more than a fifth of the {w} × {h} \
+         picture, {} pixels; yours {covered}",
+        w * h / 5
+    );
 }
 
 #[testkit::test]

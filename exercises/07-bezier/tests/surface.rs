@@ -30,29 +30,40 @@ fn a_plane_grid_reproduces_its_parameters() {
     let net = plane_net();
     for (u, v) in [(0.0, 0.0), (0.25, 0.5), (1.0, 0.75), (0.5, 1.0)] {
         let expected = DVec3::new(2.0 * u, 2.0 * v, 0.0);
+        let at = format!("({u}, {v}) on the plane net P_i,j = (i, 2j, 0)");
+        let yours = evaluate_u_then_v(&net, uv(u, v)).unwrap();
         assert!(
-            evaluate_u_then_v(&net, uv(u, v))
-                .unwrap()
-                .abs_diff_eq(expected, 1e-15)
+            yours.abs_diff_eq(expected, 1e-15),
+            "evaluate_u_then_v at {at}: linear precision gives P(u, v) = (2u, 2v, 0) = \
+             {expected}, yours {yours}"
         );
+        let yours = evaluate_v_then_u(&net, uv(u, v)).unwrap();
         assert!(
-            evaluate_v_then_u(&net, uv(u, v))
-                .unwrap()
-                .abs_diff_eq(expected, 1e-15)
+            yours.abs_diff_eq(expected, 1e-15),
+            "evaluate_v_then_u at {at}: linear precision gives P(u, v) = (2u, 2v, 0) = \
+             {expected}, yours {yours}"
         );
         let p = partial_derivatives(&net, uv(u, v)).unwrap();
-        assert!(p.position.abs_diff_eq(expected, 1e-15));
+        assert!(
+            p.position.abs_diff_eq(expected, 1e-15),
+            "partial_derivatives at {at}: position {expected}, yours {}",
+            p.position
+        );
         assert!(
             p.du.abs_diff_eq(DVec3::new(2.0, 0.0, 0.0), 1e-15),
-            "{}",
+            "partial_derivatives at {at}: ∂P/∂u = (2, 0, 0), yours {}",
             p.du
         );
         assert!(
             p.dv.abs_diff_eq(DVec3::new(0.0, 2.0, 0.0), 1e-15),
-            "{}",
+            "partial_derivatives at {at}: ∂P/∂v = (0, 2, 0), yours {}",
             p.dv
         );
-        assert!(normal(&net, uv(u, v)).unwrap().abs_diff_eq(DVec3::Z, 1e-15));
+        let n = normal(&net, uv(u, v)).unwrap();
+        assert!(
+            n.abs_diff_eq(DVec3::Z, 1e-15),
+            "normal at {at}: ∂P/∂u × ∂P/∂v normalised is +z, yours {n}"
+        );
     }
 }
 
@@ -67,11 +78,15 @@ fn corners_are_the_corner_control_points() {
     ] {
         assert_eq!(
             evaluate_u_then_v(&net, uv(u, v)),
-            Ok(net.control_point(i, j))
+            Ok(net.control_point(i, j)),
+            "evaluate_u_then_v(seed hill, ({u}, {v})): a corner of the patch is the corner \
+             control point P_{i},{j}, exactly"
         );
         assert_eq!(
             evaluate_v_then_u(&net, uv(u, v)),
-            Ok(net.control_point(i, j))
+            Ok(net.control_point(i, j)),
+            "evaluate_v_then_u(seed hill, ({u}, {v})): a corner of the patch is the corner \
+             control point P_{i},{j}, exactly"
         );
     }
 }
@@ -83,11 +98,16 @@ fn the_seed_hill_at_its_centre() {
     let centre = evaluate_u_then_v(&net, uv(0.5, 0.5)).unwrap();
     assert!(
         centre.abs_diff_eq(DVec3::new(0.0, 0.5 * 0.75 * 0.75, 0.0), 1e-15),
-        "{centre}"
+        "evaluate_u_then_v(seed hill, (½, ½)) = (0, ½ · (¾)², 0) = (0, 0.28125, 0), the inner \
+         points at height ½; yours {centre}"
     );
     // By symmetry the top of the hill is flat and the normal points up.
     let n = normal(&net, uv(0.5, 0.5)).unwrap();
-    assert!(n.abs_diff_eq(DVec3::Y, 1e-15), "{n}");
+    assert!(
+        n.abs_diff_eq(DVec3::Y, 1e-15),
+        "normal(seed hill, (½, ½)): the top is flat and ∂P/∂u × ∂P/∂v points up (u along +x, v \
+         along −z), (0, 1, 0); yours {n}"
+    );
 }
 
 /// ```text
@@ -111,10 +131,18 @@ fn normal_at_a_collapsed_edge_falls_back_to_its_limit() {
     // apex ∂P/∂u = 0 and the cross product vanishes.
     let net = collapsed_net();
     let p = partial_derivatives(&net, uv(0.0, 1.0)).unwrap();
-    assert_eq!(p.du, DVec3::ZERO);
+    assert_eq!(
+        p.du,
+        DVec3::ZERO,
+        "partial_derivatives at (0, 1): the top edge is collapsed to the apex, so ∂P/∂u = 0 there"
+    );
     for at in [uv(0.0, 1.0), uv(0.5, 1.0), uv(1.0, 1.0), uv(0.3, 0.2)] {
         let n = normal(&net, at).unwrap();
-        assert!(n.abs_diff_eq(DVec3::Z, 1e-9), "at {at}: {n}");
+        assert!(
+            n.abs_diff_eq(DVec3::Z, 1e-9),
+            "normal at {at} of the flat triangle in z = 0: +z everywhere; where ∂u × ∂v \
+             vanishes, retry once moved by NORMAL_NUDGE towards (½, ½); yours {n}"
+        );
     }
 }
 
@@ -124,7 +152,9 @@ fn a_net_collapsed_to_a_line_has_no_normal() {
     let net = BezierPatch::try_new(1, 1, points).unwrap();
     assert_eq!(
         normal(&net, uv(0.5, 0.5)),
-        Err(BezierError::DegenerateNormal { u: 0.5, v: 0.5 })
+        Err(BezierError::DegenerateNormal { u: 0.5, v: 0.5 }),
+        "normal of a net collapsed to a line: ∂u × ∂v vanishes at (½, ½) and at the nudged \
+         point too, so DegenerateNormal at the (u, v) asked for"
     );
 }
 
@@ -137,32 +167,47 @@ fn invalid_input_is_a_clear_error() {
         uv(1.5, 0.5),
         uv(0.5, f64::INFINITY),
     ] {
-        assert!(matches!(
-            evaluate_u_then_v(&net, bad),
-            Err(BezierError::ParameterOutOfRange { .. })
-        ));
-        assert!(evaluate_v_then_u(&net, bad).is_err());
-        assert!(partial_derivatives(&net, bad).is_err());
-        assert!(normal(&net, bad).is_err());
+        let rule = format!("{bad} is NaN or outside [0, 1]²: an error, never an extrapolation");
+        let yours = evaluate_u_then_v(&net, bad);
+        assert!(
+            matches!(yours, Err(BezierError::ParameterOutOfRange { .. })),
+            "evaluate_u_then_v: {rule}, ParameterOutOfRange; yours {yours:?}"
+        );
+        let yours = evaluate_v_then_u(&net, bad);
+        assert!(yours.is_err(), "evaluate_v_then_u: {rule}; yours {yours:?}");
+        let yours = partial_derivatives(&net, bad);
+        assert!(
+            yours.is_err(),
+            "partial_derivatives: {rule}; yours {yours:?}"
+        );
+        let yours = normal(&net, bad);
+        assert!(yours.is_err(), "normal: {rule}; yours {yours:?}");
     }
     // The patch checks itself (given code): these nets never reach your functions.
-    assert!(matches!(
-        BezierPatch::try_new(1, 1, vec![DVec3::ZERO; 3]),
-        Err(PatchError::Shape {
-            expected: 4,
-            found: 3,
-            ..
-        })
-    ));
-    assert!(matches!(
-        BezierPatch::try_new(33, 0, vec![DVec3::ZERO; 34]),
-        Err(PatchError::DegreeTooHigh { degree: 33, .. })
-    ));
+    assert!(
+        matches!(
+            BezierPatch::try_new(1, 1, vec![DVec3::ZERO; 3]),
+            Err(PatchError::Shape {
+                expected: 4,
+                found: 3,
+                ..
+            })
+        ),
+        "BezierPatch::try_new(1, 1, 3 points): a 1 × 1 net needs 4 points"
+    );
+    assert!(
+        matches!(
+            BezierPatch::try_new(33, 0, vec![DVec3::ZERO; 34]),
+            Err(PatchError::DegreeTooHigh { degree: 33, .. })
+        ),
+        "BezierPatch::try_new(33, 0, …): degree 33 is above MAX_DEGREE"
+    );
     let mut points = vec![DVec3::ZERO; 4];
     points[2].y = f64::NAN;
     assert_eq!(
         BezierPatch::try_new(1, 1, points),
-        Err(PatchError::NonFinite { index: 2 })
+        Err(PatchError::NonFinite { index: 2 }),
+        "BezierPatch::try_new with a NaN in point 2 names it"
     );
 }
 
@@ -288,36 +333,36 @@ proptest! {
         let a = evaluate_u_then_v(&net, uv(u, v)).unwrap();
         let b = evaluate_v_then_u(&net, uv(u, v)).unwrap();
         let expected = common::surface_def(&net, uv(u, v));
-        prop_assert!(a.abs_diff_eq(b, 1e-12), "{} vs {}", a, b);
-        prop_assert!(a.abs_diff_eq(expected, 1e-12), "{} vs {}", a, expected);
+        prop_assert!(a.abs_diff_eq(b, 1e-12), "at ({}, {}) the order does not matter: evaluate_u_then_v gives {}, evaluate_v_then_u {} (to 1e-12)", u, v, a, b);
+        prop_assert!(a.abs_diff_eq(expected, 1e-12), "evaluate_u_then_v at ({}, {}): the double sum Σ Σ B_i,n(u) B_j,m(v) P_i,j gives {}, yours {} (to 1e-12)", u, v, expected, a);
     }
 
     #[testkit::test]
     fn both_orders_are_each_others_transpose(net in nets(), u in unit(), v in unit()) {
         let flipped = transposed(&net);
         let u_then_v = evaluate_u_then_v(&net, uv(u, v)).unwrap();
-        prop_assert!(u_then_v.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12), "{}", u_then_v);
-        prop_assert_eq!(evaluate_v_then_u(&flipped, uv(v, u)).unwrap(), u_then_v);
-        prop_assert_eq!(evaluate_u_then_v(&flipped, uv(v, u)).unwrap(), evaluate_v_then_u(&net, uv(u, v)).unwrap());
+        prop_assert!(u_then_v.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12), "evaluate_u_then_v at ({}, {}): the double sum gives {}, yours {} (to 1e-12)", u, v, common::surface_def(&net, uv(u, v)), u_then_v);
+        prop_assert_eq!(evaluate_v_then_u(&flipped, uv(v, u)).unwrap(), u_then_v, "evaluate_v_then_u of the transposed net at ({}, {}) (left) is evaluate_u_then_v at ({}, {}) (right), bit for bit: one de Casteljau helper for both orders", v, u, u, v);
+        prop_assert_eq!(evaluate_u_then_v(&flipped, uv(v, u)).unwrap(), evaluate_v_then_u(&net, uv(u, v)).unwrap(), "evaluate_u_then_v of the transposed net at ({}, {}) (left) is evaluate_v_then_u at ({}, {}) (right), bit for bit: one de Casteljau helper for both orders", v, u, u, v);
     }
 
     #[testkit::test]
     fn partial_derivatives_equal_the_differentiated_sum(net in nets(), u in unit(), v in unit()) {
         let p = partial_derivatives(&net, uv(u, v)).unwrap();
         let [du, dv] = common::surface_partials_def(&net, uv(u, v));
-        prop_assert!(p.position.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12));
-        prop_assert!(p.du.abs_diff_eq(du, 1e-10), "{} vs {}", p.du, du);
-        prop_assert!(p.dv.abs_diff_eq(dv, 1e-10), "{} vs {}", p.dv, dv);
+        prop_assert!(p.position.abs_diff_eq(common::surface_def(&net, uv(u, v)), 1e-12), "partial_derivatives at ({}, {}).position: the double sum gives {}, yours {} (to 1e-12)", u, v, common::surface_def(&net, uv(u, v)), p.position);
+        prop_assert!(p.du.abs_diff_eq(du, 1e-10), "partial_derivatives at ({}, {}): ∂P/∂u, the double sum differentiated in u, is {}, yours {} (to 1e-10)", u, v, du, p.du);
+        prop_assert!(p.dv.abs_diff_eq(dv, 1e-10), "partial_derivatives at ({}, {}): ∂P/∂v, the double sum differentiated in v, is {}, yours {} (to 1e-10)", u, v, dv, p.dv);
     }
 
     #[testkit::test]
     fn normal_is_unit_and_perpendicular_to_both_derivatives(net in nets(), u in unit(), v in unit()) {
         if let Ok(n) = normal(&net, uv(u, v)) {
-            prop_assert!((n.length() - 1.0).abs() < 1e-12);
+            prop_assert!((n.length() - 1.0).abs() < 1e-12, "normal at ({}, {}) has unit length (to 1e-12), yours {} of length {}", u, v, n, n.length());
             let [du, dv] = common::surface_partials_def(&net, uv(u, v));
             let cross = du.cross(dv);
             if cross.length() > 1e-6 * du.length() * dv.length() {
-                prop_assert!(n.abs_diff_eq(cross.normalize(), 1e-8), "{} vs {}", n, cross.normalize());
+                prop_assert!(n.abs_diff_eq(cross.normalize(), 1e-8), "normal at ({}, {}) is ∂P/∂u × ∂P/∂v normalised, {}; yours {} (to 1e-8)", u, v, cross.normalize(), n);
             }
         }
     }
@@ -327,7 +372,7 @@ proptest! {
         let p = evaluate_u_then_v(&net, uv(u, v)).unwrap();
         let lo = net.control_points().iter().fold(DVec3::INFINITY, |m, &q| m.min(q));
         let hi = net.control_points().iter().fold(DVec3::NEG_INFINITY, |m, &q| m.max(q));
-        prop_assert!(p.cmpge(lo - 1e-12).all() && p.cmple(hi + 1e-12).all());
+        prop_assert!(p.cmpge(lo - 1e-12).all() && p.cmple(hi + 1e-12).all(), "evaluate_u_then_v at ({}, {}) = {} lies outside the control points' bounding box {} to {} (the convex hull property)", u, v, p, lo, hi);
     }
 
     #[testkit::test]
@@ -341,6 +386,6 @@ proptest! {
         let mapped = net.map(|p| a * p + b).unwrap();
         let lhs = evaluate_v_then_u(&mapped, uv(u, v)).unwrap();
         let rhs = a * evaluate_v_then_u(&net, uv(u, v)).unwrap() + b;
-        prop_assert!(lhs.abs_diff_eq(rhs, 1e-9), "{} vs {}", lhs, rhs);
+        prop_assert!(lhs.abs_diff_eq(rhs, 1e-9), "evaluate_v_then_u at ({}, {}): the mapped net A·P + b gives {}, the mapped point A·P(u, v) + b {} (affine maps commute with evaluation, to 1e-9)", u, v, lhs, rhs);
     }
 }

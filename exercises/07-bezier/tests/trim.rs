@@ -94,7 +94,11 @@ fn misclassified(
 #[testkit::test]
 fn interval_includes_its_boundary() {
     let rect = IntervalTrim::new(uv(0.25, 0.5), uv(0.75, 0.625)).unwrap();
-    assert!(rect.trims(uv(0.5, 0.55)));
+    let what = "IntervalTrim [0.25, 0.75] × [0.5, 0.625]";
+    assert!(
+        rect.trims(uv(0.5, 0.55)),
+        "{what}: (0.5, 0.55) lies inside, trimmed"
+    );
     for on in [
         uv(0.25, 0.5),
         uv(0.75, 0.625),
@@ -103,82 +107,157 @@ fn interval_includes_its_boundary() {
     ] {
         assert!(
             rect.trims(on),
-            "{on} is on the boundary: trimmed (seed: >=, <=)"
+            "{what}: {on} is on the boundary: trimmed (seed: >=, <=)"
         );
     }
     for off in [uv(0.2499, 0.55), uv(0.5, 0.626), uv(0.9, 0.9)] {
-        assert!(!rect.trims(off), "{off}");
+        assert!(!rect.trims(off), "{what}: {off} lies outside, not trimmed");
     }
 }
 
 #[testkit::test]
 fn circle_excludes_its_boundary() {
     let circle = CircleTrim::new(uv(0.5, 0.5), 0.25).unwrap();
-    assert!(circle.trims(uv(0.5, 0.5)));
-    assert!(circle.trims(uv(0.5, 0.7499)));
     // distance == radius exactly: kept (seed: distance < radius).
-    assert!(!circle.trims(uv(0.75, 0.5)));
-    assert!(!circle.trims(uv(0.5, 0.25)));
-    assert!(!circle.trims(uv(0.7, 0.7)));
+    for (p, trimmed, why) in [
+        (uv(0.5, 0.5), true, "the centre"),
+        (uv(0.5, 0.7499), true, "just inside"),
+        (uv(0.75, 0.5), false, "on the circle, distance = radius"),
+        (uv(0.5, 0.25), false, "on the circle, distance = radius"),
+        (uv(0.7, 0.7), false, "outside"),
+    ] {
+        assert_eq!(
+            circle.trims(p),
+            trimmed,
+            "CircleTrim centre (0.5, 0.5), radius 0.25, at {p} ({why}): trims where \
+             distance < radius, the boundary kept (seed: <)"
+        );
+    }
 }
 
 #[testkit::test]
 fn ellipse_includes_its_boundary() {
     let ellipse = EllipseTrim::new(uv(0.5, 0.5), uv(0.25, 0.125)).unwrap();
-    assert!(ellipse.trims(uv(0.5, 0.5)));
+    let what = "EllipseTrim centre (0.5, 0.5), radii (0.25, 0.125)";
+    assert!(ellipse.trims(uv(0.5, 0.5)), "{what}: the centre is trimmed");
     // (u − c₁)²/a² + (v − c₂)²/b² = 1 exactly on the axes: trimmed (seed: <= 1).
     for on in [uv(0.75, 0.5), uv(0.25, 0.5), uv(0.5, 0.625), uv(0.5, 0.375)] {
-        assert!(ellipse.trims(on), "{on}");
+        assert!(
+            ellipse.trims(on),
+            "{what}: {on} is on the ellipse, (u − c₁)²/a² + (v − c₂)²/b² = 1: trimmed (seed: <= \
+             1)"
+        );
     }
-    assert!(!ellipse.trims(uv(0.5, 0.63)));
-    assert!(!ellipse.trims(uv(0.7, 0.6)));
+    for off in [uv(0.5, 0.63), uv(0.7, 0.6)] {
+        assert!(
+            !ellipse.trims(off),
+            "{what}: {off} lies outside, (u − c₁)²/a² + (v − c₂)²/b² > 1: not trimmed"
+        );
+    }
 }
 
 #[testkit::test]
 fn nan_is_never_trimmed_and_bad_shapes_are_errors() {
     let nan = uv(f64::NAN, 0.5);
+    let rule = "a NaN uv is never trimmed";
     assert!(
         !IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0))
             .unwrap()
-            .trims(nan)
+            .trims(nan),
+        "IntervalTrim [0, 1]², {nan}: {rule}"
     );
-    assert!(!CircleTrim::new(uv(0.5, 0.5), 1.0).unwrap().trims(nan));
+    assert!(
+        !CircleTrim::new(uv(0.5, 0.5), 1.0).unwrap().trims(nan),
+        "CircleTrim centre (0.5, 0.5), radius 1, {nan}: {rule}"
+    );
     assert!(
         !EllipseTrim::new(uv(0.5, 0.5), uv(1.0, 1.0))
             .unwrap()
-            .trims(nan)
+            .trims(nan),
+        "EllipseTrim centre (0.5, 0.5), radii (1, 1), {nan}: {rule}"
     );
     assert!(
         !NewtonTrim::quadratic(QUADRATIC)
             .unwrap()
-            .trims(uv(0.5, f64::NAN))
+            .trims(uv(0.5, f64::NAN)),
+        "NewtonTrim::quadratic(QUADRATIC), (0.5, NaN): {rule}"
     );
     // The same shapes trim their centres.
     let centre = uv(0.5, 0.5);
     assert!(
         IntervalTrim::new(uv(0.0, 0.0), uv(1.0, 1.0))
             .unwrap()
-            .trims(centre)
+            .trims(centre),
+        "IntervalTrim [0, 1]² trims its centre (0.5, 0.5)"
     );
-    assert!(CircleTrim::new(centre, 1.0).unwrap().trims(centre));
+    assert!(
+        CircleTrim::new(centre, 1.0).unwrap().trims(centre),
+        "CircleTrim centre (0.5, 0.5), radius 1, trims its centre"
+    );
     assert!(
         EllipseTrim::new(centre, uv(1.0, 1.0))
             .unwrap()
-            .trims(centre)
+            .trims(centre),
+        "EllipseTrim centre (0.5, 0.5), radii (1, 1), trims its centre"
     );
-    assert!(NewtonTrim::quadratic(QUADRATIC).unwrap().trims(centre));
-    assert!(IntervalTrim::new(uv(0.5, 0.0), uv(0.4, 1.0)).is_err());
-    assert!(IntervalTrim::new(uv(f64::NAN, 0.0), uv(0.4, 1.0)).is_err());
-    assert!(CircleTrim::new(uv(0.5, 0.5), -0.1).is_err());
-    assert!(CircleTrim::new(uv(0.5, 0.5), f64::NAN).is_err());
-    assert!(EllipseTrim::new(uv(0.5, 0.5), uv(0.0, 0.1)).is_err());
-    assert!(EllipseTrim::new(uv(0.5, 0.5), uv(f64::INFINITY, 0.1)).is_err());
+    assert!(
+        NewtonTrim::quadratic(QUADRATIC).unwrap().trims(centre),
+        "NewtonTrim::quadratic(QUADRATIC) trims (0.5, 0.5), between the crossings of both arches"
+    );
+    for (refused, what) in [
+        (
+            IntervalTrim::new(uv(0.5, 0.0), uv(0.4, 1.0)).is_err(),
+            "IntervalTrim with min.u > max.u",
+        ),
+        (
+            IntervalTrim::new(uv(f64::NAN, 0.0), uv(0.4, 1.0)).is_err(),
+            "IntervalTrim with a NaN corner",
+        ),
+        (
+            CircleTrim::new(uv(0.5, 0.5), -0.1).is_err(),
+            "CircleTrim of radius −0.1",
+        ),
+        (
+            CircleTrim::new(uv(0.5, 0.5), f64::NAN).is_err(),
+            "CircleTrim of radius NaN",
+        ),
+        (
+            EllipseTrim::new(uv(0.5, 0.5), uv(0.0, 0.1)).is_err(),
+            "EllipseTrim with a radius 0",
+        ),
+        (
+            EllipseTrim::new(uv(0.5, 0.5), uv(f64::INFINITY, 0.1)).is_err(),
+            "EllipseTrim with an infinite radius",
+        ),
+    ] {
+        assert!(refused, "{what} is an error (the given constructor)");
+    }
     // Newton trims: 3 or 4 points, shared end points, finite.
     let [a, b, c, d] = QUADRATIC;
-    assert!(NewtonTrim::new(vec![a, c], vec![a, d, c]).is_err());
-    assert!(NewtonTrim::new(vec![a, b, c], vec![a, d, c + DVec2::X]).is_err());
-    assert!(NewtonTrim::new(vec![a, b, c], vec![a, d * f64::NAN, c]).is_err());
-    assert!(NewtonTrim::new(vec![a, b, b, b, c], vec![a, d, c]).is_err());
+    for (refused, what) in [
+        (
+            NewtonTrim::new(vec![a, c], vec![a, d, c]).is_err(),
+            "an upper curve of 2 points",
+        ),
+        (
+            NewtonTrim::new(vec![a, b, c], vec![a, d, c + DVec2::X]).is_err(),
+            "curves with different end points",
+        ),
+        (
+            NewtonTrim::new(vec![a, b, c], vec![a, d * f64::NAN, c]).is_err(),
+            "a NaN control point",
+        ),
+        (
+            NewtonTrim::new(vec![a, b, b, b, c], vec![a, d, c]).is_err(),
+            "an upper curve of 5 points",
+        ),
+    ] {
+        assert!(
+            refused,
+            "NewtonTrim::new with {what} is an error: 3 or 4 points each, shared end points, \
+             finite (the given constructor)"
+        );
+    }
 }
 
 #[testkit::test]
@@ -197,7 +276,12 @@ fn several_simple_shapes_in_one_square() {
         let e = (p - uv(0.7, 0.3)) / uv(0.2, 0.1);
         square || rect || circle || e.length_squared() <= 1.0
     });
-    assert_eq!(art, expected);
+    assert_eq!(
+        art, expected,
+        "seed Fig. 20, '#' trimmed: the square and rectangle include their boundary (≤), the \
+         circle excludes it (<), the ellipse includes it (≤ 1); left: yours, right: by the \
+         formulas"
+    );
     insta::assert_snapshot!(art);
 }
 
@@ -213,7 +297,7 @@ proptest! {
         let circle = CircleTrim::new(c, r).unwrap();
         let ellipse = EllipseTrim::new(c, DVec2::splat(r)).unwrap();
         prop_assert_eq!(circle.trims(p), (p - c).length() < r, "the circle trims |uv − centre| < radius at {}", p);
-        prop_assert_eq!(circle.trims(p), ellipse.trims(p));
+        prop_assert_eq!(circle.trims(p), ellipse.trims(p), "at {} off the boundary, EllipseTrim with radii ({}, {}) (right) is CircleTrim of radius {} (left), both centred at {}", p, r, r, r, c);
     }
 
     #[testkit::test]
@@ -223,7 +307,7 @@ proptest! {
         let (min, max) = (uv(a.0.min(b.0), a.1.min(b.1)), uv(a.0.max(b.0), a.1.max(b.1)));
         let rect = IntervalTrim::new(min, max).unwrap();
         let inside = min.x <= p.0 && p.0 <= max.x && min.y <= p.1 && p.1 <= max.y;
-        prop_assert_eq!(rect.trims(uv(p.0, p.1)), inside);
+        prop_assert_eq!(rect.trims(uv(p.0, p.1)), inside, "IntervalTrim {} to {} at ({}, {}): trims exactly min ≤ u ≤ max in u and in v, boundary included (right: that rule)", min, max, p.0, p.1);
     }
 }
 
@@ -235,39 +319,77 @@ fn newton_finds_the_square_root_of_two() {
     // x² − 2 from 1: 1.5, 1.41667, 1.414216, 1.41421356237469 with steps
     // h = −0.5, 0.0833, 0.00245, 2.1e-6: the fourth is below ε = 0.001.
     let root = newton(|x| x * x - 2.0, |x| 2.0 * x, 1.0, NewtonSettings::default());
-    assert!(root.converged);
-    assert_eq!(root.iterations, 4);
-    assert!((root.t - 2.0_f64.sqrt()).abs() < 1e-11, "{}", root.t);
+    let call = "newton(x² − 2, 2x, from 1, 10 iterations, ε = 0.001)";
+    assert!(
+        root.converged,
+        "{call}: the fourth step h = 2.1e-6 is below ε, so it converged; yours {root:?}"
+    );
+    assert_eq!(
+        root.iterations, 4,
+        "{call}: steps h = −0.5, 0.0833, 0.00245, 2.1e-6, and it returns right after the first \
+         with |h| < ε: 4 iterations"
+    );
+    assert!(
+        (root.t - 2.0_f64.sqrt()).abs() < 1e-11,
+        "{call}: t = √2 = 1.41421356237…, to 1e-11, yours {}",
+        root.t
+    );
     // With ε = 0.1 the second step (0.0833) already stops it at 17/12.
     let coarse = NewtonSettings {
         max_iterations: 10,
         epsilon: 0.1,
     };
     let root = newton(|x| x * x - 2.0, |x| 2.0 * x, 1.0, coarse);
-    assert_eq!(root.iterations, 2);
-    assert!((root.t - 17.0 / 12.0).abs() < 1e-15, "{}", root.t);
+    let call = "newton(x² − 2, 2x, from 1, ε = 0.1)";
+    assert_eq!(
+        root.iterations, 2,
+        "{call}: the second step, h = 0.0833 < 0.1, stops it: 2 iterations"
+    );
+    assert!(
+        (root.t - 17.0 / 12.0).abs() < 1e-15,
+        "{call}: after two steps t = 17/12, the point the step below ε led to; yours {}",
+        root.t
+    );
 }
 
 #[testkit::test]
 fn newton_stops_where_it_cannot_go_on() {
     // f' = 0 at the start: the step is not finite, nothing moves.
     let flat = newton(|x| x * x + 1.0, |x| 2.0 * x, 0.0, NewtonSettings::default());
-    assert_eq!((flat.t, flat.iterations, flat.converged), (0.0, 0, false));
+    assert_eq!(
+        (flat.t, flat.iterations, flat.converged),
+        (0.0, 0, false),
+        "newton(x² + 1, 2x, from 0): f'(0) = 0 makes h infinite, so it stops where it is: \
+         (t, iterations, converged) = (0, 0, false)"
+    );
     // No real root: the iteration runs out after max_iterations.
     let settings = NewtonSettings {
         max_iterations: 6,
         epsilon: 0.001,
     };
     let wander = newton(|x| x * x + 1.0, |x| 2.0 * x, 0.5, settings);
-    assert_eq!(wander.iterations, 6);
-    assert!(!wander.converged);
+    assert_eq!(
+        wander.iterations, 6,
+        "newton(x² + 1, 2x, from 0.5, 6 iterations): no real root, so it runs out after \
+         max_iterations"
+    );
+    assert!(
+        !wander.converged,
+        "newton(x² + 1, 2x, from 0.5, 6 iterations): no real root, no step below ε: not \
+         converged; yours {wander:?}"
+    );
     // Zero iterations return the start.
     let none = NewtonSettings {
         max_iterations: 0,
         epsilon: 0.001,
     };
     let root = newton(|x| x - 3.0, |_| 1.0, 1.0, none);
-    assert_eq!((root.t, root.iterations, root.converged), (1.0, 0, false));
+    assert_eq!(
+        (root.t, root.iterations, root.converged),
+        (1.0, 0, false),
+        "newton(x − 3, 1, from 1, max_iterations 0): no step at all returns the start: \
+         (t, iterations, converged) = (1, 0, false)"
+    );
 }
 
 #[testkit::test]
@@ -276,14 +398,44 @@ fn between_the_crossings_of_one_arch() {
     // at v = 0.6, t (1 − t) = ⅛, so t = ½ ± √½ / 2 and u = 0.5 ± 0.3 √½ = 0.5 ± 0.2121.
     let arch = [QUADRATIC[0], QUADRATIC[1], QUADRATIC[2]];
     let s = NewtonSettings::default();
-    assert!(between_crossings(&arch, uv(0.5, 0.6), s));
-    assert!(between_crossings(&arch, uv(0.71, 0.6), s));
-    assert!(between_crossings(&arch, uv(0.29, 0.6), s));
-    assert!(!between_crossings(&arch, uv(0.72, 0.6), s));
-    assert!(!between_crossings(&arch, uv(0.28, 0.6), s));
     // Above the apex (0.7) and below the end points there are no roots in [0, 1].
-    assert!(!between_crossings(&arch, uv(0.5, 0.75), s));
-    assert!(!between_crossings(&arch, uv(0.5, 0.45), s));
+    for (a, inside, why) in [
+        (
+            uv(0.5, 0.6),
+            true,
+            "between the crossings at u = 0.2879 and 0.7121",
+        ),
+        (
+            uv(0.71, 0.6),
+            true,
+            "just left of the right crossing, u = 0.7121",
+        ),
+        (
+            uv(0.29, 0.6),
+            true,
+            "just right of the left crossing, u = 0.2879",
+        ),
+        (uv(0.72, 0.6), false, "right of both crossings"),
+        (uv(0.28, 0.6), false, "left of both crossings"),
+        (
+            uv(0.5, 0.75),
+            false,
+            "above the apex v = 0.7: no root in [0, 1]",
+        ),
+        (
+            uv(0.5, 0.45),
+            false,
+            "below the end points: no root in [0, 1]",
+        ),
+    ] {
+        assert_eq!(
+            between_crossings(&arch, a, s),
+            inside,
+            "between_crossings(the upper arch (0.2, 0.5), (0.5, 0.9), (0.8, 0.5), {a}), {why}: \
+             inside exactly when Newton from t = 1 and from t = 0 both converge in [0, 1] and \
+             x₁ = C_u(t₁) − u, x₂ = C_u(t₂) − u have opposite signs"
+        );
+    }
 }
 
 #[testkit::test]
@@ -297,10 +449,18 @@ fn an_arch_running_right_to_left_is_the_second_sign_case() {
     let reversed = [QUADRATIC[2], QUADRATIC[1], QUADRATIC[0]];
     let s = NewtonSettings::default();
     for inside in [uv(0.5, 0.6), uv(0.71, 0.6), uv(0.29, 0.6)] {
-        assert!(between_crossings(&reversed, inside, s), "{inside}");
+        assert!(
+            between_crossings(&reversed, inside, s),
+            "between_crossings(the arch reversed, from (0.8, 0.5), {inside}): between its \
+             crossings, now with x₁ < 0 < x₂ (seed §3.2.1's second sign case): inside"
+        );
     }
     for outside in [uv(0.72, 0.6), uv(0.28, 0.6), uv(0.5, 0.75)] {
-        assert!(!between_crossings(&reversed, outside, s), "{outside}");
+        assert!(
+            !between_crossings(&reversed, outside, s),
+            "between_crossings(the arch reversed, from (0.8, 0.5), {outside}): not between its \
+             crossings: outside"
+        );
     }
     // A whole region given from its right end point is the same region.
     let [a, b, c, d] = QUADRATIC;
@@ -308,7 +468,8 @@ fn an_arch_running_right_to_left_is_the_second_sign_case() {
     assert_eq!(
         misclassified(100, 0.005, &trim, in_quadratic),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NewtonTrim::quadratic given from its right end (c, b, a, d): the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -318,7 +479,8 @@ fn quadratic_newton_trim_matches_the_exact_region() {
     assert_eq!(
         misclassified(100, 0.005, &trim, in_quadratic),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NewtonTrim::quadratic(QUADRATIC): the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -328,7 +490,8 @@ fn cubic_newton_trim_matches_the_exact_region() {
     assert_eq!(
         misclassified(100, 0.005, &trim, in_cubic),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NewtonTrim::cubic(CUBIC): the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -341,7 +504,8 @@ fn a_cubic_region_of_curves_running_right_to_left_is_the_same_region() {
     assert_eq!(
         misclassified(100, 0.005, &trim, in_cubic),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NewtonTrim of CUBIC's curves each reversed: the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -354,7 +518,8 @@ fn a_nested_region_given_right_to_left_keeps_the_same_inner_region() {
     assert_eq!(
         misclassified(100, 0.005, &ring, |p| in_quadratic(p) && !in_inner(p)),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NestedNewtonTrim of the quadratic and the inner region, both given from the right: the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -363,7 +528,11 @@ fn nested_newton_trim_keeps_the_inner_region() {
     let outer = NewtonTrim::quadratic(QUADRATIC).unwrap();
     let inner = NewtonTrim::quadratic(INNER).unwrap();
     let ring = NestedNewtonTrim::new(outer, inner);
-    assert!(ring.trims(uv(0.3, 0.5 + 1e-3)));
+    assert!(
+        ring.trims(uv(0.3, 0.5 + 1e-3)),
+        "NestedNewtonTrim(QUADRATIC, INNER) trims (0.3, 0.501): inside the outer region, left of \
+         the inner one"
+    );
     assert!(
         !ring.trims(uv(0.5, 0.55)),
         "inside the inner curve the surface is drawn"
@@ -371,7 +540,8 @@ fn nested_newton_trim_keeps_the_inner_region() {
     assert_eq!(
         misclassified(100, 0.005, &ring, |p| in_quadratic(p) && !in_inner(p)),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NestedNewtonTrim(QUADRATIC, INNER): the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -383,11 +553,17 @@ fn too_few_iterations_or_a_coarse_epsilon_spoil_the_edge() {
         max_iterations: 1,
         epsilon: 0.001,
     });
-    assert!(misclassified(100, 0.005, &one, in_cubic) > 100);
+    let wrong = misclassified(100, 0.005, &one, in_cubic);
+    assert!(
+        wrong > 100,
+        "NewtonTrim::cubic(CUBIC) with max_iterations 1: one Newton step cannot find the \
+         crossings, so more than 100 of the 100² samples come out wrong; yours only {wrong}"
+    );
     assert_eq!(
         misclassified(100, 0.005, &trim, in_cubic),
         0,
-        "samples of the grid on the wrong side of the region (away from its boundary)"
+        "NewtonTrim::cubic(CUBIC) at the default 10 iterations and ε = 0.001: the samples of a 100² grid (those farther than 0.005 from the boundary) \\
+         that it puts on the wrong side of the exact region; trims(uv) is true exactly inside"
     );
 }
 
@@ -418,7 +594,8 @@ fn iteration_and_epsilon_table() {
     // More iterations never hurt at the seed's ε.
     assert!(
         worst_at_default_epsilon.windows(2).all(|w| w[1] <= w[0]),
-        "{table}"
+        "at ε = 0.001 more iterations never leave more samples wrong; yours (the ε = 0.001 \
+         column, by iterations 2, 3, 4, 5, 6, 7, 10): {worst_at_default_epsilon:?}\n{table}"
     );
     insta::assert_snapshot!(table);
 }
@@ -499,19 +676,40 @@ fn figure_nested_newton() {
 #[testkit::test]
 fn hostile_curves_are_never_inside() {
     let s = NewtonSettings::default();
-    assert!(!between_crossings(&[], uv(0.5, 0.5), s));
-    assert!(!between_crossings(&[uv(0.5, 0.5)], uv(0.5, 0.5), s));
+    let rule = "a curve or point that is empty or not finite is never inside";
+    assert!(
+        !between_crossings(&[], uv(0.5, 0.5), s),
+        "between_crossings(no points, (0.5, 0.5)): {rule}"
+    );
+    assert!(
+        !between_crossings(&[uv(0.5, 0.5)], uv(0.5, 0.5), s),
+        "between_crossings(one point, that point): a single point bounds nothing"
+    );
     let nan = [QUADRATIC[0], uv(f64::NAN, 0.9), QUADRATIC[2]];
-    assert!(!between_crossings(&nan, uv(0.5, 0.6), s));
+    assert!(
+        !between_crossings(&nan, uv(0.5, 0.6), s),
+        "between_crossings(an arch with a NaN control point, (0.5, 0.6)): {rule}"
+    );
     let arch = [QUADRATIC[0], QUADRATIC[1], QUADRATIC[2]];
-    assert!(!between_crossings(&arch, uv(f64::INFINITY, 0.6), s));
+    assert!(
+        !between_crossings(&arch, uv(f64::INFINITY, 0.6), s),
+        "between_crossings(the arch, (∞, 0.6)): {rule}"
+    );
     let nan_settings = NewtonSettings {
         max_iterations: 10,
         epsilon: f64::NAN,
     };
-    assert!(!between_crossings(&arch, uv(0.5, 0.6), nan_settings));
+    assert!(
+        !between_crossings(&arch, uv(0.5, 0.6), nan_settings),
+        "between_crossings(the arch, (0.5, 0.6)) with ε = NaN: |h| < NaN never holds, Newton \
+         never converges, no crossing: not inside"
+    );
     // With finite settings, the same point lies under the arch.
-    assert!(between_crossings(&arch, uv(0.5, 0.6), s));
+    assert!(
+        between_crossings(&arch, uv(0.5, 0.6), s),
+        "between_crossings(the arch, (0.5, 0.6)) with the default settings: under the arch, \
+         inside"
+    );
 }
 
 /// Seed §5.2 (Figs. 29–34) as one picture of six panels, the cubic region

@@ -57,9 +57,30 @@ fn region(loops: Vec<Vec<Vec<DVec2>>>) -> TrimRegion {
 #[testkit::test]
 fn a_segment_is_crossed_once_from_its_left() {
     let segment = [p(0.0, -1.0), p(0.0, 1.0)];
-    assert!(crossing_parity(&segment, p(-1.0, 0.0)));
-    assert!(!crossing_parity(&segment, p(1.0, 0.0)));
-    assert!(!crossing_parity(&segment, p(-1.0, 2.0)));
+    for (a, crossed, why) in [
+        (
+            p(-1.0, 0.0),
+            true,
+            "the segment crosses the ray at u = 0 > −1",
+        ),
+        (
+            p(1.0, 0.0),
+            false,
+            "the segment lies left of the ray's start",
+        ),
+        (
+            p(-1.0, 2.0),
+            false,
+            "the segment lies below the ray's level",
+        ),
+    ] {
+        assert_eq!(
+            crossing_parity(&segment, a),
+            crossed,
+            "crossing_parity((0, −1) → (0, 1), {a}): {why}; the ray a + x·(1, 0), x > 0, is \
+             crossed where the curve changes side (v ≥ a.v above) at u > a.u"
+        );
+    }
 }
 
 #[testkit::test]
@@ -73,26 +94,57 @@ fn end_points_on_the_ray_follow_the_half_open_rule() {
     //   |
     //   ●  (1, −1)
     let a = p(0.0, 0.0);
-    assert!(!crossing_parity(&[p(1.0, 0.0), p(1.0, 1.0)], a));
-    assert!(crossing_parity(&[p(1.0, -1.0), p(1.0, 0.0)], a));
+    let rule = "a point with v ≥ a.v counts as above (the half-open rule)";
+    assert!(
+        !crossing_parity(&[p(1.0, 0.0), p(1.0, 1.0)], a),
+        "crossing_parity((1, 0) → (1, 1), (0, 0)): {rule}, so a segment from the ray upwards \
+         never changes side: not crossed"
+    );
+    assert!(
+        crossing_parity(&[p(1.0, -1.0), p(1.0, 0.0)], a),
+        "crossing_parity((1, −1) → (1, 0), (0, 0)): {rule}, so a segment from below up to the \
+         ray changes side: crossed"
+    );
     // Together, a path through the ray's level is crossed once.
     let up = [p(1.0, -1.0), p(1.0, 0.0)];
     let on = [p(1.0, 0.0), p(1.0, 1.0)];
-    assert!(crossing_parity(&up, a) ^ crossing_parity(&on, a));
+    assert!(
+        crossing_parity(&up, a) ^ crossing_parity(&on, a),
+        "(1, −1) → (1, 0) → (1, 1) crosses the ray from (0, 0) once: exactly one of its two \
+         segments counts ({rule})"
+    );
     // A tangency (touching the ray from below) is no crossing.
-    assert!(!crossing_parity(
-        &[p(1.0, -1.0), p(2.0, 1.0), p(3.0, -1.0)],
-        a
-    ));
+    assert!(
+        !crossing_parity(&[p(1.0, -1.0), p(2.0, 1.0), p(3.0, -1.0)], a),
+        "crossing_parity((1, −1), (2, 1), (3, −1); (0, 0)): the curve touches the ray's level \
+         from below and goes back, ending on the side it started: not crossed"
+    );
 }
 
 #[testkit::test]
 fn the_parabola_is_crossed_twice_or_once() {
     let parabola = &parabola_loop()[0];
     // Ray at y = ¼ meets y = x² at x = ±½.
-    assert!(!crossing_parity(parabola, p(-2.0, 0.25)));
-    assert!(crossing_parity(parabola, p(0.0, 0.25)));
-    assert!(!crossing_parity(parabola, p(0.6, 0.25)));
+    for (a, crossed, why) in [
+        (
+            p(-2.0, 0.25),
+            false,
+            "the ray crosses it twice, at x = −½ and ½",
+        ),
+        (p(0.0, 0.25), true, "the ray crosses it once, at x = ½"),
+        (
+            p(0.6, 0.25),
+            false,
+            "both crossings lie behind the ray's start",
+        ),
+    ] {
+        assert_eq!(
+            crossing_parity(parabola, a),
+            crossed,
+            "crossing_parity(the parabola y = x², {a}): {why}; the parity is odd exactly for \
+             one crossing"
+        );
+    }
 }
 
 #[testkit::test]
@@ -107,8 +159,17 @@ fn parabola_region_is_exact() {
         (p(-0.99, 0.99), true),
         (p(5.0, 0.5), false),
     ] {
-        assert_eq!(r.contains(q), inside, "{q}");
-        assert_eq!(r.trims(q), inside, "{q}");
+        assert_eq!(
+            r.contains(q),
+            inside,
+            "the region x² < y < 1, contains({q}): an odd number of crossings of the ray from it \
+             (√½ ≈ 0.7071)"
+        );
+        assert_eq!(
+            r.trims(q),
+            inside,
+            "the region x² < y < 1, trims({q}): a TrimRegion trims what it contains"
+        );
     }
 }
 
@@ -131,10 +192,18 @@ fn a_loop_inside_a_loop_is_a_hole() {
         hole,
         square(p(0.0, 0.3), 0.05),
     ]);
-    assert!(r.contains(p(1.5, 0.0)));
-    assert!(!r.contains(p(0.0, 0.4)), "in the hole");
-    assert!(r.contains(p(0.0, 0.3)), "on the island");
-    assert!(!r.contains(p(3.0, 0.0)), "outside");
+    let rule = "a square with the shrunk parabola as a hole and a small square island in that: \
+                loops in loops alternate (even-odd rule)";
+    assert!(
+        r.contains(p(1.5, 0.0)),
+        "{rule}; (1.5, 0) lies in the square, outside the hole: inside"
+    );
+    assert!(!r.contains(p(0.0, 0.4)), "{rule}; (0, 0.4) is in the hole");
+    assert!(r.contains(p(0.0, 0.3)), "{rule}; (0, 0.3) is on the island");
+    assert!(
+        !r.contains(p(3.0, 0.0)),
+        "{rule}; (3, 0) is outside the square"
+    );
 }
 
 #[testkit::test]
@@ -155,7 +224,12 @@ fn end_points_at_different_heights_are_fine() {
             let inside = (0.0..=1.0).contains(&t) && q.y > bottom && q.y < top;
             let margin = (q.y - top).abs().min((q.y - bottom).abs());
             if margin > 1e-9 {
-                assert_eq!(r.contains(q), inside, "{q}");
+                assert_eq!(
+                    r.contains(q),
+                    inside,
+                    "the arch (0.2, 0.4), (0.5, 0.9), (0.8, 0.6) closed by its chord, contains({q}): \
+                     inside exactly between the chord v = {bottom} and the arch v = {top} here"
+                );
             }
         }
     }
@@ -174,7 +248,12 @@ fn points_on_the_boundary_terminate() {
         let _either_way = r.contains(q);
     }
     // Off the boundary, the answers are clear.
-    assert!(r.contains(p(0.0, 0.5)) && !r.contains(p(0.0, 2.0)));
+    assert!(
+        r.contains(p(0.0, 0.5)) && !r.contains(p(0.0, 2.0)),
+        "the region x² < y < 1 contains (0, 0.5) and not (0, 2), yours {} and {}",
+        r.contains(p(0.0, 0.5)),
+        r.contains(p(0.0, 2.0))
+    );
     // A curve of the highest degree through the point.
     let wiggle: Vec<DVec2> = (0..=bezier::MAX_DEGREE)
         .map(|i| p(i as f64, if i % 2 == 0 { 1.0 } else { -1.0 }))
@@ -184,8 +263,16 @@ fn points_on_the_boundary_terminate() {
 
 #[testkit::test]
 fn invalid_loops_are_clear_errors_and_nan_is_outside() {
-    assert_eq!(TrimLoop::new(vec![]), Err(BezierError::Empty));
-    assert_eq!(TrimLoop::new(vec![vec![]]), Err(BezierError::Empty));
+    assert_eq!(
+        TrimLoop::new(vec![]),
+        Err(BezierError::Empty),
+        "TrimLoop::new of no curves is Empty (the given constructor)"
+    );
+    assert_eq!(
+        TrimLoop::new(vec![vec![]]),
+        Err(BezierError::Empty),
+        "TrimLoop::new of a curve without points is Empty"
+    );
     let open = vec![
         vec![p(0.0, 0.0), p(1.0, 0.0)],
         vec![p(1.0, 0.5), p(0.0, 0.0)],
@@ -195,18 +282,20 @@ fn invalid_loops_are_clear_errors_and_nan_is_outside() {
         Err(BezierError::LoopNotClosed {
             curve: 1,
             previous: 0
-        })
+        }),
+        "TrimLoop::new: curve 1 starts at (1, 0.5), not where curve 0 ends: LoopNotClosed"
     );
     let nan = vec![vec![p(0.0, 0.0), p(f64::NAN, 0.0), p(0.0, 0.0)]];
     assert_eq!(
         TrimLoop::new(nan),
-        Err(BezierError::NonFinitePoint { index: 1 })
+        Err(BezierError::NonFinitePoint { index: 1 }),
+        "TrimLoop::new with a NaN in point 1: NonFinitePoint naming it"
     );
     let long = vec![vec![p(0.0, 0.0); bezier::MAX_DEGREE + 2]];
-    assert!(matches!(
-        TrimLoop::new(long),
-        Err(BezierError::DegreeTooHigh { .. })
-    ));
+    assert!(
+        matches!(TrimLoop::new(long), Err(BezierError::DegreeTooHigh { .. })),
+        "TrimLoop::new with a curve of MAX_DEGREE + 2 points: DegreeTooHigh"
+    );
     let r = region(vec![parabola_loop()]);
     for q in [
         p(f64::NAN, 0.5),
@@ -214,13 +303,20 @@ fn invalid_loops_are_clear_errors_and_nan_is_outside() {
         p(f64::INFINITY, 0.5),
         p(0.0, f64::NEG_INFINITY),
     ] {
-        assert!(!r.contains(q), "{q}");
+        assert!(
+            !r.contains(q),
+            "the region x² < y < 1, contains({q}): a point with a NaN or infinite coordinate is \
+             outside"
+        );
     }
     assert!(
         r.contains(p(0.0, 0.5)),
         "(0, 0.5) lies inside the parabola's loop"
     );
-    assert!(!TrimRegion::new(vec![]).contains(p(0.0, 0.5)));
+    assert!(
+        !TrimRegion::new(vec![]).contains(p(0.0, 0.5)),
+        "a region of no loops contains nothing"
+    );
 }
 
 proptest! {
@@ -230,7 +326,7 @@ proptest! {
     fn parabola_region_matches_its_formula(x in -1.5..1.5_f64, y in -0.5..1.5_f64) {
         let q = p(x, y);
         prop_assume!(far_from_parabola(q, 1e-6));
-        prop_assert_eq!(region(vec![parabola_loop()]).contains(q), in_parabola(q));
+        prop_assert_eq!(region(vec![parabola_loop()]).contains(q), in_parabola(q), "the region x² < y < 1, contains({}) (left: yours, right: the formula)", q);
     }
 
     #[testkit::test]
@@ -254,23 +350,31 @@ proptest! {
                 c.reverse();
             }
         }
-        prop_assert_eq!(region(vec![curves]).contains(map(q)), in_parabola(q));
+        prop_assert_eq!(region(vec![curves]).contains(map(q)), in_parabola(q), "the region x² < y < 1 turned by {} rad, moved by ({}, {}){}: contains({}), the image of {} (left: yours, right: the formula at {}); rotation, translation and orientation do not matter", angle, shift.0, shift.1, if reversed { ", curves reversed" } else { "" }, map(q), q, q);
     }
 }
 
 #[testkit::test]
 fn hostile_curves_never_hang_or_panic() {
     let a = p(0.0, 0.0);
-    assert!(!crossing_parity(&[], a));
-    assert!(!crossing_parity(&[p(f64::NAN, 1.0), p(1.0, -1.0)], a));
-    assert!(!crossing_parity(
-        &[p(1.0, 1.0), p(1.0, -1.0)],
-        p(f64::NAN, 0.0)
-    ));
-    assert!(!crossing_parity(
-        &[p(-f64::MAX, 1.0), p(f64::MAX, -1.0)],
-        p(f64::MAX, 0.0)
-    ));
+    let rule = "a curve or point that is empty or not finite is never crossed";
+    assert!(
+        !crossing_parity(&[], a),
+        "crossing_parity(no points, (0, 0)): {rule}"
+    );
+    assert!(
+        !crossing_parity(&[p(f64::NAN, 1.0), p(1.0, -1.0)], a),
+        "crossing_parity((NaN, 1) → (1, −1), (0, 0)): {rule}"
+    );
+    assert!(
+        !crossing_parity(&[p(1.0, 1.0), p(1.0, -1.0)], p(f64::NAN, 0.0)),
+        "crossing_parity((1, 1) → (1, −1), (NaN, 0)): {rule}"
+    );
+    assert!(
+        !crossing_parity(&[p(-f64::MAX, 1.0), p(f64::MAX, -1.0)], p(f64::MAX, 0.0)),
+        "crossing_parity((−MAX, 1) → (MAX, −1), (MAX, 0)): the segment crosses the level at \
+         u = 0, behind the ray's start at u = f64::MAX: not crossed"
+    );
     // Huge but finite: halving never overflows.
     let huge = [
         p(-f64::MAX, -f64::MAX),
@@ -279,5 +383,8 @@ fn hostile_curves_never_hang_or_panic() {
     ];
     let _either_way = crossing_parity(&huge, a);
     // An ordinary segment across the ray is crossed.
-    assert!(crossing_parity(&[p(1.0, 1.0), p(1.0, -1.0)], a));
+    assert!(
+        crossing_parity(&[p(1.0, 1.0), p(1.0, -1.0)], a),
+        "crossing_parity((1, 1) → (1, −1), (0, 0)): an ordinary segment across the ray is crossed"
+    );
 }
