@@ -32,7 +32,8 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::{Args, Parser, Subcommand};
 
-/// Course tooling: grade exercises, generate stubs, test the course.
+/// The course's tooling: grade the exercises, watch, hints, the figures and the viewer (and, in
+/// the course repository, the staff's tools).
 #[derive(Parser)]
 #[command(name = "cargo xtask", bin_name = "cargo xtask")]
 struct Cli {
