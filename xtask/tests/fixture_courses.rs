@@ -57,7 +57,10 @@ fn each_misbehaviour_fails_its_task_with_its_reason() {
             "unfinished",
             "not implemented yet: unfinished: count the pixels",
         ),
-        ("loops", "timed out after 3 s (a loop without end, or far more steps than the test needs)"),
+        (
+            "loops",
+            "timed out after 3 s (a loop without end, or far more steps than the test needs)",
+        ),
         ("overflow", "stack overflow"),
         (
             "exits",

@@ -2,7 +2,7 @@
 //! (ours, [`super::report`]), `results.json` (Gradescope's autograder
 //! format, [`super::results_json`]), `junit.xml` (for CI test viewers,
 //! [`super::junit`]), `report.html` (for people, [`super::html`]) and
-//! `classroom/<task>.json` (GitHub Classroom's, [`crate::classroom`]). The
+//! `classroom/<task>.json` (GitHub Classroom's, [`super::classroom`]). The
 //! formats read the report model and nothing of each other.
 
 use std::fs;
@@ -32,7 +32,7 @@ pub fn write_all(report: &Report, out: &Path) -> Result<()> {
     let classroom = out.join("classroom");
     fs::create_dir_all(&classroom)
         .with_context(|| format!("cannot create {}", classroom.display()))?;
-    for (id, result) in crate::classroom::results(report) {
+    for (id, result) in super::classroom::results(report) {
         write(
             &format!("classroom/{id}.json"),
             serde_json::to_string_pretty(&result).context("cannot serialise a task's result")?,

@@ -28,6 +28,7 @@
 
 mod build;
 pub mod class_report;
+pub mod classroom;
 pub mod export;
 mod forbidden;
 mod html;
@@ -54,7 +55,7 @@ use anyhow::{Context, Result, bail};
 use indicatif::ProgressBar;
 
 pub use pool::Permits;
-pub use report::{Edition, Report, TaskStatus, TestStatus};
+pub use report::{Edition, Report, TaskStatus};
 
 use crate::stage;
 pub use crate::stage::Overlay;
@@ -171,7 +172,9 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
     in_stage.target_dir = Some(staged.target_dir.clone());
     let edition = match overlay {
         Overlay::Reference => Edition::Reference,
-        Overlay::Own | Overlay::Submission(_) | Overlay::DoNothing(_) => Edition::Student,
+        Overlay::Own | Overlay::Submission(_) => Edition::Student,
+        #[cfg(feature = "staff")]
+        Overlay::DoNothing(_) => Edition::Student,
     };
     let mut report = grade_tree(&in_stage, edition)?;
     report.root = root;

@@ -34,9 +34,9 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use super::PENDING_SNAPSHOTS;
-use super::report::{
-    self, Report, SnapshotMismatch, TaskReport, TaskStatus, TestReport, TestStatus,
-};
+#[cfg(feature = "staff")]
+use super::report::{self, Report, TaskStatus, TestReport};
+use super::report::{SnapshotMismatch, TaskReport, TestStatus};
 use super::submission::nofollow;
 use crate::topics::Topic;
 
@@ -193,6 +193,7 @@ fn slashed(path: &Path) -> String {
 /// Whether `test` passes by the review that accepted `accepted` (official
 /// snapshots' paths): it failed, ran to its end, and the grader recorded
 /// mismatches, every one of them accepted.
+#[cfg(feature = "staff")]
 fn passes_by_review(test: &TestReport, accepted: &[String]) -> bool {
     test.status == TestStatus::Failed
         && !test.exit.stopped()
@@ -207,6 +208,7 @@ fn passes_by_review(test: &TestReport, accepted: &[String]) -> bool {
 /// Applies the review's verdicts to `report`: `accepted` are the official
 /// snapshots' paths (as `review.json` names them) the tutor found the
 /// student's right. Returns how many tests pass by review.
+#[cfg(feature = "staff")]
 pub fn apply(report: &mut Report, accepted: &[String]) -> usize {
     let tampered = report
         .integrity
@@ -261,10 +263,13 @@ pub fn apply(report: &mut Report, accepted: &[String]) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(feature = "staff")]
     use crate::grade::report::tests::{report_of, test};
 
+    #[cfg(feature = "staff")]
     const SNAP: &str = "exercises/01-lines/tests/snapshots/midpoint__octants.snap";
 
+    #[cfg(feature = "staff")]
     /// The reason the grader's outcome gives a snapshot's mismatch, which
     /// any test process can print.
     fn insta_words() -> String {
@@ -273,6 +278,7 @@ mod tests {
         )
     }
 
+    #[cfg(feature = "staff")]
     fn mismatch(name: &str) -> crate::grade::report::TestReport {
         let mut failed = test(name, TestStatus::Failed);
         failed.reason = Some(insta_words());
@@ -283,6 +289,7 @@ mod tests {
         failed
     }
 
+    #[cfg(feature = "staff")]
     #[test]
     fn a_reason_in_insta_words_without_a_recorded_mismatch_gets_nothing() {
         let mut words = test("octants", TestStatus::Failed);
@@ -292,6 +299,7 @@ mod tests {
         assert_eq!(report.score, 0.0);
     }
 
+    #[cfg(feature = "staff")]
     #[test]
     fn a_test_stopped_by_a_limit_gets_nothing_back() {
         let mut stopped = mismatch("octants");
@@ -335,6 +343,7 @@ fn plain() { assert_eq!(1, 1); }
         assert!(compared_snapshots(source, "dda", "absent").is_empty());
     }
 
+    #[cfg(feature = "staff")]
     #[test]
     fn only_pending_snapshots_that_differ_are_recorded_and_links_never() {
         let dir = std::env::temp_dir().join(format!("xtask-reviewed-{}", std::process::id()));
@@ -462,6 +471,7 @@ fn plain() { assert_eq!(1, 1); }
         assert!(!same_body("#.\n.#\n", "#.\n##\n"));
     }
 
+    #[cfg(feature = "staff")]
     #[test]
     fn an_accepted_snapshot_gives_its_test_back_and_a_rejected_one_takes_it_again() {
         let tests = vec![
@@ -485,6 +495,7 @@ fn plain() { assert_eq!(1, 1); }
         assert_eq!(report.score, 2.0);
     }
 
+    #[cfg(feature = "staff")]
     #[test]
     fn a_submission_that_tampered_gets_nothing_back() {
         let mut report = report_of(

@@ -50,6 +50,7 @@ use super::platform::kill_pid;
 /// for a workflow's `run: |` block; it goes in the same step as the grade,
 /// since each step starts in the runner's own cgroup.
 #[must_use]
+#[cfg(feature = "staff")]
 pub fn delegate_script(indent: &str) -> String {
     const SCRIPT: &str = r#"# A cgroup of this user's own, so that the grader limits the memory and
 # the processes of each test together (cgroup v2; see xtask/src/sandbox/cgroup.rs).

@@ -89,8 +89,10 @@ pub mod const_eval;
 mod environment;
 mod platform;
 
+pub use cgroup::CgroupVersion;
+#[cfg(feature = "staff")]
+pub use cgroup::delegate_script;
 use cgroup::{Cgroup, Hierarchy};
-pub use cgroup::{CgroupVersion, delegate_script};
 pub use environment::{Environment, Toolchain};
 use platform::{contain, kill, kill_group, seccomp_filter, signal};
 

@@ -139,11 +139,13 @@ pub enum Overlay<'a> {
     /// The stubs with each `todo!()` replaced by the cheapest body that
     /// compiles (see `stubs::do_nothing`), except on the lines listed per
     /// task file: the edition every task must score 0 with.
+    #[cfg(feature = "staff")]
     DoNothing(&'a DoNothingKeep),
 }
 
 /// Lines (1-based) of task files whose `todo!()` the do-nothing edition
 /// keeps, by the file's path in the course.
+#[cfg(feature = "staff")]
 pub type DoNothingKeep = std::collections::BTreeMap<PathBuf, Vec<usize>>;
 
 /// Whether a path (relative to a course root) is a student's: inside
@@ -230,20 +232,21 @@ pub fn edition_plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
                 }
             }
         }
+        #[cfg(feature = "staff")]
         Overlay::DoNothing(keep) => {
             for task_file in task_files(root)? {
                 let path = root.join(&task_file);
                 let stub = fs::read_to_string(&path)
                     .with_context(|| format!("cannot read {}", path.display()))?;
                 let lines = keep.get(&task_file).map_or(&[][..], Vec::as_slice);
-                let (text, _) = crate::stubs::do_nothing(&stub, lines);
+                let (text, _) = crate::staff::stubs::do_nothing(&stub, lines);
                 files.retain(|(to, _)| *to != task_file);
                 files.push((task_file, Source::Text(text.into_bytes())));
             }
         }
         Overlay::Submission(submission) => {
             let topics = crate::topics::discover(root)?;
-            let (edition, _) = crate::release::edition_files(root, &topics)?;
+            let (edition, _) = crate::edition::edition_files(root, &topics)?;
             files = edition;
             // The course's lock file, trimmed to the edition's packages by
             // cargo when it is staged (see `stage_files`).
@@ -392,7 +395,7 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
     // A course without a lock file gets one here, where cargo may write.
     let relock = relock || !stage_root.join(LOCK_FILE).exists();
     if relock {
-        crate::release::trim_lock_file(&stage_root)?;
+        crate::edition::trim_lock_file(&stage_root)?;
     }
     let target_dir = target_dir.map_or_else(|| home.join("build"), Path::to_path_buf);
     claim_build(&stage_root, &target_dir)?;
@@ -405,6 +408,7 @@ fn stage_files(home: &Path, files: &Files, target_dir: Option<&Path>, lock: File
 
 /// `dir` made absolute, if it lies outside the course at `root` (or in its
 /// build output): a folder inside would be copied into itself.
+#[cfg(feature = "staff")]
 pub fn outside_course(root: &Path, dir: &Path) -> Result<PathBuf> {
     let dir = std::path::absolute(dir).with_context(|| format!("cannot find {}", dir.display()))?;
     if dir.starts_with(root) && !dir.starts_with(root.join("target")) {
@@ -418,6 +422,7 @@ pub fn outside_course(root: &Path, dir: &Path) -> Result<PathBuf> {
 
 /// `cargo xtask stage --reference DIR`: the solution workspace, written
 /// to `DIR` for a tutor's editor (a folder of its own, with its own build).
+#[cfg(feature = "staff")]
 pub fn write_reference(root: &Path, dir: &Path) -> Result<()> {
     let dir = outside_course(root, dir)?;
     let files = edition_plan(root, Overlay::Reference)?;

@@ -12,12 +12,16 @@ use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail};
+#[cfg(feature = "staff")]
+use anyhow::bail;
+use anyhow::{Context, Result};
 use serde::{Deserialize, Serialize};
 
 use super::Integrity;
 use super::report::{self, Report};
-use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped, remove_tree};
+use crate::files::{MAX_SUBMITTED_FILE, read_capped};
+#[cfg(feature = "staff")]
+use crate::files::{files_under, remove_tree};
 
 /// A member's row, in its report folder.
 pub const ROW_FILE: &str = "gradebook-row.json";
@@ -183,6 +187,7 @@ fn member_folders(out: &Path) -> Result<Vec<PathBuf>> {
 /// `cargo xtask gradebook merge PARTS... --out DIR`: the members' folders
 /// of the parts (the `--out` folders of a class graded in shards) copied
 /// into `out`, and the class's gradebook made from them.
+#[cfg(feature = "staff")]
 pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
     fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let mut seen: Vec<(String, PathBuf)> = Vec::new();
@@ -234,6 +239,7 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
 /// than `files::MAX_DEPTH`: a grade keeps its report within that, see
 /// `files::Keeper`), the member's row last, so that a copy cut short
 /// holds no row.
+#[cfg(feature = "staff")]
 fn copy_tree(from: &Path, to: &Path) -> Result<()> {
     fs::create_dir_all(to).with_context(|| format!("cannot create {}", to.display()))?;
     let mut files = files_under(from)?;
@@ -355,6 +361,7 @@ mod tests {
     /// member whose row is torn, and a link posing as a member: the merge
     /// copies the honest member, names the other two as not graded with
     /// why, copies nothing through the link, and is written.
+    #[cfg(feature = "staff")]
     #[test]
     fn a_merge_goes_on_past_a_member_it_cannot_copy() {
         use crate::files::tests::{chain, scratch};

@@ -10,8 +10,8 @@ use anyhow::Result;
 use serde::{Deserialize, Serialize};
 
 use super::slashed;
+use crate::edition as release;
 use crate::files::files_under;
-use crate::release;
 use crate::stage::{self, Files, Source, is_student_file};
 use crate::topics::{self, Topic};
 

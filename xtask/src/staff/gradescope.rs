@@ -7,7 +7,7 @@
 //! in `/autograder/submission`; the result is read from
 //! `/autograder/results/results.json`. The bundle is:
 //!
-//! - `course/`: the student edition of the course (see [`crate::release`]):
+//! - `course/`: the student edition of the course (see [`crate::staff::release`]):
 //!   its tests are the official ones, and it holds no solutions;
 //! - `setup.sh`: installs Rust — the release of the toolchain that wrote
 //!   the bundle, which the course is built and tested with, pinned by its
@@ -43,7 +43,8 @@ use std::process::Command;
 
 use anyhow::{Context, Result, ensure};
 
-use crate::{release, stage};
+use crate::staff::release;
+use crate::stage;
 
 /// `setup.sh`: run once by Gradescope, as root, in `/autograder/source`.
 const SETUP: &str = r#"#!/usr/bin/env bash

@@ -8,7 +8,6 @@ use anyhow::{Context, Result, ensure};
 
 use crate::cargo;
 use crate::grade::Report;
-use crate::setup;
 use crate::stage::{self};
 
 use super::tail;
@@ -84,7 +83,7 @@ fn browser(
         .unwrap_or_default()
         .to_string_lossy()
         .into_owned();
-    let Some(chromium) = setup::chromium() else {
+    let Some(chromium) = crate::staff::setup::chromium() else {
         ensure!(
             std::env::var_os("CI").is_none(),
             "no Chromium to check {name} in (Debian: apt-get install chromium)"

@@ -7,7 +7,8 @@ use std::path::Path;
 
 use anyhow::{Result, bail, ensure};
 
-use crate::grade::{TaskStatus, TestStatus};
+use crate::grade::TaskStatus;
+use crate::grade::report::TestStatus;
 use crate::stage::{self, DoNothingKeep, Overlay};
 
 use super::browser::report_in_chromium;
@@ -245,14 +246,14 @@ pub(super) fn do_nothing_scores_zero(root: &Path) -> Result<String> {
 /// shows each one's diff, and the course's own snapshots stay as they
 /// were.
 pub(super) fn snapshots_review(root: &Path, graded: &Path) -> Result<String> {
-    let official = |review: &crate::review::Review| -> Vec<Option<Vec<u8>>> {
+    let official = |review: &crate::staff::review::Review| -> Vec<Option<Vec<u8>>> {
         review
             .pending
             .iter()
             .map(|file| fs::read(root.join(file.with_extension(""))).ok())
             .collect()
     };
-    let Some(review) = crate::review::Review::prepare(root, graded)? else {
+    let Some(review) = crate::staff::review::Review::prepare(root, graded)? else {
         return Ok("no snapshot differs, so none to review".to_owned());
     };
     let before = official(&review);

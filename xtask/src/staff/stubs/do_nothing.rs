@@ -10,7 +10,8 @@
 //! Iterator`. Where that does not compile (a type without `Default`), the
 //! caller names the line in `keep` and the `todo!()` stays.
 
-use super::quiet::{closing, identifier, mask};
+use super::quiet::{closing, identifier};
+use crate::stubs::quiet::mask;
 
 /// The cheapest tail expression of a function whose return type is `ret`
 /// (the text after `->`, empty for none); `None` where none surely exists.

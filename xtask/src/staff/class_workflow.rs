@@ -16,7 +16,7 @@
 //!        ──> grade (shard N) ──┘
 //! ```
 
-use crate::classroom::CourseRepo;
+use crate::staff::classroom::CourseRepo;
 
 /// The file the workflow is written to, relative to the edition.
 pub const WORKFLOW: &str = ".github/workflows/grade-class.yml";

@@ -7,8 +7,9 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use super::{BEGIN_MARKER, END_MARKER, quiet};
+use super::quiet;
 use crate::files::is_wgsl;
+use crate::stubs::{BEGIN_MARKER, END_MARKER};
 /// What a marker line says, if it is one.
 #[derive(Debug, PartialEq)]
 pub(super) enum Marker<'a> {

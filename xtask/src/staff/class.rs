@@ -19,9 +19,9 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 
 use crate::files::files_under;
-use crate::release;
+use crate::staff::release;
+use crate::staff::test::Shortcut;
 use crate::stage;
-use crate::test::Shortcut;
 
 /// What a generated member did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,7 +72,7 @@ pub fn write(root: &Path, dir: &Path, size: usize, topics: &[String]) -> Result<
             dir.display()
         );
     }
-    let shortcuts = crate::test::shortcuts(root)?;
+    let shortcuts = crate::staff::test::shortcuts(root)?;
     let mut names = Vec::new();
     for i in 0..size {
         let kind = Kind::ALL[i % Kind::ALL.len()];
@@ -105,7 +105,7 @@ fn make(
             // As a student hands it in: no marker lines.
             crate::files::write_file(
                 &member.join("exercises").join(topic).join(&file),
-                crate::stubs::without_markers(&text),
+                crate::staff::stubs::without_markers(&text),
             )?;
         }
         Ok(())
@@ -163,7 +163,7 @@ fn make(
                 .with_context(|| format!("cannot read {}", reference.display()))?;
             crate::files::write_file(
                 &path,
-                crate::stubs::without_markers(&shortcut.plant(&text)?),
+                crate::staff::stubs::without_markers(&shortcut.plant(&text)?),
             )?;
         }
         Kind::Tampered => {
@@ -226,7 +226,7 @@ mod tests {
             eprintln!("not run: a student edition holds no solutions to plant into");
             return;
         }
-        let shortcuts = crate::test::shortcuts(root).unwrap();
+        let shortcuts = crate::staff::test::shortcuts(root).unwrap();
         let mut topics: Vec<String> = shortcuts.iter().map(|s| s.topic.clone()).collect();
         topics.sort();
         topics.dedup();

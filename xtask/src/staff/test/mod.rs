@@ -41,7 +41,7 @@ use anyhow::{Context, Result, bail};
 use crate::cargo;
 use crate::grade::{self, GradeOptions, Report};
 use crate::stage::{self, Overlay};
-use crate::{setup, stubs, topics};
+use crate::{setup, topics};
 
 mod browser;
 pub(crate) mod disk;
@@ -81,7 +81,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
     // The viewer's window test runs under a virtual display.
     if root.join("xtask").join("viewer").is_dir() {
         setup::ensure_vulkan();
-        setup::ensure_xvfb();
+        crate::staff::setup::ensure_xvfb();
     }
     type Step<'a> = (&'a str, Box<dyn Fn() -> Result<String> + 'a>);
     let steps: Vec<Step<'_>> = vec![
@@ -127,7 +127,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
         ),
         (
             "the Windows build of the grader's tests and of topic 01's runs under Wine",
-            Box::new(|| crate::wine::tests_under_wine(root)),
+            Box::new(|| crate::staff::wine::tests_under_wine(root)),
         ),
         (
             "the workspace is clippy-clean for macOS and Windows",
@@ -187,7 +187,7 @@ pub fn run(root: &Path, only: &[usize]) -> Result<()> {
 }
 
 fn stubs_in_sync(root: &Path) -> Result<String> {
-    stubs::run(root, true)?;
+    crate::staff::stubs::run(root, true)?;
     Ok("every student file is generated from its solution".to_owned())
 }
 

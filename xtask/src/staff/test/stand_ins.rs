@@ -103,7 +103,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
 /// the task's stub; also how many given functions there are, and how many
 /// stand-ins could not be planted (a pattern such as `_` drops a value).
 pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)> {
-    use stubs::stand_ins::{
+    use crate::staff::stubs::stand_ins::{
         Function, Method, methods, plant, plant_method, public_functions, stub_task,
     };
     let read = |path: &Path| {

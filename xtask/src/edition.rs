@@ -1,42 +1,40 @@
-//! `cargo xtask release DIR [--topics 01..=03]`: writes the edition
-//! students get, ready to push as a repository of its own.
+//! What an edition is: the course without what only its authors need —
+//! no `reference/`, no benchmarks (`xtask/bench`), no tests of the tooling
+//! (`xtask/tests`, whose fixtures hold solutions), no staff's tools
+//! (`xtask/src/staff`), no guides for tutors and authors (`docs/`), no CI
+//! script or benchmark figures; of the topics only those chosen (with the
+//! topics they build on), and of the course library only the crates they
+//! need (found through their path dependencies). The root `Cargo.toml`,
+//! xtask's manifest and `README.md` drop the lines between a `course only`
+//! opening and closing marker (`# BEGIN COURSE ONLY` … `# END COURSE
+//! ONLY`, and the same words in an HTML comment), the README its table
+//! rows and layout lines of what is left out, and its test command is
+//! cargo's own. The lock file is trimmed by cargo to the packages left, so
+//! that a student's first build changes nothing in it.
 //!
-//! The edition is the course without what only its authors need: no
-//! `reference/`, no benchmarks (`xtask/bench`), no tests of the tooling
-//! (`xtask/tests`, whose fixtures hold solutions), no CI script or
-//! benchmark figures; of the topics only those released, and of the course
-//! library only the crates they need (found through their path
-//! dependencies). The root `Cargo.toml` and `README.md` drop the lines
-//! between a `course only` opening and closing marker
-//! (`# BEGIN COURSE ONLY` … `# END COURSE ONLY`, and the same words in an
-//! HTML comment), the README its table rows and layout lines of what is
-//! not released, and its test command is cargo's own. The
-//! lock file is trimmed by cargo to the packages left, so that a student's
-//! first build changes nothing in it.
-//!
-//! Releasing again into the same folder updates it in place (its `.git`
-//! stays): the next commit there is the new edition. With `--classroom
-//! OWNER/REPO@TAG` the edition also carries the GitHub Classroom workflow
-//! that grades each push with the official tests of that repository (see
-//! [`crate::classroom`]).
+//! The grader stages an edition to grade a submission of one (and the
+//! self-test to build one); the staff's `cargo xtask release` writes one to
+//! a folder to push.
 
 use std::collections::{BTreeSet, HashMap};
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail, ensure};
+use anyhow::{Context, Result, ensure};
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
-use crate::class_workflow;
-use crate::classroom::{self, CourseRepo};
-use crate::stage::{self, Files, Source};
+use crate::stage::{Files, Source};
 use crate::topics::{self, Topic};
 
 /// Paths (relative to the course root) that only the course's authors
 /// need: never released.
-const COURSE_ONLY: [&str; 7] = [
+const COURSE_ONLY: [&str; 8] = [
     ".ci",
+    // The staff's tools (a class, review, similarity, the Classroom and
+    // Gradescope writers, release, stubs, the self-test): an edition's
+    // xtask is the student's tool and the grader.
+    "xtask/src/staff",
     // The tutors' and authors' guides and the tutor notes.
     "docs",
     // The course's own workflows (the hosted macOS and Windows runs); an
@@ -49,23 +47,9 @@ const COURSE_ONLY: [&str; 7] = [
     "xtask/viewer/tests",
 ];
 
-/// What a release holds.
-#[derive(Debug)]
-pub struct Release {
-    /// The folder it was written to.
-    pub dir: PathBuf,
-    /// The released topics (folder names), in course order.
-    pub topics: Vec<String>,
-    /// The course-library crates they need (folder names under `crates/`).
-    pub crates: Vec<String>,
-    /// Files of an earlier release in the folder that this one does not
-    /// hold, and which were removed (`.git` and `target/` are never
-    /// touched).
-    pub removed: Vec<PathBuf>,
-}
-
 /// The topics a `--topics` list selects: names as `cargo xtask grade`
 /// takes them, or a range of numbers `01..=03` / `01..04`; empty: all.
+#[cfg(feature = "staff")]
 pub fn select_topics(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
     let all = topics::discover(root)?;
     let mut names = Vec::new();
@@ -120,6 +104,7 @@ pub fn select_topics(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
 
 /// The other topics `topic`'s crate depends on (path dependencies into
 /// `exercises/`), by folder name.
+#[cfg(feature = "staff")]
 fn topic_dependencies(topic: &Topic, all: &[Topic]) -> Result<Vec<String>> {
     let path = topic.dir.join("Cargo.toml");
     let text =
@@ -148,6 +133,7 @@ fn topic_dependencies(topic: &Topic, all: &[Topic]) -> Result<Vec<String>> {
 }
 
 /// `01` of `01-lines`.
+#[cfg(feature = "staff")]
 fn topic_number(topic: &Topic) -> Option<u32> {
     topic.name.split('-').next()?.parse().ok()
 }
@@ -274,6 +260,7 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
     let absent_layout = |line: &str| {
         line.starts_with("reference/")
             || line.starts_with("docs/")
+            || line.starts_with("xtask/src/staff")
             || line.starts_with("xtask/bench")
             || line
                 .strip_prefix("crates/")
@@ -291,6 +278,10 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
         })
         .collect()
 }
+
+/// xtask's manifest: the staff's feature is on by default in the course
+/// repository only.
+const XTASK_MANIFEST: &str = "xtask/Cargo.toml";
 
 /// The viewer's manifest: its features and dependencies name the topics
 /// whose stages it draws.
@@ -371,60 +362,17 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
             Some(VIEWER_MANIFEST) => {
                 Source::Text(viewer_manifest(&read(&source)?, &names).into_bytes())
             }
+            // Without its course-only lines xtask builds without the staff's
+            // feature, whose code the edition does not hold.
+            Some(XTASK_MANIFEST) => Source::Text(
+                drop_marked(&read(&source)?, "# BEGIN COURSE ONLY", "# END COURSE ONLY")
+                    .into_bytes(),
+            ),
             _ => Source::File(source),
         };
         files.push((file, source));
     }
     Ok((files, crates))
-}
-
-/// Writes the edition of `topics` (empty: all) into `dir`.
-pub fn write(
-    root: &Path,
-    dir: &Path,
-    wanted: &[String],
-    classroom: Option<&CourseRepo>,
-) -> Result<Release> {
-    if !root.join("reference").is_dir() {
-        bail!(
-            "{} is a student edition already: it has no reference/",
-            root.display()
-        );
-    }
-    let topics = select_topics(root, wanted)?;
-    ensure!(!topics.is_empty(), "no topics to release");
-    let (mut files, crates) = edition_files(root, &topics)?;
-    // The course's lock file (if it has one), trimmed by cargo below.
-    files.retain(|(to, _)| to != Path::new("Cargo.lock"));
-    if root.join("Cargo.lock").is_file() {
-        files.push((
-            PathBuf::from("Cargo.lock"),
-            Source::File(root.join("Cargo.lock")),
-        ));
-    }
-    if let Some(course) = classroom {
-        files.retain(|(to, _)| {
-            to != Path::new(classroom::WORKFLOW) && to != Path::new(class_workflow::WORKFLOW)
-        });
-        files.push((
-            PathBuf::from(classroom::WORKFLOW),
-            Source::Text(classroom::workflow(course, &topics).into_bytes()),
-        ));
-        files.push((
-            PathBuf::from(class_workflow::WORKFLOW),
-            Source::Text(class_workflow::workflow(course).into_bytes()),
-        ));
-    }
-    files.sort();
-    stage::claim(dir)?;
-    let (_, removed) = stage::sync(&files, dir)?;
-    trim_lock_file(dir)?;
-    Ok(Release {
-        dir: dir.to_path_buf(),
-        topics: topics.into_iter().map(|t| t.name).collect(),
-        crates,
-        removed,
-    })
 }
 
 /// Lets cargo drop the packages the edition no longer uses from its lock
@@ -466,57 +414,11 @@ fn read(path: &Path) -> Result<String> {
     fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))
 }
 
-/// `cargo xtask release DIR [--topics ...]`.
-pub fn run(
-    root: &Path,
-    dir: &Path,
-    topics: &[String],
-    classroom: Option<&CourseRepo>,
-) -> Result<()> {
-    let dir = stage::outside_course(root, dir)?;
-    let release = write(root, &dir, topics, classroom)?;
-    println!(
-        "wrote the student edition to {}\n  topics: {}\n  course library: {}",
-        release.dir.display(),
-        release.topics.join(", "),
-        release.crates.join(", ")
-    );
-    if !release.removed.is_empty() {
-        let shown: Vec<String> = release
-            .removed
-            .iter()
-            .map(|f| f.display().to_string())
-            .collect();
-        println!("  removed (not part of this edition): {}", shown.join(", "));
-    }
-    println!(
-        "to publish it: cd {} && git init && git add -A && git commit -m \"Course edition\"",
-        release.dir.display()
-    );
-    if let Some(course) = classroom {
-        println!(
-            "  GitHub Classroom: {} grades every push with the official tests of {}{}; push this edition there{} and use it as the assignment's template",
-            classroom::WORKFLOW,
-            course.repository,
-            course
-                .reference
-                .as_deref()
-                .map(|r| format!(" at {r}"))
-                .unwrap_or_default(),
-            course
-                .reference
-                .as_deref()
-                .map(|r| format!(", tagged {r},"))
-                .unwrap_or_default(),
-        );
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    #[cfg(feature = "staff")]
     #[test]
     fn a_topic_brings_the_topics_it_builds_on() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();

@@ -37,7 +37,7 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
     if !cfg!(all(target_os = "linux", target_arch = "x86_64")) {
         bail!("the Windows build is run under Wine on x86-64 Linux only");
     }
-    setup::rustup_target(TARGET)?;
+    crate::staff::setup::rustup_target(TARGET)?;
     if !Path::new(WINE).is_file() || !on_path(MINGW_GCC) {
         setup::apt_install(
             &PACKAGES,
@@ -56,7 +56,7 @@ pub fn tests_under_wine(root: &Path) -> Result<String> {
     // them.
     let windows = staged.target_dir.join(TARGET);
     let result = build_and_run(root, &staged);
-    crate::test::disk::remove_build(&windows, "the Windows build and its Wine prefix");
+    crate::staff::test::disk::remove_build(&windows, "the Windows build and its Wine prefix");
     result
 }
 
@@ -123,7 +123,7 @@ fn build_and_run(root: &Path, staged: &stage::Stage) -> Result<String> {
             // No failed test: the program did not run (Wine's own errors,
             // a full disk), which only its standard error tells.
             let shown = if failures.is_empty() {
-                crate::test::tail(&String::from_utf8_lossy(&output.stderr), 20)
+                crate::staff::test::tail(&String::from_utf8_lossy(&output.stderr), 20)
             } else {
                 failures.join("\n")
             };
