@@ -383,7 +383,10 @@ pub fn run_pn_control(
                 "flat triangle {k} has a non-finite corner or normal"
             )));
         }
-        if t.normals.iter().any(|n| n.length_squared() < f32::MIN_POSITIVE) {
+        if t.normals
+            .iter()
+            .any(|n| n.length_squared() < f32::MIN_POSITIVE)
+        {
             return Err(TessError::Invalid(format!(
                 "flat triangle {k} has a zero normal, which has no direction"
             )));
