@@ -30,11 +30,12 @@ fn root() -> PathBuf {
 const TOPIC: &str = "10-gpu-tessellation";
 
 /// Every task's WGSL piece.
-const PIECES: [Piece; 4] = [
+const PIECES: [Piece; 5] = [
     wgsl::CONTROL,
     wgsl::EVALUATION,
     wgsl::SHADING,
     wgsl::TRIMMING,
+    wgsl::PN,
 ];
 
 /// `piece` with its solution: as compiled in where it is written (the
@@ -57,13 +58,13 @@ fn solved(piece: Piece) -> Piece {
 
 /// Topic 10's shaders, named, as `passes` and `render` compose them.
 fn topic_shaders() -> Vec<(String, String)> {
-    let [control, evaluation, shading, trimming] = PIECES.map(|p| Part::Yours(solved(p)));
+    let [control, evaluation, shading, trimming, pn] = PIECES.map(|p| Part::Yours(solved(p)));
     let common = Part::Given("crate::shaders::COMMON", shaders::COMMON);
     let render = Part::Given("crate::shaders::RENDER", shaders::RENDER);
     let flat = Part::Given("crate::shaders::FLAT_SHADING", shaders::FLAT_SHADING);
     let no_trimming = Part::Given("crate::shaders::NO_TRIMMING", shaders::NO_TRIMMING);
     let given_trimming = Part::Given("crate::shaders::TRIMMING", shaders::TRIMMING);
-    let composed: [(&str, Vec<Part<'_>>); 6] = [
+    let composed: [(&str, Vec<Part<'_>>); 7] = [
         (
             "control pass",
             vec![
@@ -71,6 +72,10 @@ fn topic_shaders() -> Vec<(String, String)> {
                 common,
                 Part::Given("crate::shaders::CONTROL", shaders::CONTROL),
             ],
+        ),
+        (
+            "PN pass",
+            vec![pn, common, Part::Given("crate::shaders::PN", shaders::PN)],
         ),
         (
             "evaluation pass",
