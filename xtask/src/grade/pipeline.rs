@@ -290,9 +290,9 @@ fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
     );
     run.stdout
         .lines()
-        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
-        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == VIEWER)
-        .find_map(|m| m["executable"].as_str().map(PathBuf::from))
+        .filter_map(crate::cargo::Message::parse)
+        .filter(|m| m.is_artifact() && m.target.as_ref().is_some_and(|t| t.name == VIEWER))
+        .find_map(|m| m.executable)
         .context("cargo built no viewer executable")
 }
 
