@@ -279,6 +279,12 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
         .collect()
 }
 
+/// Whether `path` (relative to the course) is a topic's `tasks.toml`.
+fn is_task_sheet(path: &str) -> bool {
+    let parts: Vec<&str> = path.split(['/', '\\']).collect();
+    matches!(parts.as_slice(), ["exercises", _, "tasks.toml"])
+}
+
 /// xtask's manifest: the staff's feature is on by default in the course
 /// repository only.
 const XTASK_MANIFEST: &str = "xtask/Cargo.toml";
@@ -361,6 +367,11 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
             }
             Some(VIEWER_MANIFEST) => {
                 Source::Text(viewer_manifest(&read(&source)?, &names).into_bytes())
+            }
+            // A topic's hints, sealed: the edition's `cargo xtask hint` shows
+            // them one at a time, and the file does not show them at all.
+            Some(path) if is_task_sheet(path) => {
+                Source::Text(topics::seal_hints(&read(&source)?).into_bytes())
             }
             // Without its course-only lines xtask builds without the staff's
             // feature, whose code the edition does not hold.
