@@ -306,7 +306,10 @@ pub fn seal(hint: &str) -> String {
 
 /// The hint whose bytes `hex` spells.
 fn unseal(hex: &str) -> Result<String> {
-    ensure!(hex.len().is_multiple_of(2), "an odd number of hexadecimal digits");
+    ensure!(
+        hex.len().is_multiple_of(2),
+        "an odd number of hexadecimal digits"
+    );
     let bytes = (0..hex.len())
         .step_by(2)
         .map(|i| u8::from_str_radix(&hex[i..i + 2], 16))
@@ -355,7 +358,10 @@ mod tests {
     fn sealed_hints_read_as_the_plain_ones() {
         let plain = "# The tasks.\ntime_limit_s = 10\n\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 4\nhints = [\n    \"Goal: «draw» the line, `d = 2Δy − Δx`.\",\n    \"Then \\\"quote\\\" it.\",\n]\n";
         let sealed = seal_hints(plain);
-        assert!(!sealed.contains("Goal") && sealed.contains("# The tasks."), "{sealed}");
+        assert!(
+            !sealed.contains("Goal") && sealed.contains("# The tasks."),
+            "{sealed}"
+        );
         assert_eq!(
             TaskSheet::parse(&sealed).unwrap().tasks[0].hints,
             TaskSheet::parse(plain).unwrap().tasks[0].hints
