@@ -296,7 +296,7 @@ const VIEWER_MANIFEST: &str = "xtask/viewer/Cargo.toml";
 /// The viewer's manifest for an edition of `topics`. A line marked
 /// `# course only` goes; a line marked `# topic NN-name` goes when that
 /// topic is not released, except that a feature keeps its name with
-/// nothing in it (`lines = []`), so that the viewer still builds and names
+/// nothing in it and its marker (`lines = [] # topic 01-lines`), so that the viewer still builds and names
 /// the stage as missing.
 fn viewer_manifest(text: &str, topics: &[String]) -> String {
     let mut out = String::new();
@@ -310,8 +310,9 @@ fn viewer_manifest(text: &str, topics: &[String]) -> String {
             if let Some((name, value)) = code.split_once('=')
                 && value.trim().starts_with('[')
             {
-                out.push_str(name.trim());
-                out.push_str(" = []\n");
+                // Kept with its marker: the feature still names its topic
+                // (`cargo xtask view` draws it with the given code).
+                out.push_str(&format!("{} = [] # topic {}\n", name.trim(), topic.trim()));
             }
             continue;
         }
@@ -474,7 +475,7 @@ mod tests {
         let out = viewer_manifest(text, &["01-lines".to_owned()]);
         assert_eq!(
             out,
-            "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = []\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\n\n[dev-dependencies]\n"
+            "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = [] # topic 04-clipping\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\n\n[dev-dependencies]\n"
         );
     }
 
