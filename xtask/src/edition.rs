@@ -295,9 +295,9 @@ const VIEWER_MANIFEST: &str = "xtask/viewer/Cargo.toml";
 
 /// The viewer's manifest for an edition of `topics`. A line marked
 /// `# course only` goes; a line marked `# topic NN-name` goes when that
-/// topic is not released, except that a feature keeps its name with
-/// nothing in it and its marker (`lines = [] # topic 01-lines`), so that the viewer still builds and names
-/// the stage as missing.
+/// topic is not released, except that a feature keeps its name and its
+/// marker with nothing in it (`lines = [] # topic 01-lines`), so that the
+/// viewer still builds and draws the stage with the given code.
 fn viewer_manifest(text: &str, topics: &[String]) -> String {
     let mut out = String::new();
     for line in text.lines() {
