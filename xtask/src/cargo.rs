@@ -3,6 +3,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use serde::Deserialize;
+
 /// `$CARGO` (set by cargo for `cargo xtask ...`, so the same toolchain is
 /// used), falling back to `cargo` on the `PATH`.
 #[must_use]
@@ -57,4 +59,48 @@ pub fn display(command: &Command) -> String {
         line.push_str(&arg.to_string_lossy());
     }
     line
+}
+
+/// One of cargo's JSON messages (`--message-format json`): the fields the
+/// tools read, for every place that reads them.
+#[derive(Deserialize)]
+pub struct Message {
+    /// `compiler-artifact`, `compiler-message`, `build-finished`, …
+    pub reason: String,
+    #[serde(default)]
+    pub manifest_path: Option<PathBuf>,
+    #[serde(default)]
+    pub target: Option<Target>,
+    #[serde(default)]
+    pub profile: Option<Profile>,
+    #[serde(default)]
+    pub executable: Option<PathBuf>,
+    #[serde(default)]
+    pub filenames: Vec<PathBuf>,
+}
+
+#[derive(Deserialize)]
+pub struct Target {
+    pub name: String,
+    pub kind: Vec<String>,
+}
+
+#[derive(Deserialize)]
+pub struct Profile {
+    pub test: bool,
+}
+
+impl Message {
+    /// One line of cargo's standard output as a message; `None` for a line
+    /// that is not one (a test's or a build script's own output).
+    #[must_use]
+    pub fn parse(line: &str) -> Option<Self> {
+        serde_json::from_str(line).ok()
+    }
+
+    /// Whether this is the artifact of a built target.
+    #[must_use]
+    pub fn is_artifact(&self) -> bool {
+        self.reason == "compiler-artifact"
+    }
 }

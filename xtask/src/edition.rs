@@ -279,6 +279,12 @@ fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String
         .collect()
 }
 
+/// Whether `path` (relative to the course) is a topic's `tasks.toml`.
+fn is_task_sheet(path: &str) -> bool {
+    let parts: Vec<&str> = path.split(['/', '\\']).collect();
+    matches!(parts.as_slice(), ["exercises", _, "tasks.toml"])
+}
+
 /// xtask's manifest: the staff's feature is on by default in the course
 /// repository only.
 const XTASK_MANIFEST: &str = "xtask/Cargo.toml";
@@ -289,9 +295,9 @@ const VIEWER_MANIFEST: &str = "xtask/viewer/Cargo.toml";
 
 /// The viewer's manifest for an edition of `topics`. A line marked
 /// `# course only` goes; a line marked `# topic NN-name` goes when that
-/// topic is not released, except that a feature keeps its name with
-/// nothing in it (`lines = []`), so that the viewer still builds and names
-/// the stage as missing.
+/// topic is not released, except that a feature keeps its name and its
+/// marker with nothing in it (`lines = [] # topic 01-lines`), so that the
+/// viewer still builds and draws the stage with the given code.
 fn viewer_manifest(text: &str, topics: &[String]) -> String {
     let mut out = String::new();
     for line in text.lines() {
@@ -304,8 +310,9 @@ fn viewer_manifest(text: &str, topics: &[String]) -> String {
             if let Some((name, value)) = code.split_once('=')
                 && value.trim().starts_with('[')
             {
-                out.push_str(name.trim());
-                out.push_str(" = []\n");
+                // Kept with its marker: the feature still names its topic
+                // (`cargo xtask view` draws it with the given code).
+                out.push_str(&format!("{} = [] # topic {}\n", name.trim(), topic.trim()));
             }
             continue;
         }
@@ -361,6 +368,11 @@ pub fn edition_files(root: &Path, topics: &[Topic]) -> Result<(Files, Vec<String
             }
             Some(VIEWER_MANIFEST) => {
                 Source::Text(viewer_manifest(&read(&source)?, &names).into_bytes())
+            }
+            // A topic's hints, sealed: the edition's `cargo xtask hint` shows
+            // them one at a time, and the file does not show them at all.
+            Some(path) if is_task_sheet(path) => {
+                Source::Text(topics::seal_hints(&read(&source)?).into_bytes())
             }
             // Without its course-only lines xtask builds without the staff's
             // feature, whose code the edition does not hold.
@@ -463,7 +475,7 @@ mod tests {
         let out = viewer_manifest(text, &["01-lines".to_owned()]);
         assert_eq!(
             out,
-            "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = []\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\n\n[dev-dependencies]\n"
+            "[features]\ndefault = [\"lines\", \"clipping\"]\nlines = [\"dep:lines\"] # topic 01-lines\nclipping = [] # topic 04-clipping\n\n[dependencies]\nlines = { path = \"../../exercises/01-lines\", optional = true } # topic 01-lines\n\n[dev-dependencies]\n"
         );
     }
 

@@ -364,7 +364,7 @@ fn markdown(drawn: &[Drawn], seeds: &[Seed], source: &str) -> String {
 }
 
 fn html(drawn: &[Drawn], seeds: &[Seed], source: &str) -> String {
-    let escape = grade::markup::xml_text;
+    let escape = grade::markup::html;
     let citations: String = cited(drawn, seeds)
         .iter()
         .map(|seed| format!("<li>{}: {}</li>", escape(&seed.id), escape(&seed.cited())))

@@ -1,5 +1,6 @@
 //! `cargo xtask hint TASK`: the hints a topic keeps for each task
-//! (`hints = [...]` in its `tasks.toml`), one more each time it is asked:
+//! (`hints = [...]` in its `tasks.toml`, sealed in an edition: see
+//! `topics::SEALED`), one more each time it is asked:
 //! the first restates the goal, the last points at the exact rule the
 //! tests are strict about. Which hints a student has seen is kept in
 //! `target/xtask/hints.json`; `--reset` starts a task over, `--all` shows

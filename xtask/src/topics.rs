@@ -115,7 +115,15 @@ pub struct Task {
 impl TaskSheet {
     /// Parses a topic's `tasks.toml`.
     pub fn parse(text: &str) -> Result<Self> {
-        let sheet: TaskSheet = toml::from_str(text).context("invalid task list")?;
+        let mut sheet: TaskSheet = toml::from_str(text).context("invalid task list")?;
+        for task in &mut sheet.tasks {
+            for hint in &mut task.hints {
+                if let Some(sealed) = hint.strip_prefix(SEALED) {
+                    *hint = unseal(sealed)
+                        .with_context(|| format!("task `{}` has a broken sealed hint", task.id))?;
+                }
+            }
+        }
         sheet.validate()?;
         Ok(sheet)
     }
@@ -279,11 +287,88 @@ pub fn select(root: &Path, wanted: &[String]) -> Result<Vec<Topic>> {
         .collect())
 }
 
+/// The prefix of a hint as an edition's `tasks.toml` holds it: the hint's
+/// UTF-8 bytes in hexadecimal, so that opening the file shows no hint and
+/// reading ahead is a deliberate act (`cargo xtask hint --all`); the
+/// course's own `tasks.toml` keeps them plain for its authors.
+pub const SEALED: &str = "sealed:";
+
+/// A hint sealed ([`SEALED`] and its bytes in hexadecimal).
+#[must_use]
+pub fn seal(hint: &str) -> String {
+    use std::fmt::Write as _;
+    let mut sealed = String::from(SEALED);
+    for byte in hint.bytes() {
+        let _ = write!(sealed, "{byte:02x}");
+    }
+    sealed
+}
+
+/// The hint whose bytes `hex` spells.
+fn unseal(hex: &str) -> Result<String> {
+    ensure!(
+        hex.len().is_multiple_of(2),
+        "an odd number of hexadecimal digits"
+    );
+    let bytes = (0..hex.len())
+        .step_by(2)
+        .map(|i| u8::from_str_radix(&hex[i..i + 2], 16))
+        .collect::<Result<Vec<u8>, _>>()
+        .context("not hexadecimal")?;
+    String::from_utf8(bytes).context("not UTF-8")
+}
+
+/// `text`, a `tasks.toml`, with each hint sealed ([`seal`]): every line of
+/// a `hints = [ … ]` array that holds one string. Everything else —
+/// comments, ids, points — stays as written.
+#[must_use]
+pub fn seal_hints(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() * 2);
+    let mut in_hints = false;
+    for line in text.split_inclusive('\n') {
+        let trimmed = line.trim();
+        if trimmed.starts_with("hints = [") {
+            in_hints = !trimmed.ends_with(']');
+        } else if in_hints && trimmed.starts_with(']') {
+            in_hints = false;
+        } else if in_hints && trimmed.starts_with('"') {
+            let literal = trimmed.trim_end_matches(',');
+            if let Ok(value) = toml::from_str::<toml::Table>(&format!("x = {literal}"))
+                && let Some(hint) = value.get("x").and_then(toml::Value::as_str)
+            {
+                let indent = &line[..line.len() - line.trim_start().len()];
+                let comma = if trimmed.ends_with(',') { "," } else { "" };
+                let newline = if line.ends_with('\n') { "\n" } else { "" };
+                out.push_str(&format!("{indent}\"{}\"{comma}{newline}", seal(hint)));
+                continue;
+            }
+        }
+        out.push_str(line);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     const SHEET: &str = "time_limit_s = 3\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 3\n[[tasks]]\nid = \"wu\"\ntitle = \"Wu\"\npoints = 1.5\nbonus = true\n";
+
+    #[test]
+    fn sealed_hints_read_as_the_plain_ones() {
+        let plain = "# The tasks.\ntime_limit_s = 10\n\n[[tasks]]\nid = \"dda\"\ntitle = \"DDA\"\npoints = 4\nhints = [\n    \"Goal: «draw» the line, `d = 2Δy − Δx`.\",\n    \"Then \\\"quote\\\" it.\",\n]\n";
+        let sealed = seal_hints(plain);
+        assert!(
+            !sealed.contains("Goal") && sealed.contains("# The tasks."),
+            "{sealed}"
+        );
+        assert_eq!(
+            TaskSheet::parse(&sealed).unwrap().tasks[0].hints,
+            TaskSheet::parse(plain).unwrap().tasks[0].hints
+        );
+        assert!(TaskSheet::parse(&plain.replace("Goal", "")).is_ok());
+        assert!(unseal("e4b").is_err() && unseal("zz").is_err());
+    }
 
     #[test]
     fn the_task_list_gives_tasks_points_and_limits() {

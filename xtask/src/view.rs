@@ -13,7 +13,7 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 use crate::cargo;
-use crate::grade::pipeline::{VIEWER, VIEWER_TOPICS};
+use crate::grade::pipeline::{VIEWER, viewer_topics};
 use crate::stage::{self, Overlay};
 use crate::topics;
 
@@ -39,8 +39,9 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
     let staged = stage::stage(root, overlay, None)?;
     let mut features = Vec::new();
     let mut not_compiling = Vec::new();
-    for (feature, topic) in VIEWER_TOPICS {
-        let Some(found) = course.iter().find(|t| t.name == topic) else {
+    let pairs = viewer_topics(root);
+    for (feature, topic) in &pairs {
+        let Some(found) = course.iter().find(|t| t.name == *topic) else {
             continue; // not in this edition
         };
         eprint!("checking {topic} … ");
@@ -52,7 +53,7 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
             .context("cannot run cargo")?;
         if output.status.success() {
             eprintln!("compiles");
-            features.push(feature);
+            features.push(feature.as_str());
         } else {
             eprintln!("does not compile: left out (`cargo xtask grade {topic}` says why)");
             not_compiling.push(topic.to_owned());
@@ -90,8 +91,8 @@ pub fn run(root: &Path, reference: bool, args: &[String]) -> Result<()> {
     }
     // The pipeline's stages of topics this edition does not hold are drawn
     // by the course's given code.
-    for (_, topic) in VIEWER_TOPICS {
-        if !course.iter().any(|t| t.name == topic) {
+    for (_, topic) in &pairs {
+        if !course.iter().any(|t| t.name == *topic) {
             command.args(["--given", topic]);
         }
     }

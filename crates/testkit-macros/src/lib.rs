@@ -38,12 +38,7 @@
 
 use proc_macro::{Delimiter, Group, Span, TokenStream, TokenTree};
 
-/// The environment variable naming the token file (the grader sets it;
-/// `xtask/src/grade/run.rs` repeats the name).
-const VERDICT_FILE_VAR: &str = "TESTKIT_VERDICT_FILE";
-/// What a passed test prints before its token, on a line of its own
-/// (`xtask/src/grade/outcome.rs` repeats it).
-const VERDICT_PREFIX: &str = "testkit verdict: passed ";
+use wire::{VERDICT_FILE_VAR, VERDICT_PREFIX};
 
 /// Marks a test whose pass the grader can authenticate (see the crate
 /// documentation).

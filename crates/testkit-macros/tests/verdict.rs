@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const TOKEN: &str = "5e1f0a9c7d2b4e6f8a0b1c2d3e4f5a6b";
-const PREFIX: &str = "testkit verdict: passed ";
+use wire::VERDICT_PREFIX as PREFIX;
 
 #[testkit_macros::test]
 #[ignore = "run as a child by the tests below"]

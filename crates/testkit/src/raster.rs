@@ -13,9 +13,9 @@ use canvas::{Canvas, Pixel, Rgba, ascii_grid, ink_char};
 
 /// The line that opens a raster diff in a panic message (the grader looks
 /// for it).
-pub const RASTER_DIFF_BEGIN: &str = "--- raster diff: expected vs yours ---";
+pub use wire::RASTER_DIFF_BEGIN;
 /// The line that closes a raster diff.
-pub const RASTER_DIFF_END: &str = "--- end raster diff ---";
+pub use wire::RASTER_DIFF_END;
 
 /// The largest diff drawn in full; larger ones are cut to a window around
 /// the first difference so that a terminal can still show them.

@@ -4,8 +4,9 @@ use canvas::{Pixel, Rgba, Vec2, Vertex};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
-/// The seed of every property test's random cases (see [`proptest_config`]).
-pub const SEED: u64 = 0x0C0D_E5EE_D000_0001;
+/// The seed of every property test's random cases (see [`proptest_config`]);
+/// the grader hands the same to a test whose configuration forgot it.
+pub use wire::SEED;
 
 /// The configuration every property test in the course uses: 256 cases,
 /// no failure files written next to the tests (a student's copy of the

@@ -56,16 +56,11 @@ pub use evidence::{Changed, Changes, Record, Replay};
 pub use transcript_macros::{evidence, task};
 
 /// The environment variable naming the file a recording process writes
-/// its transcript to; unset, nothing is recorded.
-pub const RECORD_VAR: &str = "TRANSCRIPT_RECORD";
-
-/// The environment variable naming the transcript a replaying process
-/// reads.
-pub const REPLAY_VAR: &str = "TRANSCRIPT_REPLAY";
-
-/// The `cfg` under which [`task`] functions replay instead of running
-/// their bodies (a build script of the grader's replay package sets it).
-pub const REPLAY_CFG: &str = "transcript_replay";
+/// its transcript to (unset, nothing is recorded), the one naming the
+/// transcript a replaying process reads, and the `cfg` under which [`task`]
+/// functions replay instead of running their bodies (a build script of the
+/// grader's replay package sets it).
+pub use wire::{RECORD_VAR, REPLAY_CFG, REPLAY_VAR};
 
 /// What [`task`]'s expansion uses; not for hand-written code.
 #[doc(hidden)]

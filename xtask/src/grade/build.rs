@@ -18,7 +18,6 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::{Context as _, Result, bail};
-use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
 use crate::sandbox::{Jail, Job, Limits, Purpose};
@@ -231,32 +230,6 @@ pub fn target_dir_of(root: &Path, target_dir: Option<&Path>) -> PathBuf {
     })
 }
 
-#[derive(Deserialize)]
-struct Message {
-    reason: String,
-    #[serde(default)]
-    manifest_path: Option<PathBuf>,
-    #[serde(default)]
-    target: Option<Target>,
-    #[serde(default)]
-    profile: Option<Profile>,
-    #[serde(default)]
-    executable: Option<PathBuf>,
-    #[serde(default)]
-    filenames: Vec<PathBuf>,
-}
-
-#[derive(Deserialize)]
-struct Target {
-    name: String,
-    kind: Vec<String>,
-}
-
-#[derive(Deserialize)]
-struct Profile {
-    test: bool,
-}
-
 /// Builds the tests of all `topics` in one cargo run, which builds their
 /// shared dependencies once, with the features of the whole set (as the
 /// course's own `cargo test --workspace` does, so its artifacts serve).
@@ -357,8 +330,8 @@ fn graded_artifacts(messages: &str, root: &Path, build_dir: &Path) -> (Vec<PathB
     let graded = root.join("exercises");
     let mut files: Vec<PathBuf> = messages
         .lines()
-        .filter_map(|line| serde_json::from_str::<Message>(line).ok())
-        .filter(|message| message.reason == "compiler-artifact")
+        .filter_map(crate::cargo::Message::parse)
+        .filter(|message| message.is_artifact())
         .filter(|message| {
             message
                 .manifest_path
@@ -411,8 +384,8 @@ fn over_budget(
 fn test_binaries(messages: &str, package_dir: Option<&Path>) -> Vec<TestBinary> {
     let mut binaries: Vec<TestBinary> = messages
         .lines()
-        .filter_map(|line| serde_json::from_str::<Message>(line).ok())
-        .filter(|message| message.reason == "compiler-artifact")
+        .filter_map(crate::cargo::Message::parse)
+        .filter(|message| message.is_artifact())
         .filter(|message| {
             package_dir.is_none_or(|dir| {
                 message

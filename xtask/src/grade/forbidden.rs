@@ -32,7 +32,7 @@
 //! not the defence. The defence is that no pass is decided, and no secret
 //! lives, in a process that ran student code (the replayed verdict).
 
-use crate::stubs::quiet::mask;
+use crate::stubs::quiet::try_mask;
 
 /// The name of std's macro that reads a file at compile time; its kin
 /// (`include_str`, `include_bytes`, the dependencies' `include_wgsl`,
@@ -51,7 +51,16 @@ fn include_names(line: &str) -> impl Iterator<Item = &str> {
 /// Each use of a forbidden construct in `source`, as `line: what`.
 #[must_use]
 pub fn uses(source: &str) -> Vec<String> {
-    let masked = mask(source);
+    // Text that is not Rust tokens cannot be checked, and would not
+    // compile either: refused, with the lexer's place.
+    let masked = match try_mask(source) {
+        Ok(masked) => masked,
+        Err(why) => {
+            return vec![format!(
+                "{why}: the file cannot be read as Rust, so it is not checked or compiled"
+            )];
+        }
+    };
     let mut found = Vec::new();
     for (number, line) in masked.lines().enumerate() {
         for name in include_names(line) {
@@ -225,6 +234,25 @@ fn names_a_path(attribute: &str) -> bool {
 mod tests {
     use super::*;
     use std::path::Path;
+
+    #[test]
+    fn an_include_after_a_raw_byte_string_is_found() {
+        // `br"\"` is a whole raw byte string (its backslash escapes
+        // nothing): a scanner that took it for an escaped quote read the
+        // `include!` after it as the inside of a string.
+        let found = uses(
+            "const A: &[u8] = br\"\\\";\nconst B: &str = include_str!(\"/etc/passwd\"); const C: &str = \"\";\n",
+        );
+        assert!(
+            found.iter().any(|f| f.starts_with("2: `include_str!`")),
+            "{found:?}"
+        );
+        let unlexable = uses("fn f() { \"unclosed }");
+        assert!(
+            unlexable.len() == 1 && unlexable[0].contains("cannot be read as Rust"),
+            "{unlexable:?}"
+        );
+    }
 
     #[test]
     fn path_attributes_and_include_macros_are_found_with_their_lines() {

@@ -1,5 +1,11 @@
-//! Escaping text for XML and HTML, which every markup format of the
-//! grader writes.
+//! Escaping, once for every page and file the tools write: text for XML
+//! and HTML (JUnit, the grade report, the class's report, the figures'
+//! index, the similarity page) and relative paths as URLs. Student text —
+//! file names, panic messages, member names — reaches tutors' browsers
+//! through these functions only.
+
+use std::fmt::Write as _;
+use std::path::Path;
 
 /// Escapes text for an XML 1.0 attribute value: markup, quotes and line
 /// breaks (which attribute normalisation would otherwise turn into spaces).
@@ -12,6 +18,45 @@ pub fn xml_attr(text: &str) -> String {
 #[must_use]
 pub fn xml_text(text: &str) -> String {
     escape(text, false)
+}
+
+/// Text for HTML element content and attribute values: XML's escapes
+/// are HTML's too.
+#[must_use]
+pub fn html(text: &str) -> String {
+    xml_text(text)
+}
+
+/// A relative path as a URL: `./` first (a name such as `javascript:`
+/// stays a path), the characters that would end or split it
+/// percent-encoded (control characters, space, `"`, `#`, `%`, `?`, `<`,
+/// `>`, `\`).
+#[must_use]
+pub fn url(relative: &str) -> String {
+    let mut encoded = String::from("./");
+    for c in relative.chars() {
+        if c.is_control() || matches!(c, ' ' | '"' | '#' | '%' | '?' | '<' | '>' | '\\') {
+            let mut buffer = [0; 4];
+            for byte in c.encode_utf8(&mut buffer).bytes() {
+                let _ = write!(encoded, "%{byte:02X}");
+            }
+        } else {
+            encoded.push(c);
+        }
+    }
+    encoded
+}
+
+/// A relative file path as a URL ([`url`]), its components joined by `/`
+/// on every system.
+#[must_use]
+pub fn path_url(path: &Path) -> String {
+    let joined = path
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect::<Vec<_>>()
+        .join("/");
+    url(&joined)
 }
 
 /// Characters XML 1.0 cannot hold at all (control characters such as the
@@ -47,5 +92,15 @@ mod tests {
             "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;&#10;?[31m"
         );
         assert_eq!(xml_text("x < y\n\tz\u{0}"), "x &lt; y\n\tz?");
+    }
+
+    #[test]
+    fn urls_start_relative_and_encode_what_would_break_them() {
+        assert_eq!(
+            path_url(Path::new("images/01-lines/dda/a b#1.png")),
+            "./images/01-lines/dda/a%20b%231.png"
+        );
+        assert_eq!(url("a b#1/report.html"), "./a%20b%231/report.html");
+        assert_eq!(url("javascript:x\\y\n"), "./javascript:x%5Cy%0A");
     }
 }

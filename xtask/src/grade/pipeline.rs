@@ -21,35 +21,43 @@ use crate::sandbox::{Jail, Job, Limits, Purpose};
 /// The viewer's package.
 pub const VIEWER: &str = "course-viewer";
 
-/// The viewer's features and the topics whose stages they build in: the
-/// mesh pipeline's four, and the NURBS chain's two.
-pub const STAGES: [(&str, &str); 6] = [
-    ("lines", "01-lines"),
-    ("fill", "03-fill"),
-    ("clipping", "04-clipping"),
-    ("buffers", "05-buffers"),
-    ("nurbs", "08-nurbs"),
-    ("tessellation", "09-tessellation"),
-];
+/// The viewer's manifest, relative to the course: each feature that
+/// builds a topic's stages in is marked `# topic NN-name` on its line, the
+/// one place where features and topics are paired.
+pub const VIEWER_MANIFEST: &str = "xtask/viewer/Cargo.toml";
+
+/// The viewer's features and the topics they draw with, in the order of
+/// its manifest ([`VIEWER_MANIFEST`]); none where the course has no viewer.
+#[must_use]
+pub fn viewer_topics(root: &Path) -> Vec<(String, String)> {
+    let Ok(manifest) = fs::read_to_string(root.join(VIEWER_MANIFEST)) else {
+        return Vec::new();
+    };
+    feature_topics(&manifest)
+}
+
+/// The `feature = [...] # topic NN-name` lines of a manifest's `[features]`.
+fn feature_topics(manifest: &str) -> Vec<(String, String)> {
+    let mut in_features = false;
+    let mut pairs = Vec::new();
+    for line in manifest.lines() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            in_features = line == "[features]";
+        } else if in_features
+            && let Some((code, topic)) = line.split_once("# topic ")
+            && let Some((feature, _)) = code.split_once('=')
+        {
+            pairs.push((feature.trim().to_owned(), topic.trim().to_owned()));
+        }
+    }
+    pairs
+}
 
 /// The topics of the mesh pipeline's pictures.
 const MESH_TOPICS: [&str; 4] = ["01-lines", "03-fill", "04-clipping", "05-buffers"];
 /// The topics of the NURBS chain's picture.
 const CHAIN_TOPICS: [&str; 2] = ["08-nurbs", "09-tessellation"];
-
-/// The viewer's features and topics in `cargo xtask view`: the pipeline's,
-/// the pixel playground's circle and the curve scene's de Casteljau.
-pub const VIEWER_TOPICS: [(&str, &str); 9] = [
-    STAGES[0],
-    ("circles", "02-circles"),
-    STAGES[1],
-    STAGES[2],
-    STAGES[3],
-    ("bezier", "07-bezier"),
-    STAGES[4],
-    STAGES[5],
-    ("gpu-tessellation", "10-gpu-tessellation"),
-];
 
 /// How long one picture may take.
 const TIME_LIMIT: Duration = Duration::from_secs(30);
@@ -185,10 +193,15 @@ pub fn build_viewer(builder: &Builder, graded: &[&str], compiled: &[&str]) -> Vi
     if !has_viewer || !SCENES.iter().any(|scene| scene.needs.met(graded)) {
         return Viewer::None;
     }
-    let features: Vec<&str> = STAGES
+    // The features of the pictures' stages whose topics compile.
+    let pairs = viewer_topics(&builder.root);
+    let features: Vec<&str> = pairs
         .iter()
-        .filter(|(_, topic)| compiled.contains(topic))
-        .map(|(feature, _)| *feature)
+        .filter(|(_, topic)| {
+            (MESH_TOPICS.contains(&topic.as_str()) || CHAIN_TOPICS.contains(&topic.as_str()))
+                && compiled.contains(&topic.as_str())
+        })
+        .map(|(feature, _)| feature.as_str())
         .collect();
     match build(builder, &features) {
         Ok(binary) => Viewer::Built(binary),
@@ -290,9 +303,9 @@ fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
     );
     run.stdout
         .lines()
-        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
-        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == VIEWER)
-        .find_map(|m| m["executable"].as_str().map(PathBuf::from))
+        .filter_map(crate::cargo::Message::parse)
+        .filter(|m| m.is_artifact() && m.target.as_ref().is_some_and(|t| t.name == VIEWER))
+        .find_map(|m| m.executable)
         .context("cargo built no viewer executable")
 }
 
@@ -420,6 +433,17 @@ fn tail(path: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_viewers_manifest_pairs_its_features_with_topics() {
+        let manifest = "[features]\ndefault = [\"lines\"]\nwindow = [\"dep:eframe\"]\nlines = [\"dep:lines\"] # topic 01-lines\nfill = [] # topic 03-fill\n\n[dependencies]\nlines = { path = \"x\" } # topic 01-lines\n";
+        assert_eq!(
+            feature_topics(manifest),
+            [("lines", "01-lines"), ("fill", "03-fill")].map(|(f, t)| (f.to_owned(), t.to_owned()))
+        );
+        let course = feature_topics(include_str!("../../viewer/Cargo.toml"));
+        assert!(course.len() >= 9, "{course:?}");
+    }
 
     #[test]
     fn only_the_viewers_own_lines_are_stage_lines() {

@@ -426,7 +426,7 @@ pub(crate) mod tests {
             .iter()
             .filter(|t| t.status == TestStatus::Failed)
             .count();
-        let score = round2(points * passed as f64 / (passed + failed) as f64);
+        let score = crate::grade::score::task_score(points, passed, passed + failed);
         let mut task = task("t", points, false, score);
         (task.passed, task.failed, task.tests) = (passed, failed, tests);
         let topic = TopicReport {

@@ -35,7 +35,7 @@ use std::path::{Path, PathBuf};
 
 use super::PENDING_SNAPSHOTS;
 #[cfg(feature = "staff")]
-use super::report::{self, Report, TaskStatus, TestReport};
+use super::report::{Report, TestReport};
 use super::report::{SnapshotMismatch, TaskReport, TestStatus};
 use super::submission::nofollow;
 use crate::topics::Topic;
@@ -233,30 +233,16 @@ pub fn apply(report: &mut Report, accepted: &[String]) -> usize {
                     passing += 1;
                 }
             }
-            task.passed = task
-                .tests
-                .iter()
-                .filter(|t| t.status == TestStatus::Passed)
-                .count();
-            task.failed = task
-                .tests
-                .iter()
-                .filter(|t| t.status == TestStatus::Failed)
-                .count();
-            let counted = task.passed + task.failed;
-            if matches!(task.status, TaskStatus::Ok | TaskStatus::Fail) && counted > 0 && !tampered
-            {
-                task.score = report::round2(task.points * task.passed as f64 / counted as f64);
-                task.status = if task.failed > 0 {
-                    TaskStatus::Fail
-                } else {
-                    TaskStatus::Ok
-                };
+            // A tampered submission keeps its zero: its counts say what
+            // the review saw.
+            let (status, score) = (task.status, task.score);
+            super::score::recount(task);
+            if tampered {
+                (task.status, task.score) = (status, score);
             }
         }
-        topic.score = report::round2(topic.tasks.iter().map(|t| t.score).sum());
     }
-    report.score = report::round2(report.topics.iter().map(|t| t.score).sum());
+    super::score::totals(report);
     passing
 }
 

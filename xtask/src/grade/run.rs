@@ -27,10 +27,8 @@ use std::time::Duration;
 use anyhow::{Context, Result};
 
 mod transcript {
-    //! The names the `transcript` crate reads (repeated here so that xtask
-    //! needs no course crate).
-    pub const RECORD_VAR: &str = "TRANSCRIPT_RECORD";
-    pub const REPLAY_VAR: &str = "TRANSCRIPT_REPLAY";
+    //! The names the `transcript` crate reads.
+    pub use wire::{RECORD_VAR, REPLAY_VAR};
 }
 
 use super::outcome::Exit;
@@ -48,7 +46,7 @@ const LIST_TIME_LIMIT: Duration = Duration::from_secs(60);
 
 /// The environment variable that names a test's token file (see
 /// `crates/testkit-macros`, which reads it).
-pub const VERDICT_FILE_VAR: &str = "TESTKIT_VERDICT_FILE";
+pub use wire::VERDICT_FILE_VAR;
 
 /// One test to run.
 #[derive(Debug, Clone)]

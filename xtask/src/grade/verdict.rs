@@ -60,30 +60,18 @@ pub(super) fn topic_report(
         {
             reason.push_str(&format!("; the test says: \"{comment}\""));
         }
-        match report.status {
-            TestStatus::Passed => task.passed += 1,
-            TestStatus::Failed => task.failed += 1,
-            TestStatus::Ignored => task.ignored += 1,
-        }
         task.tests.push(report);
     }
     // What a tutor's review may act on, recorded by the grader itself.
     super::reviewed::record_mismatches(out, topic, &mut tasks);
     for task in &mut tasks {
-        let counted = task.passed + task.failed;
-        if task.status == TaskStatus::Ok && counted == 0 {
+        super::score::recount(task);
+        if task.status == TaskStatus::Ok && task.passed + task.failed == 0 {
             task.status = TaskStatus::Error;
             task.error = Some(format!("all {} tests are #[ignore]d", task.ignored));
         }
-        if task.status == TaskStatus::Ok {
-            task.score = task.points * task.passed as f64 / counted as f64;
-            if task.failed > 0 {
-                task.status = TaskStatus::Fail;
-            }
-        }
-        task.score = report::round2(task.score);
     }
-    TopicReport {
+    let mut topic = TopicReport {
         name: topic.name.clone(),
         package: topic.package.clone(),
         dir: topic.dir.clone(),
@@ -91,10 +79,12 @@ pub(super) fn topic_report(
         memory_limit_mib: topic.sheet.memory_limit_mib,
         compile_error: plan.compile_error,
         errors: plan.errors,
-        score: report::round2(tasks.iter().map(|t| t.score).sum()),
-        max_score: report::round2(tasks.iter().map(TaskReport::max_score).sum()),
+        score: 0.0,
+        max_score: 0.0,
         tasks,
-    }
+    };
+    super::score::topic_totals(&mut topic);
+    topic
 }
 
 /// The comment that explains a test, from the course's test file of its

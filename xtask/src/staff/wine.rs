@@ -153,9 +153,9 @@ fn build_and_run(root: &Path, staged: &stage::Stage) -> Result<String> {
 fn test_executables(messages: &str) -> Vec<PathBuf> {
     messages
         .lines()
-        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
-        .filter(|m| m["reason"] == "compiler-artifact" && m["profile"]["test"] == true)
-        .filter_map(|m| m["executable"].as_str().map(PathBuf::from))
+        .filter_map(crate::cargo::Message::parse)
+        .filter(|m| m.is_artifact() && m.profile.as_ref().is_some_and(|p| p.test))
+        .filter_map(|m| m.executable)
         .collect()
 }
 

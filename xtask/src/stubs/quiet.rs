@@ -4,102 +4,84 @@
 //! forbidden constructs, snapshot names) and the staff's stub writer
 //! read Rust by.
 
+use proc_macro2::{TokenStream, TokenTree};
+
 /// `source` with every comment and the contents of every string and
 /// character literal replaced by spaces (line breaks kept), so that byte
-/// offsets and line numbers stay those of `source`.
-pub fn mask(source: &str) -> String {
-    let bytes = source.as_bytes();
-    let mut out = bytes.to_vec();
-    let blank = |out: &mut Vec<u8>, from: usize, to: usize| {
-        for b in &mut out[from..to] {
-            if *b != b'\n' {
-                *b = b' ';
-            }
-        }
-    };
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                let end = source[i..].find('\n').map_or(bytes.len(), |n| i + n);
-                blank(&mut out, i, end);
-                i = end;
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                let mut depth = 0;
-                let mut j = i;
-                while j < bytes.len() {
-                    if bytes[j..].starts_with(b"/*") {
-                        depth += 1;
-                        j += 2;
-                    } else if bytes[j..].starts_with(b"*/") {
-                        depth -= 1;
-                        j += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        j += 1;
-                    }
-                }
-                blank(&mut out, i, j);
-                i = j;
-            }
-            b'r' if is_raw_string_start(bytes, i) => {
-                let hashes = bytes[i + 1..].iter().take_while(|&&b| b == b'#').count();
-                let open = i + 1 + hashes; // the opening quote
-                let close: Vec<u8> = std::iter::once(b'"')
-                    .chain(std::iter::repeat_n(b'#', hashes))
-                    .collect();
-                let end = bytes[open + 1..]
-                    .windows(close.len())
-                    .position(|w| w == close.as_slice())
-                    .map_or(bytes.len(), |p| open + 1 + p);
-                blank(&mut out, open + 1, end);
-                i = (end + close.len()).min(bytes.len());
-            }
-            b'"' => {
-                let mut j = i + 1;
-                while j < bytes.len() && bytes[j] != b'"' {
-                    j += if bytes[j] == b'\\' { 2 } else { 1 };
-                }
-                blank(&mut out, i + 1, j.min(bytes.len()));
-                i = j + 1;
-            }
-            b'\'' => {
-                // A character literal ('x', '\n', '\u{..}') or a lifetime ('a).
-                let rest = &source[i + 1..];
-                let literal_end = if let Some(escaped) = rest.strip_prefix('\\') {
-                    escaped.find('\'').map(|n| n + 1)
-                } else {
-                    let mut chars = rest.chars();
-                    match (chars.next(), chars.next()) {
-                        (Some(c), Some('\'')) => Some(c.len_utf8()),
-                        _ => None,
-                    }
-                };
-                match literal_end {
-                    Some(len) => {
-                        blank(&mut out, i + 1, i + 1 + len);
-                        i += len + 2;
-                    }
-                    None => i += 1,
-                }
-            }
-            _ => i += 1,
-        }
-    }
-    String::from_utf8(out).expect("only ASCII bytes were replaced")
+/// offsets and line numbers stay those of `source`; a literal keeps its
+/// prefix and quotes (`b"  "`, `r#"  "#`, `' '`). Read by Rust's own
+/// lexical rules (proc-macro2's lexer: nested block comments, raw and byte
+/// strings, raw identifiers, lifetimes), not by a hand-written scanner.
+///
+/// # Errors
+/// Text that is not a sequence of Rust tokens (an unclosed string, comment
+/// or delimiter): no mask can be trusted then, and the caller decides.
+pub fn try_mask(source: &str) -> Result<String, String> {
+    let tokens: TokenStream = source.parse().map_err(|error: proc_macro2::LexError| {
+        let at = error.span().start();
+        format!(
+            "not Rust tokens at line {}, column {}",
+            at.line,
+            at.column + 1
+        )
+    })?;
+    let mut out: Vec<u8> = source
+        .bytes()
+        .map(|b| if b == b'\n' { b'\n' } else { b' ' })
+        .collect();
+    keep(source, tokens, &mut out);
+    Ok(String::from_utf8(out).expect("whole tokens and single spaces were copied"))
 }
 
-/// Whether a raw string (`r"`, `r#"`, ...) starts at `i` (and not an
-/// identifier that ends in `r`).
-fn is_raw_string_start(bytes: &[u8], i: usize) -> bool {
-    if i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_') {
-        return false;
+/// [`try_mask`], or, for text that is not Rust tokens, every character but
+/// the line breaks blanked: such a file holds no code a caller could find.
+#[must_use]
+pub fn mask(source: &str) -> String {
+    try_mask(source).unwrap_or_else(|_| {
+        source
+            .bytes()
+            .map(|b| if b == b'\n' { '\n' } else { ' ' })
+            .collect()
+    })
+}
+
+/// Copies the text of `tokens` from `source` into `out`: whole tokens,
+/// literals with their contents blanked; a doc comment (which the lexer
+/// hands out as a `#[doc = "…"]` attribute spanning the comment) stays
+/// blank.
+fn keep(source: &str, tokens: TokenStream, out: &mut [u8]) {
+    let copy = |out: &mut [u8], range: std::ops::Range<usize>| {
+        out[range.clone()].copy_from_slice(&source.as_bytes()[range]);
+    };
+    for token in tokens {
+        let range = token.span().byte_range();
+        let text = &source[range.clone()];
+        if text.starts_with("//") || text.starts_with("/*") {
+            continue; // a doc comment
+        }
+        match token {
+            TokenTree::Group(group) => {
+                copy(out, group.span_open().byte_range());
+                copy(out, group.span_close().byte_range());
+                keep(source, group.stream(), out);
+            }
+            TokenTree::Literal(_) => {
+                copy(out, range.clone());
+                // The contents: after the first quote up to the last one
+                // (a raw string's hashes lie outside both).
+                if let (Some(open), Some(close)) = (text.find(['"', '\'']), text.rfind(['"', '\'']))
+                    && open < close
+                {
+                    for b in &mut out[range.start + open + 1..range.start + close] {
+                        if *b != b'\n' {
+                            *b = b' ';
+                        }
+                    }
+                }
+            }
+            TokenTree::Ident(_) | TokenTree::Punct(_) => copy(out, range),
+        }
     }
-    let hashes = bytes[i + 1..].iter().take_while(|&&b| b == b'#').count();
-    bytes.get(i + 1 + hashes) == Some(&b'"')
 }
 
 #[cfg(test)]
@@ -113,5 +95,18 @@ mod tests {
             mask(source),
             "a     \n\"    \" r#\" \"# ' ' '  ' &'g x                   k"
         );
+    }
+
+    #[test]
+    fn byte_and_c_strings_raw_or_not_doc_comments_and_raw_identifiers() {
+        // A raw byte string ends at its first quote: the backslash in it
+        // escapes nothing, so `include!` after it is code.
+        let source = "br\"\\\"; include!(\"x\"); cr#\"y\"# b'z' c\"w\"\n/// doc include!\nr#type";
+        assert_eq!(
+            mask(source),
+            "br\" \"; include!(\" \"); cr#\" \"# b' ' c\" \"\n                \nr#type"
+        );
+        assert!(try_mask("\"unclosed").is_err());
+        assert!(try_mask("fn f() { /* unclosed }").is_err());
     }
 }

@@ -5,6 +5,8 @@
 use std::fmt::Write as _;
 
 use super::{Bin, Class, FAILURES_SHOWN, Failure, NOT_GRADED_SHOWN, WHO_SHOWN, ratio};
+use crate::grade::markup::html as escape;
+pub(super) use crate::grade::markup::url as href;
 use crate::grade::report;
 
 /// Styles added to `report.html`'s: the histograms and the members'
@@ -406,27 +408,4 @@ fn members(count: usize) -> String {
     } else {
         format!("{count} members")
     }
-}
-
-/// A relative path as a URL: `./` first (a member named `javascript:`
-/// stays a path), the characters that would end or split it
-/// percent-encoded.
-pub(super) fn href(path: &str) -> String {
-    let mut encoded = String::from("./");
-    for c in path.chars() {
-        if c.is_control() || matches!(c, ' ' | '"' | '#' | '%' | '?' | '<' | '>' | '\\') {
-            let mut buffer = [0; 4];
-            for byte in c.encode_utf8(&mut buffer).bytes() {
-                let _ = write!(encoded, "%{byte:02X}");
-            }
-        } else {
-            encoded.push(c);
-        }
-    }
-    encoded
-}
-
-/// Text for HTML element content and attribute values.
-fn escape(text: &str) -> String {
-    crate::grade::markup::xml_text(text)
 }

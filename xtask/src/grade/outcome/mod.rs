@@ -31,15 +31,10 @@ use parse::{
     returned_error, split_message,
 };
 
-/// The line that opens a raster diff in a panic message (testkit's
-/// `RASTER_DIFF_BEGIN`; repeated here so that xtask needs no course crate).
-pub const RASTER_DIFF_BEGIN: &str = "--- raster diff: expected vs yours ---";
-/// The line that closes a raster diff (testkit's `RASTER_DIFF_END`).
-pub const RASTER_DIFF_END: &str = "--- end raster diff ---";
-/// What a `#[testkit::test]` prints, before its token, once every
-/// assertion has held (`crates/testkit-macros` writes it; repeated here so
-/// that xtask needs no course crate).
-pub const VERDICT_PREFIX: &str = "testkit verdict: passed ";
+/// The lines that open and close a raster diff in a panic message, and
+/// what a `#[testkit::test]` prints, before its token, once every
+/// assertion has held.
+pub use wire::{RASTER_DIFF_BEGIN, RASTER_DIFF_END, VERDICT_PREFIX};
 /// What libtest prints when the one selected test passed: not proof of a
 /// pass (the code under test can print it), only a hint of a forgery.
 const PASSED_SUMMARY: &str = "test result: ok. 1 passed";

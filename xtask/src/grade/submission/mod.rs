@@ -354,8 +354,7 @@ fn refuse(report: &mut Report, name: &str, uses: &[String]) {
         task.tests.clear();
         (task.passed, task.failed, task.ignored) = (0, 0, 0);
     }
-    topic.score = 0.0;
-    report.score = report::round2(report.topics.iter().map(|t| t.score).sum());
+    crate::grade::score::totals(report);
     report.complete = false;
 }
 

@@ -94,8 +94,7 @@ pub(super) fn zero_for_tampering(report: &mut Report, files: &[PathBuf]) {
         for task in &mut topic.tasks {
             task.score = 0.0;
         }
-        topic.score = 0.0;
     }
-    report.score = 0.0;
+    crate::grade::score::totals(report);
     report.complete = false;
 }
