@@ -33,10 +33,11 @@ pub fn fixture(name: &str, case: &str) -> PathBuf {
         }
     }
     copy_dir(&source, &copy);
-    // The course's `#[testkit::test]`, which the fixtures' tests use, and
-    // the record and replay of `#[transcript::task]`.
+    // The course's `#[testkit::test]`, which the fixtures' tests use, the
+    // record and replay of `#[transcript::task]`, and the words both agree
+    // on with the grader.
     let crates = Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates");
-    for name in ["testkit-macros", "transcript", "transcript-macros"] {
+    for name in ["testkit-macros", "transcript", "transcript-macros", "wire"] {
         copy_dir(&crates.join(name), &copy.join("crates").join(name));
     }
     copy
