@@ -244,14 +244,14 @@ pub(super) fn grade_into(root: &Path, overlay: Overlay<'_>, folder: &str) -> Res
     Ok(report)
 }
 
-/// `items` in rounds that hold at most one item of each topic (named by
-/// `topic`), in order: a round is graded as one submission-like folder.
-pub(super) fn one_per_topic<T>(items: &[T], topic: impl Fn(&T) -> &str) -> Vec<Vec<&T>> {
+/// `items` in rounds, in order, so that no two items of a round `clash`:
+/// a round is graded as one submission-like folder.
+pub(super) fn rounds<T>(items: &[T], clash: impl Fn(&T, &T) -> bool) -> Vec<Vec<&T>> {
     let mut rounds: Vec<Vec<&T>> = Vec::new();
     for item in items {
         match rounds
             .iter_mut()
-            .find(|round| round.iter().all(|other| topic(other) != topic(item)))
+            .find(|round| round.iter().all(|other| !clash(other, item)))
         {
             Some(round) => round.push(item),
             None => rounds.push(vec![item]),
@@ -260,7 +260,7 @@ pub(super) fn one_per_topic<T>(items: &[T], topic: impl Fn(&T) -> &str) -> Vec<V
     rounds
 }
 
-/// Grades `items` planted a round at a time (see [`one_per_topic`]):
+/// Grades items planted a round at a time (made by [`rounds`]):
 /// `plant` writes each item of a round into the round's submission-like
 /// folder, `target/xtask/<scratch>`, which is graded as a submission of
 /// the round's topics into `target/grade/<out(round number)>`, its summary
@@ -268,14 +268,13 @@ pub(super) fn one_per_topic<T>(items: &[T], topic: impl Fn(&T) -> &str) -> Vec<V
 /// there were.
 pub(super) fn grade_planted<T>(
     root: &Path,
-    items: &[T],
+    rounds: &[Vec<&T>],
     topic: impl Fn(&T) -> &str,
     scratch: &str,
     out: impl Fn(usize) -> String,
     mut plant: impl FnMut(&Path, &T) -> Result<()>,
     mut check: impl FnMut(&[&T], &Report),
 ) -> Result<usize> {
-    let rounds = one_per_topic(items, &topic);
     for (number, round) in rounds.iter().enumerate() {
         let planted = empty_folder(root.join("target").join("xtask").join(scratch))?;
         for item in round {
@@ -284,6 +283,7 @@ pub(super) fn grade_planted<T>(
         let mut options = GradeOptions::new(root.to_path_buf());
         options.out = root.join("target").join("grade").join(out(number));
         options.topics = round.iter().map(|item| topic(item).to_owned()).collect();
+        options.topics.sort();
         options.topics.dedup();
         let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;
         grade::print_summary(&report, &options.out, false);

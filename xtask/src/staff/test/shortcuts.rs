@@ -11,7 +11,7 @@ use crate::grade::Report;
 use crate::grade::report::TestStatus;
 use crate::stubs;
 
-use super::{SHORTCUTS, grade_planted};
+use super::{SHORTCUTS, grade_planted, rounds};
 
 /// The planted shortcuts (see [`SHORTCUTS`]).
 #[derive(serde::Deserialize)]
@@ -56,6 +56,19 @@ impl Shortcut {
             )];
         };
         let mut problems = Vec::new();
+        if let Some(error) = report
+            .topics
+            .iter()
+            .find(|t| t.name == self.topic)
+            .and_then(|t| t.compile_error.as_deref())
+        {
+            problems.push(format!(
+                "{}: {} does not compile where it is planted, so its loss proves nothing: {}",
+                self.what,
+                self.topic,
+                error.lines().next().unwrap_or_default()
+            ));
+        }
         if self.zero && task.score > 0.0 {
             problems.push(format!(
                 "{} scores {} of {} points on {} / {}",
@@ -147,14 +160,19 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
         shortcut: shortcuts(root)?,
     };
     // A round is one submission-like folder: the solutions of its topics
-    // with one shortcut planted in each, so that every shortcut is graded
-    // alone, against the solutions of the other tasks.
+    // with shortcuts planted, no two of one task or one file, so that every
+    // shortcut is graded against the solutions of its task's other files;
+    // a task is graded on its own, so the shortcuts of a topic's other
+    // tasks in the same round change nothing of it. A round whose topic
+    // does not compile proves nothing and is reported.
     let mut problems = Vec::new();
     let mut topics = std::collections::BTreeSet::new();
     let mut duration_s = 0.0;
     let rounds = grade_planted(
         root,
-        &shortcuts.shortcut,
+        &rounds(&shortcuts.shortcut, |a, b| {
+            a.topic == b.topic && (a.task == b.task || a.file == b.file)
+        }),
         |s| &s.topic,
         "shortcuts",
         |number| match number {
@@ -162,8 +180,14 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
             n => format!("shortcuts-{}", n + 1),
         },
         |planted, shortcut| {
+            // The topic's solutions, once a round: the shortcuts planted
+            // before this one in the round stay.
             let solutions = root.join("reference").join(&shortcut.topic);
+            let copied = planted.join("exercises").join(&shortcut.topic).exists();
             for file in crate::files::files_under(&solutions)? {
+                if copied {
+                    break;
+                }
                 let to = Path::new("exercises").join(&shortcut.topic).join(&file);
                 let text = fs::read(solutions.join(&file))
                     .with_context(|| format!("cannot read {}", solutions.join(&file).display()))?;

@@ -12,7 +12,7 @@ use anyhow::{Context, Result, bail};
 use crate::stage;
 use crate::{stubs, topics};
 
-use super::grade_planted;
+use super::{grade_planted, rounds};
 
 /// A given function with a task's signature, and how it gets into the
 /// task's file.
@@ -43,7 +43,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     let mut not_compiling = Vec::new();
     grade_planted(
         root,
-        &stand_ins,
+        &rounds(&stand_ins, |a, b| a.topic == b.topic),
         |s| &s.topic,
         "stand-ins",
         |number| format!("stand-ins-{}", number + 1),
