@@ -27,7 +27,7 @@ mod linux {
     /// the student's `double` and writes its picture where `--screenshot`
     /// says, with the expected pictures beside it.
     const VIEWER_MANIFEST: &str = "[package]\nname = \"course-viewer\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
-        [features]\nlines = [\"dep:tiny\"]\n\n[dependencies]\ntiny = { path = \"../../exercises/01-lines\", optional = true }\n";
+        [features]\nlines = [\"dep:tiny\"] # topic 01-lines\n\n[dependencies]\ntiny = { path = \"../../exercises/01-lines\", optional = true }\n";
     const VIEWER_MAIN: &str = "fn main() {\n    let args: Vec<String> = std::env::args().collect();\n    \
         let at = args.iter().position(|a| a == \"--screenshot\").expect(\"--screenshot\");\n    \
         #[cfg(feature = \"lines\")]\n    assert_eq!(tiny::ops::double(21), 42);\n    \

@@ -90,6 +90,30 @@ impl Shortcut {
         problems
     }
 
+    /// Whether this shortcut and `other` could change each other's grade
+    /// if planted in one round: the same task, the same file, or one
+    /// calling into the other's module.
+    fn meets(&self, other: &Shortcut) -> bool {
+        self.topic == other.topic
+            && (self.task == other.task
+                || self.file == other.file
+                || self.calls_into(other)
+                || other.calls_into(self))
+    }
+
+    /// Whether this shortcut's code names the module of `other`'s file
+    /// (`crate::de_casteljau::…` from the Bernstein task): planted in one
+    /// round, it would call `other`'s planted code instead of the solution.
+    fn calls_into(&self, other: &Shortcut) -> bool {
+        let module = other.file.trim_end_matches(".rs");
+        let code = self
+            .body
+            .iter()
+            .chain(self.replace.iter().map(|[_, new]| new))
+            .any(|text| text.contains(&format!("{module}::")));
+        code && self.file != other.file
+    }
+
     /// The solution file `source` with this shortcut planted.
     pub(crate) fn plant(&self, source: &str) -> Result<String> {
         let mut text = source.to_owned();
@@ -170,9 +194,7 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     let mut duration_s = 0.0;
     let rounds = grade_planted(
         root,
-        &rounds(&shortcuts.shortcut, |a, b| {
-            a.topic == b.topic && (a.task == b.task || a.file == b.file)
-        }),
+        &rounds(&shortcuts.shortcut, Shortcut::meets),
         |s| &s.topic,
         "shortcuts",
         |number| match number {
@@ -248,6 +270,31 @@ mod tests {
             zero: true,
             failing: Vec::new(),
         }
+    }
+
+    #[test]
+    fn shortcuts_share_a_round_only_where_they_cannot_meet() {
+        let at = |file: &str, task: &str, body: &str| Shortcut {
+            file: file.to_owned(),
+            task: task.to_owned(),
+            ..shortcut(Some("f"), Some(body), &[])
+        };
+        let items = [
+            at("a.rs", "a", "0"),
+            at("a.rs", "a", "1"),
+            at("b.rs", "b", "2"),
+            at("c.rs", "c", "crate::b::f()"),
+            at("d.rs", "a", "3"),
+        ];
+        let bodies: Vec<Vec<&str>> = super::super::rounds(&items, Shortcut::meets)
+            .iter()
+            .map(|round| round.iter().map(|s| s.body.as_deref().unwrap()).collect())
+            .collect();
+        // One task or one file apart; the one calling into b.rs apart from b's.
+        assert_eq!(
+            bodies,
+            [vec!["0", "2"], vec!["1", "crate::b::f()"], vec!["3"]]
+        );
     }
 
     #[test]
