@@ -33,20 +33,10 @@ enum Event {
 /// The spans of `fill_spans`, after checking its table.
 #[track_caller]
 fn spans(vertices: &[Vec2], viewport: Viewport) -> Vec<Span> {
-    // Spans and tables in the order they came.
-    let events: RefCell<Vec<Event>> = RefCell::default();
-    fill_spans(
-        vertices,
-        viewport,
-        |span| events.borrow_mut().push(Event::Span(span)),
-        |y, active| {
-            events.borrow_mut().push(Event::Table(y, active.to_vec()));
-            ControlFlow::Continue(())
-        },
-    );
     let mut rows: Vec<(i32, Vec<ActiveEdge>)> = Vec::new();
     let mut spans = Vec::new();
-    for event in events.into_inner() {
+    // Spans and tables in the order they came.
+    for event in events_stopped_at(vertices, viewport, None) {
         match event {
             Event::Span(span) => {
                 assert!(
