@@ -510,6 +510,9 @@ pub(crate) mod tests {
         shrunk.minimal_input = Some("x = 3".to_owned());
         let mut skipped = test("b_not_run", TestStatus::Failed);
         skipped.exit.not_run = true;
+        // A whole picture compared: where, but not which rule.
+        let mut picture = test("b_picture", TestStatus::Failed);
+        picture.images = vec![PathBuf::from("yours.png")];
         let named = test("c_literal", TestStatus::Failed);
         let later = test("d_literal", TestStatus::Failed);
         let mut task = TaskReport {
@@ -517,6 +520,7 @@ pub(crate) mod tests {
                 shrunk,
                 skipped,
                 test("passed", TestStatus::Passed),
+                picture,
                 named,
                 later,
             ],
@@ -529,7 +533,7 @@ pub(crate) mod tests {
             error: None,
             hints: Vec::new(),
             passed: 1,
-            failed: 4,
+            failed: 5,
             ignored: 0,
         };
         assert_eq!(task.first_failure().unwrap().name, "c_literal");
@@ -537,6 +541,8 @@ pub(crate) mod tests {
             .retain(|t| t.name != "c_literal" && t.name != "d_literal");
         assert_eq!(task.first_failure().unwrap().name, "a_property");
         task.tests.retain(|t| t.name != "a_property");
+        assert_eq!(task.first_failure().unwrap().name, "b_picture");
+        task.tests.retain(|t| t.name != "b_picture");
         assert_eq!(task.first_failure().unwrap().name, "b_not_run");
     }
 }
