@@ -156,7 +156,7 @@ impl Hierarchy {
     /// is `0::path`): v1's memory and pids cgroups of the grader itself, or
     /// v2's first usable cgroup from the grader's own upward (see the
     /// module documentation).
-    fn parents(&self, own: &str) -> Result<Vec<PathBuf>> {
+    pub(super) fn parents(&self, own: &str) -> Result<Vec<PathBuf>> {
         match self {
             Self::V1 { memory, pids } => {
                 let path_of = |controller: &str| {
@@ -232,6 +232,48 @@ fn give_controllers(dir: &Path) -> bool {
     has_both()
 }
 
+/// The first part of the name of every cgroup the grader makes.
+const NAME_PREFIX: &str = "course-grader-";
+
+/// How long after it was made a job's cgroup without a process in it
+/// counts as left behind: longer than any job may run (a build is stopped
+/// after 15 minutes).
+const STALE_AFTER: Duration = Duration::from_secs(3600);
+
+/// Removes from `parent` the grader's cgroups that were [`left_behind`]:
+/// those of a grader killed with `SIGKILL` (or of a machine that lost
+/// power), which had no chance to remove its own.
+fn sweep(parent: &Path, stale_after: Duration) {
+    let Ok(entries) = fs::read_dir(parent) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let dir = entry.path();
+        let procs = fs::read_to_string(dir.join("cgroup.procs"));
+        let age = entry
+            .metadata()
+            .and_then(|m| m.modified())
+            .ok()
+            .and_then(|made| made.elapsed().ok());
+        if let (Some(name), Ok(procs), Some(age)) = (entry.file_name().to_str(), procs, age)
+            && left_behind(name, &procs, age, stale_after)
+        {
+            // The kernel refuses it if a process joined since.
+            let _ = fs::remove_dir(&dir);
+        }
+    }
+}
+
+/// Whether the cgroup `name`, listing `procs` and made `age` ago, was
+/// left behind by a grader: one of the grader's, holding no process, made
+/// longer than `stale_after` ago. Only empty and old ones, so that a
+/// grader running beside this one — perhaps in another container, whose
+/// processes this one cannot see — loses nothing: its cgroups are young
+/// or busy.
+fn left_behind(name: &str, procs: &str, age: Duration, stale_after: Duration) -> bool {
+    name.starts_with(NAME_PREFIX) && procs.trim().is_empty() && age > stale_after
+}
+
 /// The cgroups of one job: all its processes together are limited, and
 /// all are found to kill. Removed when dropped.
 pub(super) struct Cgroup {
@@ -243,7 +285,16 @@ pub(super) struct Cgroup {
 impl Cgroup {
     /// Whether this machine lets the grader make cgroups on `hierarchy`:
     /// one is made and removed again.
+    /// The cgroups that graders killed before they could remove theirs
+    /// left behind are removed first (see [`sweep`]).
     pub(super) fn available(hierarchy: &Hierarchy) -> Result<()> {
+        if let Ok(own) = fs::read_to_string("/proc/self/cgroup")
+            && let Ok(parents) = hierarchy.parents(&own)
+        {
+            for parent in parents {
+                sweep(&parent, STALE_AFTER);
+            }
+        }
         Cgroup::new(hierarchy, &Limits::test(Duration::from_secs(1), 64)).map(drop)
     }
 
@@ -258,7 +309,7 @@ impl Cgroup {
     fn new_in(hierarchy: &Hierarchy, own: &str, limits: &Limits) -> Result<Self> {
         static NEXT: AtomicU64 = AtomicU64::new(0);
         let name = format!(
-            "course-grader-{}-{}",
+            "{NAME_PREFIX}{}-{}",
             std::process::id(),
             NEXT.fetch_add(1, Ordering::Relaxed)
         );
@@ -613,6 +664,26 @@ mod tests {
         assert_eq!(cgroup.dirs[0].parent(), Some(mount.as_path()));
         drop(cgroup);
         fs::remove_dir_all(&mount).unwrap();
+    }
+
+    #[test]
+    fn only_old_empty_cgroups_of_the_grader_count_as_left_behind() {
+        let hour = Duration::from_secs(3600);
+        let old = 2 * hour;
+        assert!(left_behind("course-grader-17-3", "", old, hour));
+        assert!(left_behind("course-grader-17-3", "\n", old, hour));
+        assert!(
+            !left_behind("course-grader-17-3", "", hour / 2, hour),
+            "young: its grader may be about to use it"
+        );
+        assert!(
+            !left_behind("course-grader-17-3", "4242\n", old, hour),
+            "busy: its processes may be another container's grader's"
+        );
+        assert!(
+            !left_behind("system.slice", "", old, hour),
+            "not the grader's"
+        );
     }
 
     #[test]

@@ -81,12 +81,12 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result};
 
 use crate::files::bytes_under;
-use crate::grade::report::Exit;
 
 mod cgroup;
 mod command;
 pub mod const_eval;
 mod environment;
+mod exit;
 mod platform;
 
 pub use cgroup::CgroupVersion;
@@ -94,6 +94,7 @@ pub use cgroup::CgroupVersion;
 pub use cgroup::delegate_script;
 use cgroup::{Cgroup, Hierarchy};
 pub use environment::{Environment, Toolchain};
+pub use exit::Exit;
 use platform::{contain, kill, kill_group, seccomp_filter, signal};
 
 /// How often a running job is checked on.
@@ -577,3 +578,6 @@ fn create_log(path: &Path) -> Result<File> {
     }
     File::create(path).with_context(|| format!("cannot create the log {}", path.display()))
 }
+
+#[cfg(all(test, unix))]
+mod tests;
