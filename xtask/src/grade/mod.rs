@@ -8,8 +8,13 @@
 //! ```text
 //! topics ──build──> test binaries ──--list──> tests ──run (--jobs at once)──> verdicts
 //!   │ compile error: all its tasks fail, other topics go on            │
-//!   └─────────────────────> Report ──> table, report.json, results.json, junit.xml, report.html
+//!   └──────────────> outcomes + the grader's adjustments ──> Report ──> table, report.json,
+//!                    (refused, absent, tampered: `adjustments`)         results.json, junit.xml,
+//!                                                                       report.html
 //! ```
+//!
+//! The report is made once ([`Graded::report`]) and never changed after:
+//! the formats only read it.
 //!
 //! One module a stage of the pipeline: [`build`] (a job of the runner,
 //! [`crate::sandbox`]), [`plan`] (the tests listed), [`pool`] (run
@@ -26,6 +31,7 @@
 //! the one that ran the student's code ([`run`], `crates/transcript`): no
 //! process that ran it ever holds a token.
 
+mod adjustments;
 mod build;
 pub mod class_report;
 pub mod classroom;
@@ -55,6 +61,7 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use indicatif::ProgressBar;
 
+use adjustments::Adjustments;
 pub use pool::Permits;
 pub use report::{Edition, Report, TaskStatus};
 
@@ -154,8 +161,10 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
         // run that copy's tests.
         let target_dir = build::target_dir_of(&root, options.target_dir.as_deref());
         stage::claim_checkout_build(&root, &target_dir)?;
-        let mut report = grade_tree(options, Edition::Student)?;
-        report.root = root;
+        let report = grade_tree(options, Edition::Student)?.report(Adjustments {
+            shown_root: Some(root),
+            ..Adjustments::default()
+        });
         export::write_all(&report, &options.out)?;
         Ok(report)
     }
@@ -177,15 +186,17 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
         #[cfg(feature = "staff")]
         Overlay::DoNothing(_) => Edition::Student,
     };
-    let mut report = grade_tree(&in_stage, edition)?;
-    report.root = root;
+    let report = grade_tree(&in_stage, edition)?.report(Adjustments {
+        shown_root: Some(root),
+        ..Adjustments::default()
+    });
     export::write_all(&report, &options.out)?;
     Ok(report)
 }
 
 /// Grades the course at `options.root` as it is, building it into
-/// `options.target_dir`; writes no report files.
-fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Report> {
+/// `options.target_dir`; makes no report yet.
+fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Graded> {
     prepare(options, edition)?.finish()
 }
 
@@ -379,7 +390,7 @@ fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
 
 impl Prepared {
     /// Runs the tests and draws the pipeline: the second half of a grade.
-    pub(crate) fn finish(self) -> Result<Report> {
+    pub(crate) fn finish(self) -> Result<Graded> {
         let keep = self.options.keep_binaries.clone();
         let report = self.run();
         if let Some(keep) = keep {
@@ -388,7 +399,7 @@ impl Prepared {
         report
     }
 
-    fn run(self) -> Result<Report> {
+    fn run(self) -> Result<Graded> {
         let Prepared {
             options,
             edition,
@@ -494,9 +505,50 @@ impl Prepared {
             tests_s: report::round2(tests_s),
             pipeline_s: report::round2(drawing.elapsed().as_secs_f64()),
         };
+        Ok(Graded {
+            root,
+            edition,
+            started,
+            phases,
+            topics,
+            pipeline,
+            left_out,
+        })
+    }
+}
+
+/// A grade whose tests have run and whose pipeline is drawn, before its
+/// report is made: the outcomes, which [`Graded::report`] turns into the
+/// report with the grader's [`Adjustments`].
+pub(crate) struct Graded {
+    root: PathBuf,
+    edition: Edition,
+    started: Instant,
+    phases: report::Phases,
+    /// Each topic's tasks with their tests' outcomes and scores.
+    topics: Vec<TopicReport>,
+    pipeline: Vec<pipeline::PipelinePicture>,
+    left_out: Vec<String>,
+}
+
+impl Graded {
+    /// The report, made once: the adjustments applied to the topics, then
+    /// every total summed ([`score::totals`]). Nothing changes a report
+    /// after this.
+    pub(crate) fn report(self, adjustments: Adjustments) -> Report {
+        let Graded {
+            root,
+            edition,
+            started,
+            phases,
+            mut topics,
+            pipeline,
+            left_out,
+        } = self;
+        adjustments.apply(&mut topics);
         let mut report = Report {
             schema: report::SCHEMA,
-            root,
+            root: adjustments.shown_root.unwrap_or(root),
             edition,
             score: 0.0,
             max_score: 0.0,
@@ -510,7 +562,7 @@ impl Prepared {
                         .iter()
                         .all(|task| task.status != TaskStatus::Error)
             }),
-            integrity: None,
+            integrity: adjustments.integrity,
             sandboxed: crate::sandbox::Jail::get().sandboxed(),
             containment: crate::sandbox::Jail::get().containment(),
             topics,
@@ -518,7 +570,7 @@ impl Prepared {
             left_out,
         };
         score::totals(&mut report);
-        Ok(report)
+        report
     }
 }
 

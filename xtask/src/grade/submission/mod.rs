@@ -52,7 +52,8 @@ use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, bail};
 
-use super::report::{self, Edition, Report, TaskStatus};
+use super::adjustments::Adjustments;
+use super::report::{self, Edition, Report};
 use super::{GradeOptions, Permits, table};
 use crate::stage::{self, Overlay, Source};
 use crate::topics;
@@ -70,7 +71,7 @@ pub(crate) use gradebook::GradebookRow;
 use integrity::is_grading_file;
 pub use integrity::{Integrity, check};
 pub use resume::Shard;
-use tampering::{contents_of, tampered, zero_for_tampering};
+use tampering::{contents_of, tampered};
 
 /// Whether `dir` looks like a course checkout.
 fn is_checkout(dir: &Path) -> bool {
@@ -150,40 +151,33 @@ fn grade_one(
             (staged, prepared)
         }
     };
-    let mut report = prepared.finish()?;
-    for (topic, uses) in refused {
-        refuse(&mut report, &topic, &uses);
-    }
-    for topic in &mut report.topics {
-        if !submission.join("exercises").join(&topic.name).is_dir() {
-            topic.errors.push(super::plan::absent_reason(&topic.name));
-            report.complete = false;
-        }
-        for (_, why) in unreadable.iter().filter(|(t, _)| *t == topic.name) {
-            topic.errors.push(why.clone());
-            report.complete = false;
-        }
-    }
+    let graded = prepared.finish()?;
     let mut integrity = integrity;
     integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
-    if !integrity.tampered.is_empty() {
-        zero_for_tampering(&mut report, &integrity.tampered);
-        let in_course: Vec<String> = integrity
-            .tampered
-            .iter()
-            .filter(|f| !f.starts_with("stage"))
-            .map(|f| table::shown(&slashed(f)))
-            .collect();
-        if !in_course.is_empty() {
-            eprintln!(
-                "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
-                table::shown(&submission.display().to_string()),
-                in_course.join(", ")
-            );
-        }
+    let in_course: Vec<String> = integrity
+        .tampered
+        .iter()
+        .filter(|f| !f.starts_with("stage"))
+        .map(|f| table::shown(&slashed(f)))
+        .collect();
+    if !in_course.is_empty() {
+        eprintln!(
+            "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
+            table::shown(&submission.display().to_string()),
+            in_course.join(", ")
+        );
     }
-    report.root = submission.to_path_buf();
-    report.integrity = Some(integrity);
+    let absent = options
+        .absent
+        .iter()
+        .map(|name| (name.clone(), super::plan::absent_reason(name)));
+    let report = graded.report(Adjustments {
+        shown_root: Some(submission.to_path_buf()),
+        refused,
+        topic_errors: absent.chain(unreadable).collect(),
+        tampered: integrity.tampered.clone(),
+        integrity: Some(integrity),
+    });
     super::export::write_all(&report, &options.out)?;
     Ok(report)
 }
@@ -331,31 +325,6 @@ fn one_line(report: &Report, out: &Path) -> String {
 /// them.
 pub(crate) fn submissions_build(official: &Path) -> PathBuf {
     stage::home(official).join("submissions-build")
-}
-
-/// Scores the topic `name` 0 as not compiled, for the forbidden `uses` of
-/// its task files.
-fn refuse(report: &mut Report, name: &str, uses: &[String]) {
-    let Some(topic) = report.topics.iter_mut().find(|t| t.name == name) else {
-        return;
-    };
-    let reason = format!(
-        "not compiled: task code may not reach other files at compile time\n{}",
-        uses.join("\n")
-    );
-    topic.compile_error = Some(match topic.compile_error.take() {
-        Some(more) => format!("{reason}\n\n{more}"),
-        None => reason,
-    });
-    for task in &mut topic.tasks {
-        task.status = TaskStatus::CompileError;
-        task.score = 0.0;
-        task.error = None;
-        task.tests.clear();
-        (task.passed, task.failed, task.ignored) = (0, 0, 0);
-    }
-    crate::grade::score::totals(report);
-    report.complete = false;
 }
 
 /// `--submission DIR`: one checkout, or a folder of checkouts (a class);
@@ -548,7 +517,7 @@ fn member_name(submission: &Path) -> String {
 }
 
 /// A relative path with `/` separators, for messages.
-fn slashed(path: &Path) -> String {
+pub(crate) fn slashed(path: &Path) -> String {
     path.components()
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
         .collect::<Vec<_>>()

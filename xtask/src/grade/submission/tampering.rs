@@ -1,13 +1,12 @@
-//! What a submission's tests changed while they ran, and the zero it
-//! scores for it.
+//! What a submission's tests changed while they ran (it then scores 0:
+//! see `grade::adjustments`).
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 
-use super::report::Report;
-use super::{is_grading_file, slashed};
+use super::is_grading_file;
 use crate::files::files_under;
 use crate::stage;
 
@@ -75,26 +74,4 @@ pub(super) fn tampered(
     changed.sort();
     changed.dedup();
     Ok(changed)
-}
-
-/// Scores every topic of a submission whose tests changed official files 0.
-pub(super) fn zero_for_tampering(report: &mut Report, files: &[PathBuf]) {
-    let shown: Vec<String> = files.iter().take(5).map(|f| slashed(f)).collect();
-    let reason = format!(
-        "scored 0: its tests changed official files while grading ({}{})",
-        shown.join(", "),
-        if files.len() > shown.len() {
-            ", ..."
-        } else {
-            ""
-        }
-    );
-    for topic in &mut report.topics {
-        topic.errors.push(reason.clone());
-        for task in &mut topic.tasks {
-            task.score = 0.0;
-        }
-    }
-    crate::grade::score::totals(report);
-    report.complete = false;
 }
