@@ -150,7 +150,7 @@ pub fn run(root: &Path, command: Command) -> Result<()> {
         Command::Stubs { check } => stubs::run(&root, check),
         Command::Test { steps } => test::run(&root, &steps),
         Command::Bench { args } => bench::run(&root, &args),
-        Command::Class { dir, size, topics } => class::run(&root, &dir, size, &topics),
+        Command::Class { dir, size, topics } => class::generated::run(&root, &dir, size, &topics),
         Command::Similarity {
             class,
             out,

@@ -183,7 +183,7 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
     let home = stage::home(root);
     let dir = super::empty_folder(home.join("class-check"))?;
     let out = super::empty_folder(home.join("class-check-grade"))?;
-    let names = crate::staff::class::write(root, &dir, 2, &[topic.to_owned()])?;
+    let names = crate::staff::class::generated::write(root, &dir, 2, &[topic.to_owned()])?;
     let mut options = crate::grade::GradeOptions::new(root.to_path_buf());
     options.out = out.clone();
     options.topics = vec![topic.to_owned()];

@@ -1,0 +1,4 @@
+//! The staff's class: a generated class to try grading on
+//! ([`generated`]).
+
+pub mod generated;
