@@ -101,28 +101,30 @@ struct GradeArgs {
     /// Grade the reference solutions instead of the student code.
     #[arg(long)]
     reference: bool,
-    /// Grade a student's checkout with this course's official tests, or every
-    /// checkout in a folder of them (a gradebook); changed tests are flagged.
+    /// Grade a student's checkout with this course's official tests; changed tests are
+    /// flagged. (In the course repository, also every checkout in a folder of them: a class,
+    /// with its gradebook.)
     #[arg(long, value_name = "DIR")]
     submission: Option<PathBuf>,
     /// Where report.json, results.json, junit.xml, logs and images go [default: <root>/target/grade].
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// Tests run at the same time [default: the number of CPUs]; in a class, also the
-    /// submissions graded side by side [default: one per two CPUs].
+    /// Tests run at the same time [default: the number of CPUs]; in a class (the course
+    /// repository's), also the submissions graded side by side [default: one per two CPUs].
     #[arg(long, short, value_name = "N")]
     jobs: Option<usize>,
     /// cargo's target directory for the build [default: cargo's].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
     /// The longest a build of student code may take, in seconds; a build over it fails
-    /// that submission, and a class goes on with the next [default: 2700].
+    /// that submission (and a class goes on with the next) [default: 2700].
     #[arg(long, value_name = "SECONDS")]
     build_time_limit: Option<u64>,
     /// Of a class, grade only the I-th of N parts (a member is always in the same part),
     /// e.g. on N machines; `cargo xtask gradebook merge` joins their --out folders.
-    #[arg(long, value_name = "I/N", value_parser = grade::submission::Shard::parse)]
-    shard: Option<grade::submission::Shard>,
+    #[cfg(feature = "staff")]
+    #[arg(long, value_name = "I/N", value_parser = staff::class::Shard::parse)]
+    shard: Option<staff::class::Shard>,
     /// With --submission: grade even where bubblewrap, its seccomp filter or the cgroups
     /// that limit a test's processes together cannot be had (what can be had is still
     /// used), instead of refusing; every report says so.
@@ -139,7 +141,6 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
     }
     if let Some(jobs) = args.jobs {
         options.jobs = jobs;
-        options.submissions_at_once = Some(jobs);
     }
     // Relative to where the command was given, as cargo's own: the build
     // runs elsewhere (in the stage, in the sandbox).
@@ -165,7 +166,13 @@ fn grade(root: PathBuf, args: GradeArgs) -> Result<()> {
         Some(_) if args.reference => {
             anyhow::bail!("--reference grades this course's solutions; a submission has none")
         }
-        Some(dir) => grade::submission::run(&root, &dir, &options, args.shard),
+        // One checkout, or (the staff's) a class.
+        #[cfg(feature = "staff")]
+        Some(dir) => staff::class::run(&root, &dir, &options, args.jobs, args.shard),
+        // One checkout: an edition's grader grades no class.
+        #[cfg(not(feature = "staff"))]
+        Some(dir) => grade::submission::run(&root, &dir, &options).map(drop),
+        #[cfg(feature = "staff")]
         None if args.shard.is_some() => {
             anyhow::bail!("--shard splits a class: give the class's folder with --submission")
         }

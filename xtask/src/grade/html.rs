@@ -14,7 +14,7 @@ use super::report::{
 };
 
 /// Styles for the page: readable in light and dark mode, monospace diffs.
-pub(super) const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:96em}\
+pub(crate) const STYLE: &str = "body{font-family:system-ui,sans-serif;margin:2em;max-width:96em}\
 table{border-collapse:collapse;margin:.5em 0}td,th{padding:.25em .75em;text-align:left;\
 border-bottom:1px solid #8884}.ok{color:#197a32}.fail{color:#b3261e}.error{color:#a15c00}\
 pre{background:#8881;padding:.75em;overflow-x:auto}figure{display:inline-block;margin:.5em}\

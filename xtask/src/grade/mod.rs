@@ -33,11 +33,10 @@
 
 mod adjustments;
 mod build;
-pub mod class_report;
 pub mod classroom;
 pub mod export;
 mod forbidden;
-mod html;
+pub(crate) mod html;
 mod junit;
 pub mod markup;
 mod outcome;
@@ -50,7 +49,7 @@ pub mod reviewed;
 mod run;
 pub mod score;
 pub mod submission;
-mod table;
+pub(crate) mod table;
 mod verdict;
 
 use std::collections::HashMap;
@@ -62,6 +61,7 @@ use anyhow::{Context, Result, bail};
 use indicatif::ProgressBar;
 
 use adjustments::Adjustments;
+#[cfg(feature = "staff")]
 pub use pool::Permits;
 pub use report::{Edition, Report, TaskStatus};
 
@@ -90,27 +90,13 @@ pub struct GradeOptions {
     pub out: PathBuf,
     /// Tests run at the same time.
     pub jobs: usize,
-    /// Submissions of a class graded at the same time, as `--jobs` gave
-    /// it; `None`: one per two CPUs (see `submission`).
-    pub submissions_at_once: Option<usize>,
     /// cargo's `--target-dir`; `None`: cargo's default for the workspace.
     pub target_dir: Option<PathBuf>,
     /// The wall-clock limit of each build of student code.
     pub build_time_limit: Duration,
-    /// Where to keep the test executables once built (hard links), so
-    /// that they run from there while the build folder builds another
-    /// stage: a class slot's `bin/`. `None`: they run where cargo put them.
-    pub keep_binaries: Option<PathBuf>,
-    /// Shared with other grades running at the same time: at most its
-    /// count of tests run at once across all of them.
-    pub permits: Option<std::sync::Arc<Permits>>,
     /// Progress bars and spinners on stderr (off where several grades
     /// share the terminal).
     pub progress: bool,
-    /// Topics of the assignment that the graded code does not hold (a
-    /// submission without their folders): neither built nor run, each of
-    /// their tasks an error that says so, scoring 0.
-    pub absent: Vec<String>,
     /// What containment student code needs before it runs: the grade of
     /// record fails closed (see [`crate::sandbox::Policy`]).
     pub sandbox: crate::sandbox::Policy,
@@ -127,16 +113,41 @@ impl GradeOptions {
             reference: false,
             out,
             jobs: default_jobs(),
-            submissions_at_once: None,
             target_dir: None,
             build_time_limit: build::DEFAULT_BUILD_TIME_LIMIT,
-            keep_binaries: None,
-            permits: None,
             progress: true,
-            absent: Vec::new(),
             sandbox: crate::sandbox::Policy::BestEffort,
         }
     }
+}
+
+/// What the grader of a submission sets for its grade besides the
+/// [`GradeOptions`] (see `submission`); a grade of the checkout itself or
+/// of the reference sets nothing.
+#[derive(Debug, Default)]
+pub(crate) struct Setting {
+    /// Topics of the assignment that the graded code does not hold (a
+    /// submission without their folders): neither built nor run, each of
+    /// their tasks an error that says so, scoring 0.
+    pub(crate) absent: Vec<String>,
+    /// The grade runs in a class's slot, beside the grades of the other
+    /// slots (the staff's class).
+    #[cfg(feature = "staff")]
+    pub(crate) beside: Option<Beside>,
+}
+
+/// A grade in a class's slot, beside others: its test executables kept
+/// apart, its tests counted with theirs.
+#[cfg(feature = "staff")]
+#[derive(Debug, Clone)]
+pub(crate) struct Beside {
+    /// Where the test executables are kept once built (hard links), so
+    /// that they run from there while the build folder builds another
+    /// slot's stage: the slot's `bin/`, removed when the grade is done.
+    pub(crate) keep_binaries: PathBuf,
+    /// Shared with the other slots: at most its count of tests run at
+    /// once across all of them.
+    pub(crate) permits: std::sync::Arc<Permits>,
 }
 
 /// One test per available CPU.
@@ -197,14 +208,16 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
 /// Grades the course at `options.root` as it is, building it into
 /// `options.target_dir`; makes no report yet.
 fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Graded> {
-    prepare(options, edition)?.finish()
+    prepare(options, edition, Setting::default())?.finish()
 }
 
 /// A course built and its tests listed, ready to run: the first half of a
-/// grade. What the tests run from no longer depends on the build folder
-/// where the executables are kept ([`GradeOptions::keep_binaries`]).
+/// grade. Where the executables are kept apart (`Beside::keep_binaries`),
+/// what the tests run from no longer depends on the build folder.
 pub(crate) struct Prepared {
     options: GradeOptions,
+    #[cfg(feature = "staff")]
+    beside: Option<Beside>,
     edition: Edition,
     started: Instant,
     /// Seconds the builds took (and the listing of the tests).
@@ -216,8 +229,12 @@ pub(crate) struct Prepared {
 }
 
 /// Builds the course at `options.root` (every topic and the pipeline's
-/// viewer) and lists its tests.
-pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepared> {
+/// viewer, but the topics `setting` says are absent) and lists its tests.
+pub(crate) fn prepare(
+    options: &GradeOptions,
+    edition: Edition,
+    setting: Setting,
+) -> Result<Prepared> {
     let started = Instant::now();
     let root = std::path::absolute(&options.root)
         .with_context(|| format!("cannot find {}", options.root.display()))?;
@@ -269,7 +286,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
     let mut stopped: Option<String> = None;
     let held: Vec<topics::Topic> = topics
         .iter()
-        .filter(|topic| !options.absent.contains(&topic.name))
+        .filter(|topic| !setting.absent.contains(&topic.name))
         .cloned()
         .collect();
     if held.len() > 1 {
@@ -289,7 +306,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             crate::files::remove_tree(&stale)
                 .with_context(|| format!("cannot clear {}", stale.display()))?;
         }
-        if options.absent.contains(&topic.name) {
+        if setting.absent.contains(&topic.name) {
             plans.push(plan::absent(topic));
             continue;
         }
@@ -314,10 +331,12 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
             }
             (_, build) => build,
         };
-        let build = match (&options.keep_binaries, build) {
-            (Some(keep), Build::Built(binaries)) => {
-                Build::Built(keep_binaries(binaries, &keep.join(&topic.name))?)
-            }
+        #[cfg(feature = "staff")]
+        let build = match (&setting.beside, build) {
+            (Some(beside), Build::Built(binaries)) => Build::Built(keep_binaries(
+                binaries,
+                &beside.keep_binaries.join(&topic.name),
+            )?),
             (_, build) => build,
         };
         plans.push(plan::plan(&root, &out, topic, build));
@@ -333,9 +352,10 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
         .map(|plan| plan.topic.name.as_str())
         .collect();
     let viewer = pipeline::build_viewer(&builder, &graded, &compiled);
-    let viewer = match (&options.keep_binaries, viewer) {
-        (Some(keep), pipeline::Viewer::Built(binary)) => {
-            match keep_binary(&binary, &keep.join("viewer")) {
+    #[cfg(feature = "staff")]
+    let viewer = match (&setting.beside, viewer) {
+        (Some(beside), pipeline::Viewer::Built(binary)) => {
+            match keep_binary(&binary, &beside.keep_binaries.join("viewer")) {
                 Ok(kept) => pipeline::Viewer::Built(kept),
                 Err(error) => pipeline::Viewer::Failed(format!("{error:#}")),
             }
@@ -344,6 +364,8 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
     };
     Ok(Prepared {
         options: options.clone(),
+        #[cfg(feature = "staff")]
+        beside: setting.beside,
         edition,
         started,
         build_s: started.elapsed().as_secs_f64(),
@@ -356,6 +378,7 @@ pub(crate) fn prepare(options: &GradeOptions, edition: Edition) -> Result<Prepar
 
 /// Hard links `binaries` into `dir` (emptied first): cargo replaces an
 /// executable it rebuilds with a new file, so the link keeps this build's.
+#[cfg(feature = "staff")]
 fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary>> {
     crate::files::remove_tree(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
     binaries
@@ -374,6 +397,7 @@ fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary
 }
 
 /// Hard links (or, across file systems, copies) `binary` into `dir`.
+#[cfg(feature = "staff")]
 fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
     fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let name = binary
@@ -391,10 +415,12 @@ fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
 impl Prepared {
     /// Runs the tests and draws the pipeline: the second half of a grade.
     pub(crate) fn finish(self) -> Result<Graded> {
-        let keep = self.options.keep_binaries.clone();
+        #[cfg(feature = "staff")]
+        let kept = self.beside.as_ref().map(|b| b.keep_binaries.clone());
         let report = self.run();
-        if let Some(keep) = keep {
-            let _ = crate::files::remove_tree(&keep);
+        #[cfg(feature = "staff")]
+        if let Some(kept) = kept {
+            let _ = crate::files::remove_tree(&kept);
         }
         report
     }
@@ -402,6 +428,8 @@ impl Prepared {
     fn run(self) -> Result<Graded> {
         let Prepared {
             options,
+            #[cfg(feature = "staff")]
+            beside,
             edition,
             started,
             build_s,
@@ -447,14 +475,13 @@ impl Prepared {
             )),
             pending: out.join(PENDING_SNAPSHOTS),
         };
-        let results = pool::run_all(
-            &plans,
-            &jobs,
-            options.jobs.max(1),
-            options.permits.as_deref(),
-            options.progress,
-            &kept,
-        )?;
+        let workers = pool::Workers {
+            threads: options.jobs.max(1),
+            progress: options.progress,
+            #[cfg(feature = "staff")]
+            permits: beside.map(|beside| beside.permits),
+        };
+        let results = pool::run_all(&plans, &jobs, &workers, &kept)?;
         let mut keeper = kept
             .keeper
             .into_inner()

@@ -1,6 +1,6 @@
 //! The pool tests run in: `--jobs` workers, and across the submissions of
-//! a class graded side by side, one count of tests running at once
-//! ([`Permits`]).
+//! a class graded side by side (the staff's class), one count of tests
+//! running at once (`Permits`).
 
 use std::collections::HashSet;
 use std::path::PathBuf;
@@ -17,12 +17,14 @@ use crate::files::Keeper;
 
 /// A counting semaphore: the tests that may run at once, shared by the
 /// submissions of a class graded side by side.
+#[cfg(feature = "staff")]
 #[derive(Debug)]
 pub struct Permits {
     free: Mutex<usize>,
     freed: std::sync::Condvar,
 }
 
+#[cfg(feature = "staff")]
 impl Permits {
     /// `count` permits (at least one).
     #[must_use]
@@ -45,8 +47,10 @@ impl Permits {
 }
 
 /// A permit of [`Permits`], held while a test runs.
+#[cfg(feature = "staff")]
 pub struct PermitGuard<'a>(&'a Permits);
 
+#[cfg(feature = "staff")]
 impl Drop for PermitGuard<'_> {
     fn drop(&mut self) {
         *self.0.free.lock().expect("no permit holder panics") += 1;
@@ -79,20 +83,28 @@ impl Kept {
     }
 }
 
-/// Runs the given tests `threads` at a time (and, with `permits`, only
-/// while one is free), with a progress bar on stderr (hidden when stderr
-/// is not a terminal or `progress` is off); after each, `kept` sweeps
-/// what it wrote into the report folder.
+/// How the tests of a grade run.
+pub(super) struct Workers {
+    /// Tests run at the same time.
+    pub(super) threads: usize,
+    /// A progress bar on stderr (hidden when stderr is not a terminal).
+    pub(super) progress: bool,
+    /// Shared with the grades of a class's other slots: a test runs only
+    /// while one of them is free.
+    #[cfg(feature = "staff")]
+    pub(super) permits: Option<std::sync::Arc<Permits>>,
+}
+
+/// Runs the given tests as `workers` says; after each, `kept` sweeps what
+/// it wrote into the report folder.
 pub(super) fn run_all(
     plans: &[Plan],
     jobs: &[(usize, usize)],
-    threads: usize,
-    permits: Option<&Permits>,
-    progress: bool,
+    workers: &Workers,
     kept: &Kept,
 ) -> Result<Vec<Finished>> {
     crate::sandbox::stop_all_on_interrupt();
-    let bar = if progress {
+    let bar = if workers.progress {
         let bar = ProgressBar::new(jobs.len() as u64).with_style(
             ProgressStyle::with_template(
                 "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
@@ -111,7 +123,7 @@ pub(super) fn run_all(
     // tests not started yet are not run.
     let timed_out: Mutex<HashSet<(usize, usize)>> = Mutex::default();
     std::thread::scope(|scope| {
-        for _ in 0..threads.min(jobs.len()) {
+        for _ in 0..workers.threads.min(jobs.len()) {
             scope.spawn(|| {
                 loop {
                     let index = next.fetch_add(1, Ordering::Relaxed);
@@ -132,7 +144,8 @@ pub(super) fn run_all(
                     let result = if skip {
                         Ok(Finished::not_run())
                     } else {
-                        let _permit = permits.map(Permits::take);
+                        #[cfg(feature = "staff")]
+                        let _permit = workers.permits.as_deref().map(Permits::take);
                         command.run()
                     };
                     kept.sweep_after(test);

@@ -6,7 +6,7 @@
 //! `crate::stage`, `crate::edition`), which imports nothing from here.
 
 mod bench;
-mod class;
+pub mod class;
 pub mod class_workflow;
 pub mod classroom;
 mod gradescope;
@@ -23,7 +23,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Result;
 use clap::Subcommand;
 
-use crate::{grade, stage};
+use crate::stage;
 
 /// The staff's commands.
 #[derive(Subcommand)]
@@ -173,7 +173,7 @@ pub fn run(root: &Path, command: Command) -> Result<()> {
         } => review::run(&root, out.as_deref(), submission.as_deref(), list),
         Command::Gradebook {
             action: GradebookAction::Merge { parts, out },
-        } => grade::submission::merge(&parts, &out),
+        } => class::merge(&parts, &out),
         Command::Gradescope { dir, topics } => gradescope::run(&root, &dir, &topics),
         Command::Release {
             dir,

@@ -219,7 +219,7 @@ fn apply_verdicts(graded: &Path, verdicts: &[Verdict]) -> Result<String> {
     let before = report.score;
     let passing = grade::reviewed::apply(&mut report, &accepted);
     grade::export::write_all(&report, graded)?;
-    let class = grade::submission::update_class_row(graded, &report)?;
+    let class = crate::staff::class::update_class_row(graded, &report)?;
     Ok(format!(
         "{passing} test(s) pass by review: {} → {} of {} points in {}{}",
         grade::report::points(before),

@@ -26,9 +26,10 @@
 //! `target/debug`. A lock file keeps two `cargo xtask` runs from syncing
 //! the stage at once.
 //!
-//! **Class slots.** A class graded in parallel needs one stage per
-//! submission in flight (`target/xtask/class/<slot>/stage`), all built
-//! into the one cache so that the dependencies are built once. Sharing is
+//! **Class slots.** A class graded in parallel (the staff's, see
+//! `staff::class`) needs one stage per submission in flight
+//! (`target/xtask/class/<slot>/stage`), all built into the one cache so
+//! that the dependencies are built once. Sharing is
 //! safe because the builds take turns, and because the build folder
 //! remembers which stage it was last built from ([`BUILT_FROM`]): a stage
 //! that was not the last has all its files touched before it builds, so
@@ -64,12 +65,14 @@ pub const BUILT_FROM: &str = ".course-stage-built-from";
 /// Where class slot `slot` of the checkout at `root` keeps its stage
 /// (`<home>/stage`) and the test executables of the submission it grades
 /// (`<home>/bin`).
+#[cfg(feature = "staff")]
 #[must_use]
 pub fn class_home(root: &Path, slot: usize) -> PathBuf {
     class_homes(root).join(slot.to_string())
 }
 
 /// The folder of every class slot's home (see [`class_home`]).
+#[cfg(feature = "staff")]
 #[must_use]
 pub fn class_homes(root: &Path) -> PathBuf {
     home(root).join("class")
@@ -349,6 +352,7 @@ pub fn stage_plan(root: &Path, files: &Files, target_dir: Option<&Path>) -> Resu
 /// Takes the lock of the stage of the checkout at `root`, waiting for
 /// another run: a class run holds it throughout, since its slots build
 /// into the same cache.
+#[cfg(feature = "staff")]
 pub fn lock(root: &Path) -> Result<File> {
     lock_stage(&home(root))
 }
@@ -356,6 +360,7 @@ pub fn lock(root: &Path) -> Result<File> {
 /// The stage in `home` holding `files`, built into `target_dir`: a class
 /// slot (see [`class_home`]). The caller makes the slots' syncs and
 /// builds take turns.
+#[cfg(feature = "staff")]
 pub fn stage_slot(home: &Path, files: &Files, target_dir: &Path) -> Result<Stage> {
     let lock = lock_stage(home)?;
     stage_files(home, files, Some(target_dir), lock)

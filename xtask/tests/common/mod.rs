@@ -152,7 +152,7 @@ pub fn grade(root: &Path, out: &str, extra: &[&str]) -> (Output, Value, Duration
 
 /// `path` emptied: a grade's `--out` in a fixture course, whose `target/`
 /// is kept between runs, so that a class graded again keeps no member
-/// graded by an earlier run (see `submission::resume`).
+/// graded by an earlier run (see `staff::class::resume`).
 pub fn fresh(path: PathBuf) -> PathBuf {
     if path.exists() {
         fs::remove_dir_all(&path).unwrap();

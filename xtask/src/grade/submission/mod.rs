@@ -1,5 +1,5 @@
-//! `cargo xtask grade --submission DIR`: grading a student's checkout, or a
-//! folder of them, with the course's official tests.
+//! `cargo xtask grade --submission DIR`: grading a student's checkout
+//! with the course's official tests.
 //!
 //! Only the task files belong to the student: the files of
 //! `exercises/*/src/` the official course names as tasks (see
@@ -23,163 +23,222 @@
 //! *flagged* in every report (the table, `report.html`, `report.json`,
 //! Gradescope's output). Nothing in the submission is ever written to.
 //!
-//! Each submission is graded into `<out>/<name>/`; the snapshots it
-//! failed are in `<out>/<name>/snapshots/` (insta's `.snap.new` files, at
-//! their paths in the course). One submission is graded in the course's
-//! stage. A folder whose subfolders are checkouts is a class: up to
-//! `--jobs` submissions (default: one per two CPUs) are graded side by side, each in a stage of its
-//! own (a *slot*, see `stage::class_home`), all built into the one build
-//! cache, so the dependencies are built once. The builds take turns (cargo
-//! would make them anyway); while one submission builds, the others run
-//! their tests, from hard links of their executables in their slot, with
-//! at most `--jobs` tests running at once in all. `<out>/gradebook.csv`
-//! and `gradebook.json` list the scores (see `gradebook`: each member's row
-//! is kept in its folder, so a member graded again updates them, and
-//! shards of a class graded on several machines merge). A class graded
-//! again keeps the members whose grade was made from the same files (see
-//! `resume`), so an interrupted class goes on where it stopped.
-//!
-//! A test sees its own stage and executables and nothing else of the
-//! course's build output: not the other slots (a classmate's code), the
-//! course's own stage (which may hold the solutions), the build cache or
-//! the planted shortcuts of `cargo xtask test`. Without a sandbox nothing
-//! hides them, and a class is graded one submission at a time, so that
-//! what a submission's tests change is found and blamed on it.
+//! A submission is graded into `<out>/<name>/` (its folder's name); the
+//! snapshots it failed are in `<out>/<name>/snapshots/` (insta's
+//! `.snap.new` files, at their paths in the course). It is graded in the
+//! course's stage ([`grade_one`]). A folder of checkouts, a class, is the
+//! staff's to grade, with the course repository's tools (`staff::class`,
+//! which grades each member with `grade_in_slot`, in a stage of its own
+//! beside the others); an edition's grader refuses it and says so.
 
 use std::fs;
 use std::path::{Path, PathBuf};
+#[cfg(feature = "staff")]
 use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, bail};
 
+#[cfg(feature = "staff")]
+use super::Permits;
 use super::adjustments::Adjustments;
-use super::report::{self, Edition, Report};
-use super::{GradeOptions, Permits, table};
+use super::report::{Edition, Report};
+use super::{GradeOptions, table};
 use crate::stage::{self, Overlay, Source};
 use crate::topics;
 
-mod class;
-mod gradebook;
 mod integrity;
 pub(crate) mod nofollow;
-mod resume;
 mod tampering;
 
-use class::grade_class;
-use gradebook::Class;
-pub(crate) use gradebook::GradebookRow;
 use integrity::is_grading_file;
 pub use integrity::{Integrity, check};
-pub use resume::Shard;
 use tampering::{contents_of, tampered};
 
 /// Whether `dir` looks like a course checkout.
-fn is_checkout(dir: &Path) -> bool {
+pub(crate) fn is_checkout(dir: &Path) -> bool {
     // A link among a class's members is no member: it could name another.
     let linked = fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink());
     !linked && dir.join("exercises").is_dir() && dir.join("Cargo.toml").is_file()
 }
 
 /// A class slot: where one submission of a class is staged and its tests
-/// run from.
-struct Slot<'a> {
+/// run from, beside the other slots (the staff's class).
+#[cfg(feature = "staff")]
+pub(crate) struct Slot<'a> {
     /// The slot's folder (see `stage::class_home`).
-    home: PathBuf,
+    pub(crate) home: PathBuf,
     /// The one build cache of all slots.
-    target_dir: PathBuf,
+    pub(crate) target_dir: PathBuf,
     /// Held while a slot syncs its stage and builds.
-    turn: &'a Mutex<()>,
+    pub(crate) turn: &'a Mutex<()>,
     /// The tests that may run at once, in all slots.
-    permits: Arc<Permits>,
+    pub(crate) permits: Arc<Permits>,
 }
 
-/// Grades one submission against the official course at `official`:
-/// compare, stage (in the course's stage, or in `slot`), grade the stage
-/// into `options.out`, keep its failed snapshots. The report files carry
-/// the submission's path and its integrity.
-fn grade_one(
+/// Grades one submission against the official course at `official` in
+/// the course's stage: compare, stage, grade the stage into
+/// `options.out`, keep its failed snapshots. The report files carry the
+/// submission's path and its integrity.
+pub(crate) fn grade_one(
     official: &Path,
     submission: &Path,
     options: &GradeOptions,
-    slot: Option<&Slot<'_>>,
 ) -> Result<Report> {
-    let integrity = check(official, submission)?;
-    let mut options = options.clone();
-    // The assignment is the official course's topics, whatever the
-    // submission holds: a topic it lacks scores 0, with the reason.
-    let all_topics = topics::discover(official)?;
-    if options.topics.is_empty() {
-        options.topics = all_topics.iter().map(|t| t.name.clone()).collect();
-    }
-    // A topic it lacks is neither built nor run: the course's stubs of it
-    // would only fail, at the cost of a build and a `todo!()` per test.
-    options.absent = all_topics
-        .iter()
-        .filter(|topic| !submission.join("exercises").join(&topic.name).is_dir())
-        .map(|topic| topic.name.clone())
-        .collect();
-    let options = &options;
-    let (files, taken) = staged_files(official, submission)?;
-    let (refused, unreadable) = (taken.refused, taken.unreadable);
-    let course_before = contents_of(official)?;
-    let planned: Vec<(PathBuf, Vec<u8>)> = files
-        .iter()
-        .map(|(to, from)| Ok((to.clone(), from.read()?)))
-        .collect::<Result<_>>()?;
-    let mut in_stage = options.clone();
-    let (staged, prepared) = match slot {
-        None => {
-            let target_dir = options
-                .target_dir
-                .clone()
-                .unwrap_or_else(|| submissions_build(official));
-            let staged = stage::stage_plan(official, &files, Some(&target_dir))?;
-            in_stage.root.clone_from(&staged.root);
-            in_stage.target_dir = Some(staged.target_dir.clone());
-            let prepared = super::prepare(&in_stage, Edition::Student)?;
-            (staged, prepared)
-        }
-        Some(slot) => {
-            let _turn = slot.turn.lock().expect("no slot panics while building");
-            let staged = stage::stage_slot(&slot.home, &files, &slot.target_dir)?;
-            in_stage.keep_binaries = Some(slot.home.join("bin"));
-            in_stage.permits = Some(Arc::clone(&slot.permits));
-            in_stage.progress = false;
-            in_stage.root.clone_from(&staged.root);
-            in_stage.target_dir = Some(slot.target_dir.clone());
-            let prepared = super::prepare(&in_stage, Edition::Student)?;
-            (staged, prepared)
-        }
+    let intake = Intake::take(official, submission, options)?;
+    let target_dir = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| submissions_build(official));
+    let staged = stage::stage_plan(official, &intake.files, Some(&target_dir))?;
+    let prepared = super::prepare(
+        &intake.in_stage(&staged),
+        Edition::Student,
+        intake.setting(),
+    )?;
+    intake.graded(official, &staged, prepared)
+}
+
+/// [`grade_one`] in a class's `slot` instead of the course's stage: the
+/// slot's stage synced and built in its turn, its tests run from the
+/// slot's `bin/` as the slot's permits allow, without progress bars.
+#[cfg(feature = "staff")]
+pub(crate) fn grade_in_slot(
+    official: &Path,
+    submission: &Path,
+    options: &GradeOptions,
+    slot: &Slot<'_>,
+) -> Result<Report> {
+    let intake = Intake::take(official, submission, options)?;
+    let (staged, prepared) = {
+        let _turn = slot.turn.lock().expect("no slot panics while building");
+        let staged = stage::stage_slot(&slot.home, &intake.files, &slot.target_dir)?;
+        let mut in_stage = intake.in_stage(&staged);
+        in_stage.progress = false;
+        let setting = super::Setting {
+            beside: Some(super::Beside {
+                keep_binaries: slot.home.join("bin"),
+                permits: Arc::clone(&slot.permits),
+            }),
+            ..intake.setting()
+        };
+        let prepared = super::prepare(&in_stage, Edition::Student, setting)?;
+        (staged, prepared)
     };
-    let graded = prepared.finish()?;
-    let mut integrity = integrity;
-    integrity.tampered = tampered(official, &course_before, &staged.root, &planned)?;
-    let in_course: Vec<String> = integrity
-        .tampered
-        .iter()
-        .filter(|f| !f.starts_with("stage"))
-        .map(|f| table::shown(&slashed(f)))
-        .collect();
-    if !in_course.is_empty() {
-        eprintln!(
-            "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
-            table::shown(&submission.display().to_string()),
-            in_course.join(", ")
-        );
+    intake.graded(official, &staged, prepared)
+}
+
+/// A submission compared with the official course and its task files
+/// taken, ready to stage: the first part of [`grade_one`].
+struct Intake {
+    submission: PathBuf,
+    /// The options of its grade: every topic of the assignment where
+    /// none was chosen.
+    options: GradeOptions,
+    /// The topics of the assignment it lacks.
+    absent: Vec<String>,
+    integrity: Integrity,
+    /// The files of its stage (see [`staged_files`]).
+    files: stage::Files,
+    refused: Vec<(String, Vec<String>)>,
+    unreadable: Vec<(String, String)>,
+    /// The official course's files before the grade, to find what its
+    /// tests changed (see `tampering`).
+    course_before: Vec<(PathBuf, Vec<u8>)>,
+    /// What the stage holds before the grade, likewise.
+    planned: Vec<(PathBuf, Vec<u8>)>,
+}
+
+impl Intake {
+    fn take(official: &Path, submission: &Path, options: &GradeOptions) -> Result<Self> {
+        let integrity = check(official, submission)?;
+        let mut options = options.clone();
+        // The assignment is the official course's topics, whatever the
+        // submission holds: a topic it lacks scores 0, with the reason.
+        let all_topics = topics::discover(official)?;
+        if options.topics.is_empty() {
+            options.topics = all_topics.iter().map(|t| t.name.clone()).collect();
+        }
+        // A topic it lacks is neither built nor run: the course's stubs of
+        // it would only fail, at the cost of a build and a `todo!()` per
+        // test.
+        let absent = all_topics
+            .iter()
+            .filter(|topic| !submission.join("exercises").join(&topic.name).is_dir())
+            .map(|topic| topic.name.clone())
+            .collect();
+        let (files, taken) = staged_files(official, submission)?;
+        let course_before = contents_of(official)?;
+        let planned: Vec<(PathBuf, Vec<u8>)> = files
+            .iter()
+            .map(|(to, from)| Ok((to.clone(), from.read()?)))
+            .collect::<Result<_>>()?;
+        Ok(Self {
+            submission: submission.to_path_buf(),
+            options,
+            absent,
+            integrity,
+            files,
+            refused: taken.refused,
+            unreadable: taken.unreadable,
+            course_before,
+            planned,
+        })
     }
-    let absent = options
-        .absent
-        .iter()
-        .map(|name| (name.clone(), super::plan::absent_reason(name)));
-    let report = graded.report(Adjustments {
-        shown_root: Some(submission.to_path_buf()),
-        refused,
-        topic_errors: absent.chain(unreadable).collect(),
-        tampered: integrity.tampered.clone(),
-        integrity: Some(integrity),
-    });
-    super::export::write_all(&report, &options.out)?;
-    Ok(report)
+
+    /// The options of its grade in `staged`.
+    fn in_stage(&self, staged: &stage::Stage) -> GradeOptions {
+        let mut in_stage = self.options.clone();
+        in_stage.root.clone_from(&staged.root);
+        in_stage.target_dir = Some(staged.target_dir.clone());
+        in_stage
+    }
+
+    fn setting(&self) -> super::Setting {
+        super::Setting {
+            absent: self.absent.clone(),
+            #[cfg(feature = "staff")]
+            beside: None,
+        }
+    }
+
+    /// Runs the `prepared` grade of the submission staged in `staged`,
+    /// finds what its tests changed, and makes and writes its report.
+    fn graded(
+        self,
+        official: &Path,
+        staged: &stage::Stage,
+        prepared: super::Prepared,
+    ) -> Result<Report> {
+        let graded = prepared.finish()?;
+        let mut integrity = self.integrity;
+        integrity.tampered = tampered(official, &self.course_before, &staged.root, &self.planned)?;
+        let in_course: Vec<String> = integrity
+            .tampered
+            .iter()
+            .filter(|f| !f.starts_with("stage"))
+            .map(|f| table::shown(&slashed(f)))
+            .collect();
+        if !in_course.is_empty() {
+            eprintln!(
+                "warning: the tests of {} changed files of the course itself; check them (e.g. `git status`): {}",
+                table::shown(&self.submission.display().to_string()),
+                in_course.join(", ")
+            );
+        }
+        let absent = self
+            .absent
+            .iter()
+            .map(|name| (name.clone(), super::plan::absent_reason(name)));
+        let report = graded.report(Adjustments {
+            shown_root: Some(self.submission),
+            refused: self.refused,
+            topic_errors: absent.chain(self.unreadable).collect(),
+            tampered: integrity.tampered.clone(),
+            integrity: Some(integrity),
+        });
+        super::export::write_all(&report, &self.options.out)?;
+        Ok(report)
+    }
 }
 
 /// A submission's task files as the grader took them.
@@ -288,38 +347,6 @@ fn table_of(report: &Report, out: &Path) -> String {
     )
 }
 
-/// A graded member in one line: its points, bonus, flag, the topics that
-/// did not compile, and where its report is.
-fn one_line(report: &Report, out: &Path) -> String {
-    let base: f64 = report.topics.iter().map(|t| t.base_score()).sum();
-    let bonus: f64 = report.topics.iter().map(|t| t.bonus().0).sum();
-    let mut line = format!(
-        "{} / {} points",
-        report::points(report::round2(base)),
-        report::points(report.max_score)
-    );
-    if bonus > 0.0 {
-        line.push_str(&format!(
-            " (+{} bonus)",
-            report::points(report::round2(bonus))
-        ));
-    }
-    let broken: Vec<&str> = report
-        .topics
-        .iter()
-        .filter(|t| t.compile_error.is_some())
-        .map(|t| t.name.as_str())
-        .collect();
-    if !broken.is_empty() {
-        line.push_str(&format!(" · does not compile: {}", broken.join(", ")));
-    }
-    if report.integrity.as_ref().is_some_and(Integrity::flagged) {
-        line.push_str(" · FLAGGED: grading files changed");
-    }
-    line.push_str(&format!(" · {}", out.join("report.html").display()));
-    line
-}
-
 /// The build cache of submissions: never the one the solutions are built
 /// in, so that nothing a submission's build can read was compiled from
 /// them.
@@ -327,189 +354,42 @@ pub(crate) fn submissions_build(official: &Path) -> PathBuf {
     stage::home(official).join("submissions-build")
 }
 
-/// `--submission DIR`: one checkout, or a folder of checkouts (a class);
-/// of a class only the members of `shard`, where one is given.
-pub fn run(
-    official: &Path,
-    dir: &Path,
-    options: &GradeOptions,
-    shard: Option<Shard>,
-) -> Result<()> {
+/// `--submission DIR`: grades the checkout `dir` into `<out>/<name>/`
+/// (its folder's name) and prints its table. A folder of checkouts (a
+/// class) is not graded here: grading a class is the staff's, with the
+/// course repository's tools.
+pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<Report> {
     let dir = dir
         .canonicalize()
         .with_context(|| format!("cannot find the submission {}", dir.display()))?;
-    let out_for = |submission: &Path| {
-        let mut one = options.clone();
-        one.out = options.out.join(member_name(submission));
-        (member_name(submission), one)
-    };
-    if is_checkout(&dir) {
-        let (name, one) = out_for(&dir);
-        let report = grade_one(official, &dir, &one, None)?;
-        print!("{}", table_of(&report, &one.out));
-        // A member graded again into its class's folder: its row there,
-        // and the class's gradebook, follow.
-        if options.out.join("gradebook.json").is_file() {
-            GradebookRow::new(name, &report).save(&one.out)?;
-            resume::save(
-                &one.out,
-                &resume::fingerprint(resume::tree_hash(official)?, &dir)?,
-            )?;
-            let class = write_class(&options.out)?;
-            println!(
-                "the gradebook of {} member(s) in {} now holds this grade",
-                class.rows.len(),
-                options.out.display()
-            );
-        }
-        return Ok(());
-    }
-    let mut submissions: Vec<PathBuf> = fs::read_dir(&dir)
-        .with_context(|| format!("cannot read {}", dir.display()))?
-        .filter_map(|entry| entry.ok().map(|e| e.path()))
-        .filter(|path| is_checkout(path))
-        .collect();
-    submissions.sort();
-    if submissions.is_empty() {
-        bail!(
-            "{} is neither a course checkout (with exercises/ and Cargo.toml) nor a folder of them",
-            dir.display()
-        );
-    }
-    let whole = submissions.len();
-    if let Some(shard) = shard {
-        submissions.retain(|s| shard.holds(&member_name(s)));
-        println!(
-            "shard {}/{}: {} of the class's {whole} member(s)",
-            shard.index,
-            shard.count,
-            submissions.len()
-        );
-    }
-    // Members graded before from the same files keep their grade.
-    let course = resume::tree_hash(official)?;
-    let mut to_grade = Vec::new();
-    let mut fingerprints = Vec::new();
-    for submission in &submissions {
-        let fingerprint = resume::fingerprint(course, submission)?;
-        if !resume::is_current(&out_for(submission).1.out, &fingerprint) {
-            to_grade.push(submission.clone());
-            fingerprints.push(fingerprint);
-        }
-    }
-    if to_grade.len() < submissions.len() {
-        println!(
-            "{} of {} member(s) were graded before from the same files: kept (their report folders in {})",
-            submissions.len() - to_grade.len(),
-            submissions.len(),
-            options.out.display()
-        );
-    }
-    fs::create_dir_all(&options.out)
-        .with_context(|| format!("cannot create {}", options.out.display()))?;
-    let graded = grade_class(official, &to_grade, options, out_for)?;
-    for ((name, out, result), fingerprint) in graded.into_iter().zip(&fingerprints) {
-        match result {
-            Ok(report) => {
-                GradebookRow::new(name, &report).save(&out)?;
-                resume::save(&out, fingerprint)?;
-            }
-            Err(error) => gradebook::save_not_graded(&out, &format!("{error:#}"))?,
-        }
-    }
-    let class = write_class(&options.out)?;
-    report_class(&class, &options.out)
-}
-
-/// After a member's report changed (a review's verdicts): its row in the
-/// gradebook of its class, where its report folder `member_out` is in a
-/// class's folder. Whether there was a class to update.
-#[cfg(feature = "staff")]
-pub fn update_class_row(member_out: &Path, report: &Report) -> Result<bool> {
-    let Some(class_out) = member_out.parent() else {
-        return Ok(false);
-    };
-    if !class_out.join("gradebook.json").is_file()
-        || !member_out.join(gradebook::ROW_FILE).is_file()
-    {
-        return Ok(false);
-    }
-    GradebookRow::new(member_name(member_out), report).save(member_out)?;
-    write_class(class_out)?;
-    Ok(true)
-}
-
-/// `cargo xtask gradebook merge PARTS... --out DIR`.
-#[cfg(feature = "staff")]
-pub fn merge(parts: &[PathBuf], out: &Path) -> Result<()> {
-    gradebook::merge(parts, out)?;
-    let class = write_class(out)?;
-    report_class(&class, out)
-}
-
-/// Writes the gradebook of the class whose members' folders are in `out`
-/// and the class's report (`class.html`, `class.json`, see
-/// `grade::class_report`), each member's report read from its folder.
-fn write_class(out: &Path) -> Result<Class> {
-    let class = Class::read(out)?;
-    class.write(out)?;
-    let mut graded = Vec::new();
-    for row in &class.rows {
-        let folder = out.join(&row.submission);
-        let path = folder.join("report.json");
-        let report = fs::read_to_string(&path)
-            .with_context(|| format!("cannot read {}", path.display()))
-            .and_then(|text| {
-                serde_json::from_str::<Report>(&text)
-                    .with_context(|| format!("cannot read {}", path.display()))
-            });
-        graded.push((row.submission.clone(), folder, report));
-    }
-    for (name, why) in &class.not_graded {
-        graded.push((name.clone(), out.join(name), Err(anyhow::anyhow!("{why}"))));
-    }
-    super::class_report::write(out, &graded, &class.rows)?;
-    Ok(class)
-}
-
-/// Prints where the gradebook of `class` is, who is flagged, and fails
-/// when a member could not be graded.
-fn report_class(class: &Class, out: &Path) -> Result<()> {
-    println!();
-    println!(
-        "gradebook of {} submission(s): {} (also gradebook.json)",
-        class.rows.len(),
-        out.join("gradebook.csv").display()
-    );
-    let flagged: Vec<&str> = class
-        .rows
-        .iter()
-        .filter(|r| r.flagged)
-        .map(|r| r.submission.as_str())
-        .collect();
-    if !flagged.is_empty() {
-        println!(
-            "flagged (grading files changed): {}",
-            table::shown(&flagged.join(", "))
-        );
-    }
-    if !class.not_graded.is_empty() {
-        let lines: Vec<String> = class
-            .not_graded
-            .iter()
-            .map(|(name, why)| format!("{}: {}", table::shown(name), table::continued(why, "  ")))
+    if !is_checkout(&dir) {
+        let members: Vec<PathBuf> = fs::read_dir(&dir)
+            .with_context(|| format!("cannot read {}", dir.display()))?
+            .filter_map(|entry| entry.ok().map(|e| e.path()))
+            .filter(|path| is_checkout(path))
             .collect();
+        let Some(member) = members.iter().min() else {
+            bail!(
+                "{} is neither a course checkout (with exercises/ and Cargo.toml) nor a folder of them",
+                dir.display()
+            );
+        };
         bail!(
-            "{} submission(s) could not be graded and are not in the gradebook:\n{}",
-            lines.len(),
-            lines.join("\n")
+            "{} is a folder of {} course checkouts (a class): grading a class is done with the course repository's tools, not a student edition's; here, grade one checkout at a time (e.g. --submission {})",
+            dir.display(),
+            members.len(),
+            member.display()
         );
     }
-    Ok(())
+    let mut one = options.clone();
+    one.out = options.out.join(member_name(&dir));
+    let report = grade_one(official, &dir, &one)?;
+    print!("{}", table_of(&report, &one.out));
+    Ok(report)
 }
 
 /// A member's name: its checkout's folder name.
-fn member_name(submission: &Path) -> String {
+pub(crate) fn member_name(submission: &Path) -> String {
     submission.file_name().map_or_else(
         || "submission".to_owned(),
         |n| n.to_string_lossy().into_owned(),

@@ -187,7 +187,7 @@ fn class_of_two(root: &Path, topic: &str) -> Result<String> {
     let mut options = crate::grade::GradeOptions::new(root.to_path_buf());
     options.out = out.clone();
     options.topics = vec![topic.to_owned()];
-    crate::grade::submission::run(root, &dir, &options, None)?;
+    crate::staff::class::run(root, &dir, &options, None, None)?;
     let report = |name: &str| -> Result<serde_json::Value> {
         let path = out.join(name).join("report.json");
         serde_json::from_str(

@@ -25,8 +25,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use serde::Serialize;
 
-use super::report::{self, Report, TaskReport, TaskStatus, TestStatus};
-use super::submission::GradebookRow;
+use super::gradebook::GradebookRow;
+use crate::grade::report::{self, Report, TaskReport, TaskStatus, TestStatus};
 
 mod page;
 #[cfg(test)]

@@ -12,16 +12,12 @@ use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-#[cfg(feature = "staff")]
-use anyhow::bail;
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use serde::{Deserialize, Serialize};
 
-use super::Integrity;
-use super::report::{self, Report};
-use crate::files::{MAX_SUBMITTED_FILE, read_capped};
-#[cfg(feature = "staff")]
-use crate::files::{files_under, remove_tree};
+use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped, remove_tree};
+use crate::grade::report::{self, Report};
+use crate::grade::submission::Integrity;
 
 /// A member's row, in its report folder.
 pub const ROW_FILE: &str = "gradebook-row.json";
@@ -30,28 +26,28 @@ pub const NOT_GRADED_FILE: &str = "not-graded.txt";
 
 /// One row of the gradebook.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub(crate) struct GradebookRow {
-    pub(crate) submission: String,
+pub(super) struct GradebookRow {
+    pub(super) submission: String,
     /// Points of the tasks that are not bonuses.
-    pub(crate) score: f64,
-    pub(crate) max_score: f64,
+    pub(super) score: f64,
+    pub(super) max_score: f64,
     /// Bonus points, apart.
-    pub(crate) bonus: f64,
-    pub(crate) complete: bool,
-    pub(crate) flagged: bool,
-    pub(crate) integrity: Option<String>,
+    pub(super) bonus: f64,
+    pub(super) complete: bool,
+    pub(super) flagged: bool,
+    pub(super) integrity: Option<String>,
     /// Per topic, its points (bonus apart).
-    pub(crate) topics: Vec<(String, f64)>,
+    pub(super) topics: Vec<(String, f64)>,
     /// Per task (`topic/task`), its points.
-    pub(crate) tasks: Vec<(String, f64)>,
+    pub(super) tasks: Vec<(String, f64)>,
     /// The topics that could not be graded, each with why.
-    pub(crate) not_graded: Vec<String>,
+    pub(super) not_graded: Vec<String>,
     /// The member's report, relative to the class's folder.
-    pub(crate) report: String,
+    pub(super) report: String,
 }
 
 impl GradebookRow {
-    pub(crate) fn new(submission: String, report: &Report) -> Self {
+    pub(super) fn new(submission: String, report: &Report) -> Self {
         let integrity = report.integrity.as_ref();
         Self {
             score: report::round2(report.topics.iter().map(|t| t.base_score()).sum()),
@@ -187,7 +183,6 @@ fn member_folders(out: &Path) -> Result<Vec<PathBuf>> {
 /// `cargo xtask gradebook merge PARTS... --out DIR`: the members' folders
 /// of the parts (the `--out` folders of a class graded in shards) copied
 /// into `out`, and the class's gradebook made from them.
-#[cfg(feature = "staff")]
 pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
     fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let mut seen: Vec<(String, PathBuf)> = Vec::new();
@@ -239,7 +234,6 @@ pub(super) fn merge(parts: &[PathBuf], out: &Path) -> Result<Class> {
 /// than `files::MAX_DEPTH`: a grade keeps its report within that, see
 /// `files::Keeper`), the member's row last, so that a copy cut short
 /// holds no row.
-#[cfg(feature = "staff")]
 fn copy_tree(from: &Path, to: &Path) -> Result<()> {
     fs::create_dir_all(to).with_context(|| format!("cannot create {}", to.display()))?;
     let mut files = files_under(from)?;
@@ -361,7 +355,6 @@ mod tests {
     /// member whose row is torn, and a link posing as a member: the merge
     /// copies the honest member, names the other two as not graded with
     /// why, copies nothing through the link, and is written.
-    #[cfg(feature = "staff")]
     #[test]
     fn a_merge_goes_on_past_a_member_it_cannot_copy() {
         use crate::files::tests::{chain, scratch};

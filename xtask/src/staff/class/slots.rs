@@ -1,5 +1,6 @@
 //! Grading a class: its submissions side by side in class slots, all
-//! built into one build cache.
+//! built into one build cache, each graded by the grader
+//! (`grade::submission::grade_in_slot`) in its slot.
 
 use std::fs;
 use std::panic::AssertUnwindSafe;
@@ -11,22 +12,24 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::report::Report;
-use super::{GradeOptions, Permits, Slot, grade_one, one_line, submissions_build, table};
+use super::one_line;
+use crate::grade::submission::{Slot, grade_in_slot, submissions_build};
+use crate::grade::{GradeOptions, Permits, Report, table};
 use crate::stage;
 
 /// A graded member of a class: its name, its report folder and its report
 /// (or why it could not be graded).
 type Graded = (String, PathBuf, Result<Report>);
 
-/// Grades the `submissions` of a class, up to `options.jobs` side by side
-/// in class slots (one at a time without a sandbox), printing one line for
-/// each as it is done (the details are in its report); (name, report folder, report) of each, in the
-/// order given.
+/// Grades the `submissions` of a class, up to `at_once` side by side
+/// (default: one per two CPUs) in class slots (one at a time without a
+/// sandbox), printing one line for each as it is done (the details are in
+/// its report); (name, report folder, report) of each, in the order given.
 pub(super) fn grade_class(
     official: &Path,
     submissions: &[PathBuf],
     options: &GradeOptions,
+    at_once: Option<usize>,
     out_for: impl Fn(&Path) -> (String, GradeOptions) + Sync,
 ) -> Result<Vec<Graded>> {
     if submissions.is_empty() {
@@ -36,9 +39,7 @@ pub(super) fn grade_class(
     // Side by side, a submission's tests run while another builds. A grade
     // keeps two CPUs busy on its own (cargo's build, `--jobs` tests): on a
     // machine with two, one at a time was the faster (`BENCHMARKS.md`).
-    let wanted = options
-        .submissions_at_once
-        .unwrap_or_else(|| (crate::grade::default_jobs() / 2).max(1));
+    let wanted = at_once.unwrap_or_else(|| (crate::grade::default_jobs() / 2).max(1));
     let slots = if sandboxed {
         wanted.clamp(1, submissions.len())
     } else {
@@ -50,9 +51,7 @@ pub(super) fn grade_class(
         .target_dir
         .clone()
         .unwrap_or_else(|| submissions_build(official));
-    // Every slot's folder exists before the first test runs, so that each
-    // slot's sandbox hides all the others (`stage::hidden_beside` hides
-    // what it finds).
+    // Every slot's folder exists before the first test runs.
     for index in 0..slots {
         let home = stage::class_home(official, index);
         fs::create_dir_all(&home).with_context(|| format!("cannot create {}", home.display()))?;
@@ -113,7 +112,7 @@ pub(super) fn grade_class(
                     // meets, a panic of the grader's own included, is its
                     // result, and the slot goes on with the next member.
                     let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                        grade_one(official, submission, &one, Some(&slot))
+                        grade_in_slot(official, submission, &one, &slot)
                     }))
                     .unwrap_or_else(|panic| {
                         Err(anyhow!(
