@@ -1,9 +1,11 @@
 //! The staff's tools, in the course repository only (no edition holds
-//! this folder): a generated class, review of a grade's snapshots,
-//! similarity, the gradebook's merge, the Classroom workflow and the
-//! Gradescope bundle, releasing an edition, writing the stubs, the
-//! self-test, the benchmarks. They build on the grader (`crate::grade`,
-//! `crate::stage`, `crate::edition`), which imports nothing from here.
+//! this folder): grading a class (`grade --submission CLASS`: its slots,
+//! gradebook, report, shards and their merge) and a generated class to try
+//! it on, review of a grade's snapshots, similarity, the Classroom
+//! workflow and the Gradescope bundle, releasing an edition, writing the
+//! stubs, the self-test, the benchmarks. They build on the grader
+//! (`crate::grade`, `crate::stage`, `crate::edition`), which imports
+//! nothing from here.
 
 mod bench;
 pub mod class;
