@@ -35,6 +35,7 @@ mod do_nothing;
 mod generate;
 pub mod quiet;
 pub mod stand_ins;
+mod syntax;
 
 pub use do_nothing::do_nothing;
 use generate::marker;

@@ -104,7 +104,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
 /// stand-ins could not be planted (a pattern such as `_` drops a value).
 pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)> {
     use crate::staff::stubs::stand_ins::{
-        Function, Method, methods, plant, plant_method, public_functions, stub_task,
+        Function, Method, methods, plant, plant_method, public_functions,
     };
     let read = |path: &Path| {
         fs::read_to_string(root.join(path))
@@ -176,7 +176,7 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
         for file in task_files.iter().filter(|f| f.starts_with(&crate_dir)) {
             let stub = read(file)?;
             for task_fn in public_functions(&stub) {
-                let Some(task) = stub_task(&stub, &task_fn) else {
+                let Some(task) = task_fn.task.clone() else {
                     continue;
                 };
                 for ((dir, given_file, package), text, function) in &given {
@@ -220,7 +220,7 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
             // task's, its parameters bound to the task's arguments and the
             // names of its module in scope.
             for task_method in methods(&stub) {
-                let Some(task) = stub_task(&stub, &task_method.function) else {
+                let Some(task) = task_method.function.task.clone() else {
                     continue;
                 };
                 for ((dir, given_file, package), text, method) in &given_methods {
