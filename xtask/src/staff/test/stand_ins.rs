@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 
 use crate::stage;
-use crate::{stubs, topics};
+use crate::topics;
 
 use super::{grade_planted, rounds};
 
@@ -292,8 +292,7 @@ pub(super) fn public_chain(root: &Path, crate_dir: &Path, module: &[String]) -> 
     let mut folder = src.clone();
     for name in module {
         let text = fs::read_to_string(&parent).unwrap_or_default();
-        let masked = stubs::quiet::mask(&text);
-        if !masked.contains(&format!("pub mod {name};")) {
+        if !declares_public_module(&text, name) {
             return false;
         }
         folder = folder.join(name);
@@ -304,4 +303,31 @@ pub(super) fn public_chain(root: &Path, crate_dir: &Path, module: &[String]) -> 
         };
     }
     true
+}
+
+/// Whether the Rust file `text` declares `pub mod name;` among its items
+/// (read from its syntax tree: not in a comment, not in a nested module).
+fn declares_public_module(text: &str, name: &str) -> bool {
+    syn::parse_str::<syn::File>(text).is_ok_and(|file| {
+        file.items.iter().any(|item| {
+            matches!(item, syn::Item::Mod(module)
+                if module.ident == name
+                    && module.content.is_none()
+                    && matches!(module.vis, syn::Visibility::Public(_)))
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_public_module_is_declared_by_an_item_not_a_comment() {
+        let text = "// pub mod commented;\n/* pub mod hidden; */\nmod private;\nmod outer {\n    pub mod inner;\n}\npub mod dda;\n";
+        assert!(declares_public_module(text, "dda"));
+        for name in ["commented", "hidden", "private", "inner"] {
+            assert!(!declares_public_module(text, name), "{name}");
+        }
+    }
 }
