@@ -34,18 +34,29 @@ fn cheapest(output: &ReturnType) -> Option<&'static str> {
         Type::ImplTrait(bounds) => bounds
             .bounds
             .iter()
-            .any(|bound| {
-                matches!(bound, TypeParamBound::Trait(t)
-                    if t.path.segments.last().is_some_and(|s| s.ident.to_string().contains("Iterator")))
-            })
+            .any(is_iterator)
             .then_some("std::iter::empty()"),
         _ => Some("Default::default()"),
     }
 }
 
+/// Whether a bound of an `impl Trait` is an iterator's (`Iterator`,
+/// `DoubleEndedIterator`, `IntoIterator`, …), which an empty one meets.
+fn is_iterator(bound: &TypeParamBound) -> bool {
+    let TypeParamBound::Trait(bound) = bound else {
+        return false;
+    };
+    bound
+        .path
+        .segments
+        .last()
+        .is_some_and(|segment| segment.ident.to_string().contains("Iterator"))
+}
+
 /// Whether `path` names the standard `Result` with its arguments:
-/// `Result<T, E>` or `std::result::Result<T, E>` (an alias such as
-/// `fmt::Result` may fix its error to a type without `Default`).
+/// `Result<T, E>` or `std::result::Result<T, E>`. An alias such as
+/// `io::Result<T>` is not recognised: its body is `Default::default()`,
+/// which does not compile, and the caller keeps the `todo!()`.
 fn is_result(path: &syn::Path) -> bool {
     let names: Vec<String> = path.segments.iter().map(|s| s.ident.to_string()).collect();
     let generic = path
