@@ -33,3 +33,10 @@ pub const RASTER_DIFF_END: &str = "--- end raster diff ---";
 /// and the grader hands it to proptest (`PROPTEST_RNG_SEED`) where a
 /// test's configuration forgot it, so that a grade repeats.
 pub const SEED: u64 = 0x0C0D_E5EE_D000_0001;
+
+/// What the viewer's `--screenshot PICTURE` writes beside the picture, at
+/// `PICTURE` with this extension: the stages it drew with, a JSON array
+/// of `{"name", "status", "source"}` objects in the pipeline's order, for
+/// the grader's report (which reads it instead of the viewer's printed
+/// lines).
+pub const STAGES_EXTENSION: &str = "stages.json";

@@ -353,6 +353,8 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     };
     let ended = Jail::get().run(&job);
     let picture = crate::files::read_plain(&scratch, Path::new(scene.file));
+    let stages_file = Path::new(scene.file).with_extension(wire::STAGES_EXTENSION);
+    let stages = crate::files::read_plain(&scratch, &stages_file);
     let _ = crate::files::remove_tree(&scratch);
     let ended = match ended {
         Ok(ended) => ended,
@@ -368,14 +370,9 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
         ));
         return result;
     }
-    let stdout = tail(&stdout);
-    // The viewer's report, one line a stage: `name  status  (source)`;
-    // anything the stages printed themselves is left out.
-    result.stages = stdout
-        .lines()
-        .filter(|line| is_stage_line(line))
-        .map(str::to_owned)
-        .collect();
+    // The viewer's list of the stages it drew with, one line a stage in
+    // the report; what the stages printed themselves is not read.
+    result.stages = stages.as_deref().map(stage_lines).unwrap_or_default();
     let copied = match picture {
         Some(bytes) if ended.success() => fs::write(dir.join(scene.file), bytes).is_ok(),
         _ => false,
@@ -405,11 +402,21 @@ fn draw(plan: &Plan<'_>, binary: &Path, dir: &Path, scene: &Scene) -> PipelinePi
     result
 }
 
-/// Whether `line` is one of the viewer's stage lines (`--screenshot`
-/// prints one per stage: its name, how it fared, and where its code is,
-/// `(04-clipping · …)`).
-fn is_stage_line(line: &str) -> bool {
-    line.ends_with(')') && line.contains("  (") && line.contains(" · ")
+/// One line a stage, `name  status  (source)`, from the JSON the viewer
+/// wrote beside its picture (see [`wire::STAGES_EXTENSION`]); nothing from
+/// JSON that is not a list of such stages.
+fn stage_lines(json: &[u8]) -> Vec<String> {
+    #[derive(serde::Deserialize)]
+    struct Stage {
+        name: String,
+        status: String,
+        source: String,
+    }
+    serde_json::from_slice::<Vec<Stage>>(json)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|s| format!("{:<10} {}  ({})", s.name, s.status, s.source))
+        .collect()
 }
 
 /// How much of the viewer's output is read back, per stream: its end,
@@ -446,11 +453,20 @@ mod tests {
     }
 
     #[test]
-    fn only_the_viewers_own_lines_are_stage_lines() {
-        assert!(is_stage_line("lines      ok  (01-lines · dda::dda_line)"));
-        assert!(
-            !is_stage_line("(x, y) = (1, 2)"),
-            "a student's print is not a stage line"
+    fn the_stages_are_read_from_the_viewers_json() {
+        let json = r#"[{"name": "lines", "status": "ok", "source": "01-lines · dda::dda_line"},
+                       {"name": "clip", "status": "not written yet: clip", "source": "04-clipping · clip"}]"#;
+        assert_eq!(
+            stage_lines(json.as_bytes()),
+            [
+                "lines      ok  (01-lines · dda::dda_line)",
+                "clip       not written yet: clip  (04-clipping · clip)"
+            ]
         );
+        assert!(
+            stage_lines("lines      ok  (01-lines · dda)".as_bytes()).is_empty(),
+            "a printed line is no stage"
+        );
+        assert!(stage_lines(br#"{"name": "lines"}"#).is_empty());
     }
 }

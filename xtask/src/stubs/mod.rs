@@ -1,8 +1,8 @@
 //! The student files' stubs, as the grader reads them: the markers of a
-//! solution region, which file holds a task's stub, the do-nothing body
-//! of a task (the self-test's "a do-nothing edition scores 0") and the
-//! masking of comments and strings they share. Writing the stubs is the
-//! staff's (`cargo xtask stubs`, `crate::staff::stubs`).
+//! solution region, which file holds a task's stub, and the masking of
+//! comments and strings the grader's checks share. Writing the stubs, and
+//! the do-nothing edition of the self-test, is the staff's (`cargo xtask
+//! stubs`, `crate::staff::stubs`, which reads Rust as syn's syntax trees).
 //!
 //! Every `reference/NN-topic/src/X.rs` is copied to `exercises/NN-topic/src/X.rs`
 //! with each marked solution replaced by a `todo!`:

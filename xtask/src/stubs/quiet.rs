@@ -1,8 +1,8 @@
 //! The course's Rust source with comments and the contents of string and
 //! character literals blanked out ([`mask`]), and the few lexical helpers
 //! built on it: what the grader's checks of a task file (`todo!` stubs,
-//! forbidden constructs, snapshot names) and the staff's stub writer
-//! read Rust by.
+//! forbidden constructs, snapshot names) read Rust by. (The staff's stub
+//! tools read it as syntax trees: `crate::staff::stubs::syntax`.)
 
 use proc_macro2::{TokenStream, TokenTree};
 

@@ -231,23 +231,45 @@ fn screenshot(mesh: &MeshEntry, settings: Settings, limit: Duration, path: &Path
             limit.as_secs_f64()
         );
     };
-    for stage in &frame.stages {
-        println!(
-            "{:<10} {}  ({})",
-            stage.name,
-            stage.status.describe(),
-            stage.source
-        );
-    }
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    }
+    let stages: Vec<[String; 3]> = frame
+        .stages
+        .iter()
+        .map(|stage| {
+            [
+                stage.name.to_string(),
+                stage.status.describe(),
+                stage.source.to_string(),
+            ]
+        })
+        .collect();
+    write_stages(&stages, path)?;
     frame
         .canvas
         .save_png(path)
         .with_context(|| format!("cannot write {}", path.display()))?;
     println!("wrote {}", path.display());
     Ok(())
+}
+
+/// Prints the `stages` a picture was drawn with, one line each (name,
+/// how it fared, where its code is), and writes them as JSON beside the
+/// picture at `path` (see [`wire::STAGES_EXTENSION`]), making its folder.
+fn write_stages(stages: &[[String; 3]], path: &Path) -> Result<()> {
+    for [name, status, source] in stages {
+        println!("{name:<10} {status}  ({source})");
+    }
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    let json: Vec<serde_json::Value> = stages
+        .iter()
+        .map(|[name, status, source]| {
+            serde_json::json!({ "name": name, "status": status, "source": source })
+        })
+        .collect();
+    let beside = path.with_extension(wire::STAGES_EXTENSION);
+    std::fs::write(&beside, serde_json::to_string_pretty(&json)?)
+        .with_context(|| format!("cannot write {}", beside.display()))
 }
 
 /// Draws the NURBS chain of `surface` with your stages and writes it to
@@ -268,18 +290,21 @@ fn chain_screenshot(
         );
     };
     let named = Stages::default();
-    println!(
-        "{:<10} {}  ({})",
-        named.decompose.name,
-        drawing.decomposition.describe(),
-        named.decompose.source
-    );
-    println!(
-        "{:<10} {}  ({})",
-        named.tessellate.name,
-        drawing.status.describe(),
-        drawing.setup.method.source()
-    );
+    write_stages(
+        &[
+            [
+                named.decompose.name.to_string(),
+                drawing.decomposition.describe(),
+                named.decompose.source.to_string(),
+            ],
+            [
+                named.tessellate.name.to_string(),
+                drawing.status.describe(),
+                drawing.setup.method.source().to_string(),
+            ],
+        ],
+        path,
+    )?;
     // A chain that stopped at a stage draws nothing, as the mesh pipeline
     // does: the empty picture, with the stage named above.
     let canvas = drawing.result.map_or_else(
@@ -290,9 +315,6 @@ fn chain_screenshot(
         },
         |result| result.canvas,
     );
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    }
     canvas
         .save_png(path)
         .with_context(|| format!("cannot write {}", path.display()))?;

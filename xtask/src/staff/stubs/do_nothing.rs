@@ -9,118 +9,135 @@
 //! `Ok(Default::default())` for a `Result`, an empty iterator for `impl
 //! Iterator`. Where that does not compile (a type without `Default`), the
 //! caller names the line in `keep` and the `todo!()` stays.
+//!
+//! The stub is read as a syntax tree (see [`super::syntax`]): a `todo!()`
+//! is replaced where it is the tail of a function's body, the last
+//! statement with no `;` after it, and only there; a `todo!(` in a string
+//! or a comment is no call.
 
-use super::quiet::{closing, identifier};
-use crate::stubs::quiet::mask;
+use syn::visit::{self, Visit};
+use syn::{Block, Expr, Macro, ReturnType, Signature, Stmt, Type, TypeParamBound};
 
-/// The cheapest tail expression of a function whose return type is `ret`
-/// (the text after `->`, empty for none); `None` where none surely exists.
-fn cheapest(ret: &str) -> Option<&'static str> {
-    let ret = ret.trim();
-    if ret.is_empty() || ret == "()" {
-        Some("")
-    } else if ret.starts_with("Result<") || ret.starts_with("std::result::Result<") {
-        Some("Ok(Default::default())")
-    } else if let Some(bound) = ret.strip_prefix("impl ") {
-        bound.contains("Iterator").then_some("std::iter::empty()")
-    } else if ret == "!" {
-        None
-    } else {
-        Some("Default::default()")
+use super::syntax::{Source, range};
+
+/// The cheapest tail expression of a function whose return type is
+/// `output`; `None` where none surely exists (`!`, an `impl Trait` other
+/// than an iterator).
+fn cheapest(output: &ReturnType) -> Option<&'static str> {
+    let ReturnType::Type(_, ty) = output else {
+        return Some("");
+    };
+    match &**ty {
+        Type::Tuple(unit) if unit.elems.is_empty() => Some(""),
+        Type::Never(_) => None,
+        Type::Path(path) if is_result(&path.path) => Some("Ok(Default::default())"),
+        Type::ImplTrait(bounds) => bounds
+            .bounds
+            .iter()
+            .any(is_iterator)
+            .then_some("std::iter::empty()"),
+        _ => Some("Default::default()"),
     }
 }
 
-/// A function's return type and body, as byte ranges of the source.
-struct Function {
-    ret: std::ops::Range<usize>,
-    body_close: usize,
+/// Whether a bound of an `impl Trait` is an iterator's (`Iterator`,
+/// `DoubleEndedIterator`, `IntoIterator`, …), which an empty one meets.
+fn is_iterator(bound: &TypeParamBound) -> bool {
+    let TypeParamBound::Trait(bound) = bound else {
+        return false;
+    };
+    bound
+        .path
+        .segments
+        .last()
+        .is_some_and(|segment| segment.ident.to_string().contains("Iterator"))
 }
 
-/// The innermost function whose body holds byte `at` of `masked`.
-fn enclosing_fn(masked: &str, at: usize) -> Option<Function> {
-    let mut found = None;
-    let mut from = 0;
-    while let Some(offset) = masked[from..at].find("fn") {
-        let start = from + offset;
-        from = start + 2;
-        if masked[..start].ends_with(|c: char| c.is_alphanumeric() || c == '_')
-            || masked[start + 2..].starts_with(|c: char| c.is_alphanumeric() || c == '_')
-        {
-            continue;
-        }
-        let after = masked[start + 2..].trim_start();
-        let Some(name) = identifier(after) else {
-            continue; // `fn(..)`, a function pointer type
-        };
-        let mut cursor = masked.len() - after.len() + name.len();
-        if masked[cursor..].starts_with('<') {
-            let Some(end) = closing(masked, cursor, true) else {
-                continue;
-            };
-            cursor = end + 1;
-        }
-        let Some(open) = masked[cursor..].find('(').map(|n| cursor + n) else {
-            continue;
-        };
-        let Some(close) = closing(masked, open, false) else {
-            continue;
-        };
-        let Some(body_open) = masked[close..].find(['{', ';']).map(|n| close + n) else {
-            continue;
-        };
-        if masked.as_bytes()[body_open] != b'{' {
-            continue; // a declaration without a body
-        }
-        let Some(body_close) = closing(masked, body_open, false) else {
-            continue;
-        };
-        if body_open < at && at < body_close {
-            let signature_end = masked[close + 1..body_open]
-                .find(" where")
-                .map_or(body_open, |n| close + 1 + n);
-            let arrow = masked[close + 1..signature_end]
-                .find("->")
-                .map_or(signature_end, |n| close + 1 + n + 2);
-            found = Some(Function {
-                ret: arrow..signature_end,
-                body_close,
-            });
+/// Whether `path` names the standard `Result` with its arguments:
+/// `Result<T, E>` or `std::result::Result<T, E>`. An alias such as
+/// `io::Result<T>` is not recognised: its body is `Default::default()`,
+/// which does not compile, and the caller keeps the `todo!()`.
+fn is_result(path: &syn::Path) -> bool {
+    let names: Vec<String> = path.segments.iter().map(|s| s.ident.to_string()).collect();
+    let generic = path
+        .segments
+        .last()
+        .is_some_and(|s| matches!(s.arguments, syn::PathArguments::AngleBracketed(_)));
+    generic && (names == ["Result"] || names == ["std", "result", "Result"])
+}
+
+/// The `todo!(…)` that is the tail of a body: its last statement, a
+/// `todo` macro with no `;` after it.
+fn tail_todo(block: &Block) -> Option<&Macro> {
+    let call = match block.stmts.last()? {
+        Stmt::Macro(statement) if statement.semi_token.is_none() => &statement.mac,
+        Stmt::Expr(Expr::Macro(expression), None) => &expression.mac,
+        _ => return None,
+    };
+    call.path.is_ident("todo").then_some(call)
+}
+
+/// The `todo!` calls that are a function's whole result, with the
+/// function's return type: every function with a body, at any depth
+/// (methods, trait defaults and functions nested in bodies too).
+struct Tails<'ast> {
+    found: Vec<(&'ast Macro, &'ast ReturnType)>,
+}
+
+impl<'ast> Tails<'ast> {
+    fn function(&mut self, signature: &'ast Signature, body: &'ast Block) {
+        if let Some(call) = tail_todo(body) {
+            self.found.push((call, &signature.output));
         }
     }
-    found
+}
+
+impl<'ast> Visit<'ast> for Tails<'ast> {
+    fn visit_item_fn(&mut self, function: &'ast syn::ItemFn) {
+        self.function(&function.sig, &function.block);
+        visit::visit_item_fn(self, function);
+    }
+
+    fn visit_impl_item_fn(&mut self, function: &'ast syn::ImplItemFn) {
+        self.function(&function.sig, &function.block);
+        visit::visit_impl_item_fn(self, function);
+    }
+
+    fn visit_trait_item_fn(&mut self, function: &'ast syn::TraitItemFn) {
+        if let Some(body) = &function.default {
+            self.function(&function.sig, body);
+        }
+        visit::visit_trait_item_fn(self, function);
+    }
 }
 
 /// `stub` with each `todo!(…)` that is its function's whole result
 /// replaced by the [`cheapest`] body, except those on the lines (1-based)
 /// in `keep`. Line numbers stay those of the stub. Also returns the lines
-/// replaced.
+/// replaced. A stub that is not Rust is returned as it is.
 pub fn do_nothing(stub: &str, keep: &[usize]) -> (String, Vec<usize>) {
-    let masked = mask(stub);
+    let Some(source) = Source::parse(stub) else {
+        return (stub.to_owned(), Vec::new());
+    };
+    let mut tails = Tails { found: Vec::new() };
+    tails.visit_file(&source.file);
     let mut edits = Vec::new();
-    let mut search = 0;
-    while let Some(found) = masked[search..].find("todo!(") {
-        let start = search + found;
-        search = start + 1;
-        let line = masked[..start].matches('\n').count() + 1;
-        let Some(close) = closing(&masked, start + "todo!".len(), false) else {
-            continue;
-        };
-        let Some(function) = enclosing_fn(&masked, start) else {
-            continue;
-        };
-        let is_result = masked[close + 1..function.body_close].trim().is_empty();
-        let body = cheapest(&masked[function.ret.clone()]);
-        if let (true, Some(body), false) = (is_result, body, keep.contains(&line)) {
-            edits.push((start, close + 1, body, line));
+    for (call, output) in tails.found {
+        // From `todo` to the closing delimiter.
+        let span = range(&call.path).start..call.delimiter.span().close().byte_range().end;
+        let line = source.line_of(span.start) + 1;
+        if let (Some(body), false) = (cheapest(output), keep.contains(&line)) {
+            edits.push((span, body, line));
         }
     }
+    edits.sort_by_key(|(span, _, _)| span.start);
     let mut out = stub.to_owned();
-    for &(start, end, body, _) in edits.iter().rev() {
+    for (span, body, _) in edits.iter().rev() {
         // The call's line breaks stay, so that every line keeps its number.
-        let breaks = stub[start..end].matches('\n').count();
-        out.replace_range(start..end, &format!("{body}{}", "\n".repeat(breaks)));
+        let breaks = stub[span.clone()].matches('\n').count();
+        out.replace_range(span.clone(), &format!("{body}{}", "\n".repeat(breaks)));
     }
-    (out, edits.iter().map(|e| e.3).collect())
+    (out, edits.iter().map(|edit| edit.2).collect())
 }
 
 #[cfg(test)]
@@ -190,5 +207,66 @@ fn c() -> ! {
         let (out, lines) = do_nothing(stub, &[2]);
         assert!(lines.is_empty(), "{lines:?}");
         assert_eq!(out, stub);
+    }
+
+    #[test]
+    fn array_returns_and_where_clauses_with_double_angles_are_bodies() {
+        // The `;` of an array type is no end of a declaration, and the
+        // `>>` of nested generics closes two of them.
+        let stub = "\
+pub fn table() -> [f32; 4] {
+    todo!(\"t: the table\")
+}
+
+pub fn edges<T>(xs: &[T]) -> Vec<[u32; 2]>
+where
+    T: Into<Vec<Vec<u32>>>,
+{
+    let _ = &xs;
+    todo!()
+}
+";
+        let (out, lines) = do_nothing(stub, &[]);
+        assert_eq!(lines, [2, 10], "{out}");
+        assert!(
+            out.contains("[f32; 4] {\n    Default::default()\n}"),
+            "{out}"
+        );
+        assert!(out.contains("&xs;\n    Default::default()\n}"), "{out}");
+    }
+
+    #[test]
+    fn braces_and_calls_in_raw_strings_and_nested_comments_are_not_code() {
+        // A brace in a raw byte string and in a nested block comment
+        // closes nothing; a `todo!()` in a string, in a comment or
+        // followed by `;` is no body's result.
+        let stub = "\
+fn a() -> u8 {
+    let _s = br#\"{\"#;
+    todo!()
+}
+
+fn b() -> u8 {
+    /* /* } */ } todo!() */
+    todo!()
+}
+
+fn c() -> &'static str {
+    \"todo!()\"
+}
+
+fn d() -> u8 {
+    todo!();
+}
+";
+        let (out, lines) = do_nothing(stub, &[]);
+        assert_eq!(lines, [3, 8], "{out}");
+        assert!(
+            out.contains("br#\"{\"#;\n    Default::default()\n}"),
+            "{out}"
+        );
+        assert!(out.contains("*/\n    Default::default()\n}"), "{out}");
+        assert!(out.contains("    \"todo!()\"\n"), "{out}");
+        assert!(out.contains("    todo!();\n"), "{out}");
     }
 }

@@ -15,7 +15,11 @@
 //! entirely: helpers and `use` lines only the solution needs. Everything
 //! else, doc comments and signatures included, is copied verbatim, and
 //! the stub is then kept free of the warnings its `todo!`s alone provoke
-//! (see [`crate::stubs::quiet`]).
+//! (see [`quiet`]).
+//!
+//! Markers are comments, found line by line; the Rust around them is read
+//! as a syntax tree (see [`syntax`]): by the quieting of a stub, the
+//! do-nothing edition, the stand-ins and the check of a crate root.
 //!
 //! `reference/` holds solutions only: a file there without a marker is an
 //! error. Given code (and `src/lib.rs`, hand-written) exists once, in
@@ -26,15 +30,18 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
+use syn::visit::{self, Visit};
 
 use crate::files::is_wgsl;
 use crate::stubs::BEGIN_MARKER;
 use crate::topics::{self, Topic};
+use syntax::Source;
 
 mod do_nothing;
 mod generate;
 pub mod quiet;
 pub mod stand_ins;
+mod syntax;
 
 pub use do_nothing::do_nothing;
 use generate::marker;
@@ -63,6 +70,35 @@ fn source_files(dir: &Path) -> Result<Vec<PathBuf>> {
         .into_iter()
         .filter(|file| file.extension().is_some_and(|ext| ext == "rs") || is_wgsl(file))
         .collect())
+}
+
+/// The lines (1-based) of the attributes of a crate root that would make
+/// it a switch: `#[path]`, which takes a module from another file, and
+/// `cfg_attr`, which adds attributes on a condition. Attributes of the
+/// code, read from its syntax tree: a comment or a string that mentions
+/// them is none. `None` for text that is not Rust.
+fn switches(text: &str) -> Option<Vec<usize>> {
+    struct Switches<'a, 'b> {
+        source: &'b Source<'a>,
+        lines: Vec<usize>,
+    }
+    impl<'ast> Visit<'ast> for Switches<'_, '_> {
+        fn visit_attribute(&mut self, attribute: &'ast syn::Attribute) {
+            let path = attribute.path();
+            if path.is_ident("path") || path.is_ident("cfg_attr") {
+                let at = syntax::range(attribute).start;
+                self.lines.push(self.source.line_of(at) + 1);
+            }
+            visit::visit_attribute(self, attribute);
+        }
+    }
+    let source = Source::parse(text)?;
+    let mut switches = Switches {
+        source: &source,
+        lines: Vec::new(),
+    };
+    switches.visit_file(&source.file);
+    Some(switches.lines)
 }
 
 /// What happened to the stubs of one checkout.
@@ -139,14 +175,19 @@ fn sync_topic(
     // never by a switch in the crate root or a feature in its manifest.
     let crate_root = exercise_src.join(CRATE_ROOT);
     if let Ok(text) = fs::read_to_string(&crate_root) {
-        for (number, line) in text.lines().enumerate() {
-            if line.contains("#[path") || line.contains("cfg_attr(") {
-                outcome.errors.push(format!(
-                    "{}:{}: a crate root declares its modules plainly (`pub mod x;`), without `#[path]` or `cfg_attr`",
-                    relative(&crate_root),
-                    number + 1
-                ));
+        match switches(&text) {
+            Some(lines) => {
+                for number in lines {
+                    outcome.errors.push(format!(
+                        "{}:{number}: a crate root declares its modules plainly (`pub mod x;`), without `#[path]` or `cfg_attr`",
+                        relative(&crate_root),
+                    ));
+                }
             }
+            None => outcome.errors.push(format!(
+                "{}: a crate root is Rust, and this one cannot be read as Rust",
+                relative(&crate_root)
+            )),
         }
     }
     let manifest = topic.dir.join("Cargo.toml");
@@ -277,4 +318,28 @@ pub fn run(root: &Path, check: bool) -> Result<()> {
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_crate_root_switch_is_an_attribute_not_a_mention() {
+        // A comment, a doc comment and a string may name `#[path]` and
+        // `cfg_attr(`; only the attributes themselves are switches.
+        let text = "\
+//! Modules are declared plainly: no #[path = \"x\"], no cfg_attr(test, …).
+// #[path = \"elsewhere.rs\"]
+pub const NOTE: &str = \"#[path] and cfg_attr( are not used here\";
+pub mod dda;
+#[path = \"other.rs\"]
+pub mod wu;
+#[cfg_attr(test, path = \"mock.rs\")]
+pub mod mock;
+";
+        assert_eq!(switches(text), Some(vec![5, 7]));
+        assert_eq!(switches("pub mod dda;\n"), Some(vec![]));
+        assert_eq!(switches("pub mod {"), None);
+    }
 }

@@ -19,96 +19,26 @@
 //! - **private helpers** (`fn`, `const`) given for the task's code to call:
 //!   `#[allow(dead_code)]` on that item.
 //!
-//! Names are found in the source with comments and string literals
-//! blanked out, by word: a name is used when it appears outside its own
-//! declaration. This is a heuristic, not name resolution; the stubs of
-//! the course are checked by clippy with `-D warnings`, which is the
-//! judge.
+//! Names are found on the stub's syntax tree and tokens (see
+//! [`super::syntax`]): the function around a `todo!` is the innermost one
+//! whose body holds it, its bindings are those of its parameters'
+//! patterns and of the `let` statements before the `todo!` in its block,
+//! and a name counts as used where the identifier occurs among the tokens
+//! of the code, in a macro call's arguments too, but not in a comment or a
+//! string (a format string's inline `{name}` is not seen: the borrow it
+//! adds is harmless). This is not name resolution (a shadowing local
+//! counts as a use of the outer name); the stubs of the course are checked
+//! by clippy with `-D warnings`, which is the judge.
 
-use crate::stubs::quiet::mask;
+use std::ops::Range;
 
-/// The identifier at the start of `text`, if any.
-pub(crate) fn identifier(text: &str) -> Option<&str> {
-    let end = text
-        .find(|c: char| !(c.is_alphanumeric() || c == '_'))
-        .unwrap_or(text.len());
-    let ident = &text[..end];
-    ident
-        .starts_with(|c: char| c.is_alphabetic() || c == '_')
-        .then_some(ident)
-}
+use syn::visit::{self, Visit};
+use syn::{Block, FnArg, Item, Pat, Signature, Stmt, UseTree, Visibility};
 
-/// The offset of the bracket that closes the one at `open`, counting
-/// `()[]{}` (and `<>` when `angles`, where `->` is not a bracket).
-pub(crate) fn closing(text: &str, open: usize, angles: bool) -> Option<usize> {
-    let bytes = text.as_bytes();
-    let mut depth = 0i32;
-    for (i, &b) in bytes.iter().enumerate().skip(open) {
-        match b {
-            b'(' | b'[' | b'{' => depth += 1,
-            b'<' if angles => depth += 1,
-            b')' | b']' | b'}' => depth -= 1,
-            b'>' if angles && (i == 0 || bytes[i - 1] != b'-') => depth -= 1,
-            _ => {}
-        }
-        if depth == 0 {
-            return Some(i);
-        }
-    }
-    None
-}
+use super::syntax::{Source, inside, range};
 
 /// The comment above a borrow line.
 const BORROW_COMMENT: &str = "// Unused until you write the body:";
-
-/// Whether `word` occurs in `text` as a whole identifier.
-pub fn has_word(text: &str, word: &str) -> bool {
-    let is_ident = |c: char| c.is_alphanumeric() || c == '_';
-    text.match_indices(word).any(|(at, _)| {
-        let before = text[..at].chars().next_back();
-        let after = text[at + word.len()..].chars().next();
-        !before.is_some_and(is_ident) && !after.is_some_and(is_ident)
-    })
-}
-
-/// Splits at the commas that are not inside any bracket.
-pub(crate) fn split_top_level(text: &str) -> Vec<&str> {
-    let bytes = text.as_bytes();
-    let mut parts = Vec::new();
-    let mut depth = 0i32;
-    let mut start = 0;
-    for (i, &b) in bytes.iter().enumerate() {
-        match b {
-            b'(' | b'[' | b'{' | b'<' => depth += 1,
-            b')' | b']' | b'}' => depth -= 1,
-            b'>' if i == 0 || bytes[i - 1] != b'-' => depth -= 1,
-            b',' if depth == 0 => {
-                parts.push(&text[start..i]);
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    parts.push(&text[start..]);
-    parts
-}
-
-/// The bindings of a pattern: a plain identifier, or a tuple or array of
-/// them (`[u, v, w]`).
-fn pattern_bindings(pattern: &str) -> Vec<Binding> {
-    let pattern = pattern.trim();
-    let inner = pattern
-        .strip_prefix('[')
-        .and_then(|p| p.strip_suffix(']'))
-        .or_else(|| pattern.strip_prefix('(').and_then(|p| p.strip_suffix(')')));
-    match inner {
-        Some(inner) => split_top_level(inner)
-            .into_iter()
-            .flat_map(pattern_bindings)
-            .collect(),
-        None => simple_binding(pattern).into_iter().collect(),
-    }
-}
 
 /// A binding a stub no longer uses.
 struct Binding {
@@ -116,157 +46,165 @@ struct Binding {
     mutable: bool,
 }
 
-/// `mut name` or `name` (a plain identifier pattern), not `self` or `_x`.
-fn simple_binding(pattern: &str) -> Option<Binding> {
-    let pattern = pattern.trim();
-    let (mutable, name) = match pattern.strip_prefix("mut ") {
-        Some(rest) => (true, rest.trim()),
-        None => (false, pattern),
-    };
-    let ident = identifier(name)?;
-    (ident == name && ident != "self" && !ident.starts_with('_')).then(|| Binding {
-        name: ident.to_owned(),
-        mutable,
-    })
-}
-
-/// Line start offsets of `text`.
-fn line_starts(text: &str) -> Vec<usize> {
-    std::iter::once(0)
-        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
-        .collect()
-}
-
-fn indent_of(line: &str) -> usize {
-    line.len() - line.trim_start().len()
-}
-
-/// The bindings of the function around line `todo` that nothing but the
-/// `todo!` lines (`todo..todo_end`) would use.
-fn unused_bindings(masked: &str, starts: &[usize], todo: usize, todo_end: usize) -> Vec<Binding> {
-    let lines: Vec<&str> = masked.lines().collect();
-    let indent = indent_of(lines[todo]);
-    // The nearest `fn` above, less indented than the todo!.
-    let Some(fn_line) = (0..todo).rev().find(|&l| {
-        indent_of(lines[l]) < indent && {
-            let code = lines[l].trim_start();
-            code.split_whitespace().take_while(|w| *w != "fn").all(|w| {
-                ["pub", "const", "async", "unsafe", "extern"].contains(&w) || w.starts_with("pub(")
-            }) && has_word(code, "fn")
+/// The bindings of a pattern that a stub could leave unused: every
+/// identifier it binds (`mut plot`, `u` and `v` of `[u, v]`, `x` of
+/// `Point { x, .. }`), not `_` nor `_x`, which say so already.
+fn bindings(pattern: &Pat) -> Vec<Binding> {
+    struct Collect(Vec<Binding>);
+    impl<'ast> Visit<'ast> for Collect {
+        fn visit_pat_ident(&mut self, binding: &'ast syn::PatIdent) {
+            let name = binding.ident.to_string();
+            if !name.starts_with('_') {
+                self.0.push(Binding {
+                    name,
+                    // `ref mut x` is a reference already: `&x` will do.
+                    mutable: binding.by_ref.is_none() && binding.mutability.is_some(),
+                });
+            }
+            visit::visit_pat_ident(self, binding);
         }
-    }) else {
-        return Vec::new();
-    };
-    let from = starts[fn_line] + lines[fn_line].find("fn").expect("a fn line") + 2;
-    let after_name = from
-        + masked[from..]
-            .find(|c: char| !(c.is_whitespace() || c.is_alphanumeric() || c == '_'))
-            .unwrap_or(0);
-    let mut open = after_name;
-    if masked[open..].starts_with('<') {
-        let Some(end) = closing(masked, open, true) else {
-            return Vec::new();
-        };
-        open = end + 1;
     }
-    let Some(open) = masked[open..].find('(').map(|n| open + n) else {
-        return Vec::new();
-    };
-    let Some(close) = closing(masked, open, false) else {
-        return Vec::new();
-    };
-    let Some(body_open) = masked[close..].find('{').map(|n| close + n) else {
-        return Vec::new();
-    };
-    let Some(body_close) = closing(masked, body_open, false) else {
-        return Vec::new();
-    };
-    let todo_start = starts[todo];
-    let todo_stop = starts.get(todo_end).copied().unwrap_or(masked.len());
-    if !(body_open < todo_start && todo_start < body_close) {
-        return Vec::new();
+    let mut collect = Collect(Vec::new());
+    collect.visit_pat(pattern);
+    collect.0
+}
+
+/// The innermost function whose body holds byte `at`, and the innermost
+/// block that does.
+struct Around<'ast> {
+    at: usize,
+    function: Option<(&'ast Signature, &'ast Block)>,
+    block: Option<&'ast Block>,
+}
+
+impl<'ast> Around<'ast> {
+    fn holds(&self, block: &Block) -> bool {
+        inside(
+            block.brace_token.span.open(),
+            block.brace_token.span.close(),
+        )
+        .contains(&self.at)
     }
-    // The body without the todo! lines.
-    let before = &masked[body_open + 1..todo_start];
-    let after = &masked[todo_stop.min(body_close)..body_close];
-    let mut bindings: Vec<Binding> = split_top_level(&masked[open + 1..close])
-        .into_iter()
-        .flat_map(|param| pattern_bindings(param.split(':').next().unwrap_or_default()))
-        .filter(|b| !has_word(before, &b.name) && !has_word(after, &b.name))
+
+    fn function(&mut self, signature: &'ast Signature, body: &'ast Block) {
+        if self.holds(body) {
+            self.function = Some((signature, body));
+        }
+    }
+}
+
+// The tree is walked from the outside in: the last function and block
+// found to hold `at` are the innermost.
+impl<'ast> Visit<'ast> for Around<'ast> {
+    fn visit_item_fn(&mut self, function: &'ast syn::ItemFn) {
+        self.function(&function.sig, &function.block);
+        visit::visit_item_fn(self, function);
+    }
+
+    fn visit_impl_item_fn(&mut self, function: &'ast syn::ImplItemFn) {
+        self.function(&function.sig, &function.block);
+        visit::visit_impl_item_fn(self, function);
+    }
+
+    fn visit_trait_item_fn(&mut self, function: &'ast syn::TraitItemFn) {
+        if let Some(body) = &function.default {
+            self.function(&function.sig, body);
+        }
+        visit::visit_trait_item_fn(self, function);
+    }
+
+    fn visit_block(&mut self, block: &'ast Block) {
+        if self.holds(block) {
+            self.block = Some(block);
+        }
+        visit::visit_block(self, block);
+    }
+}
+
+/// The bindings of the function around the `todo!` on lines `todo` (its
+/// bytes) that nothing but those lines would use: its parameters, and the
+/// locals its block declares before it.
+fn unused_bindings(source: &Source<'_>, todo: Range<usize>) -> Vec<Binding> {
+    let mut around = Around {
+        at: todo.start,
+        function: None,
+        block: None,
+    };
+    around.visit_file(&source.file);
+    let (Some((signature, body)), Some(block)) = (around.function, around.block) else {
+        return Vec::new();
+    };
+    let body_end = inside(body.brace_token.span.open(), body.brace_token.span.close()).end;
+    // Used between `from` and the todo!, or after it in the body.
+    let unused = |binding: &Binding, from: usize| {
+        !source.mentions(&binding.name, from..todo.start)
+            && !source.mentions(&binding.name, todo.end.min(body_end)..body_end)
+    };
+    let mut unused_bindings: Vec<Binding> = signature
+        .inputs
+        .iter()
+        .filter_map(|input| match input {
+            FnArg::Typed(parameter) => Some(bindings(&parameter.pat)),
+            FnArg::Receiver(_) => None,
+        })
+        .flatten()
+        .filter(|binding| unused(binding, range(body).start))
         .collect();
     // Locals of the todo!'s own block, declared before it.
-    for l in (0..todo).filter(|&l| starts[l] > body_open) {
-        let code = lines[l].trim_start();
-        if indent_of(lines[l]) != indent {
-            continue;
+    for statement in &block.stmts {
+        let statement_range = range(statement);
+        if statement_range.end > todo.start {
+            break;
         }
-        let Some(rest) = code.strip_prefix("let ") else {
-            continue;
-        };
-        let pattern = rest.split([':', '=', ';']).next().unwrap_or_default();
-        let Some(binding) = simple_binding(pattern) else {
-            continue;
-        };
-        let later = &masked[starts[l + 1]..todo_start];
-        if !has_word(later, &binding.name) && !has_word(after, &binding.name) {
-            bindings.push(binding);
+        if let Stmt::Local(local) = statement {
+            unused_bindings.extend(
+                bindings(&local.pat)
+                    .into_iter()
+                    .filter(|binding| unused(binding, statement_range.end)),
+            );
         }
     }
-    bindings
+    unused_bindings
 }
 
-/// The names a `use` item brings into scope (`a::{b, c as d}` → `b`, `d`;
+/// The names a `use` tree brings into scope (`a::{b, c as d}` → `b`, `d`;
 /// `a::{self}` → `a`); globs and `_` imports bring none that could go
-/// unused by name.
-fn imported_names(item: &str) -> Vec<String> {
-    fn tree(text: &str, parent: Option<&str>, names: &mut Vec<String>) {
-        for leaf in split_top_level(text) {
-            let leaf = leaf.trim();
-            if let Some(open) = leaf.find('{') {
-                let prefix = leaf[..open].trim_end_matches("::");
-                let inner = leaf[open + 1..].trim_end().trim_end_matches('}');
-                tree(inner, prefix.rsplit("::").next(), names);
-                continue;
-            }
-            let name = match leaf.rsplit_once(" as ") {
-                Some((_, alias)) => alias.trim(),
-                None => leaf.rsplit("::").next().unwrap_or(leaf).trim(),
-            };
-            let name = if name == "self" {
-                parent.unwrap_or("")
-            } else {
-                name
-            };
-            if !(name.is_empty() || name == "_" || name == "*") {
-                names.push(name.to_owned());
+/// unused by name. `parent` is the last segment of the path above `tree`.
+fn imported_names(tree: &UseTree, parent: Option<&syn::Ident>, names: &mut Vec<String>) {
+    match tree {
+        UseTree::Path(path) => imported_names(&path.tree, Some(&path.ident), names),
+        UseTree::Name(name) if name.ident == "self" => {
+            names.extend(parent.map(ToString::to_string));
+        }
+        UseTree::Name(name) => names.push(name.ident.to_string()),
+        UseTree::Rename(rename) if rename.rename == "_" => {}
+        UseTree::Rename(rename) => names.push(rename.rename.to_string()),
+        UseTree::Glob(_) => {}
+        UseTree::Group(group) => {
+            for tree in &group.items {
+                imported_names(tree, parent, names);
             }
         }
     }
-    let body = item.trim();
-    let body = body
-        .strip_prefix("use")
-        .unwrap_or(body)
-        .trim()
-        .trim_end_matches(';');
-    let mut names = Vec::new();
-    tree(body, None, &mut names);
-    names
 }
 
 /// Adds borrow lines and `allow` attributes to a generated stub; `todos`
-/// are the stub's `todo!` calls as (first line, line after the call).
+/// are the stub's `todo!` calls as (first line, line after the call),
+/// 0-based. A stub that is not Rust is returned as it is.
 pub fn quiet(stub: &str, todos: &[(usize, usize)], newline: &str, max_width: usize) -> String {
-    let masked = mask(stub);
-    let starts = line_starts(&masked);
-    let masked_lines: Vec<&str> = masked.lines().collect();
+    let Some(source) = Source::parse(stub) else {
+        return stub.to_owned();
+    };
+    // Lines to insert, each before a line of the stub (0-based).
     let mut inserts: Vec<(usize, Vec<String>)> = Vec::new();
 
     for &(todo, todo_end) in todos {
-        let bindings = unused_bindings(&masked, &starts, todo, todo_end);
+        let todo_bytes = source.line_start(todo)..source.line_start(todo_end);
+        let bindings = unused_bindings(&source, todo_bytes);
         if bindings.is_empty() {
             continue;
         }
-        let indent = " ".repeat(indent_of(masked_lines[todo]));
+        let indent = source.indent(todo);
         let borrows: Vec<String> = bindings
             .iter()
             .map(|b| format!("&{}{}", if b.mutable { "mut " } else { "" }, b.name))
@@ -287,55 +225,52 @@ pub fn quiet(stub: &str, todos: &[(usize, usize)], newline: &str, max_width: usi
         inserts.push((todo, lines));
     }
 
-    // Top-level private `use` items with a name the stub never mentions.
-    let mut uses: Vec<(usize, usize)> = Vec::new(); // (first line, line after)
-    let mut l = 0;
-    while l < masked_lines.len() {
-        if masked_lines[l].starts_with("use ") {
-            let mut end = l;
-            while end < masked_lines.len() && !masked_lines[end].contains(';') {
-                end += 1;
-            }
-            uses.push((l, end + 1));
-            l = end + 1;
-        } else {
-            l += 1;
-        }
-    }
-    let without_uses: String = masked_lines
+    // Top-level private `use` items with a name the rest of the stub never
+    // mentions.
+    let private = |visibility: &Visibility| matches!(visibility, Visibility::Inherited);
+    let uses: Vec<&syn::ItemUse> = source
+        .file
+        .items
         .iter()
-        .enumerate()
-        .filter(|(n, _)| !uses.iter().any(|&(a, b)| (a..b).contains(n)))
-        .map(|(_, line)| format!("{line}\n"))
+        .filter_map(|item| match item {
+            Item::Use(item) if private(&item.vis) => Some(item),
+            _ => None,
+        })
         .collect();
-    for &(first, after) in &uses {
-        let item = masked_lines[first..after].join(" ");
-        if imported_names(&item)
-            .iter()
-            .any(|name| !has_word(&without_uses, name))
-        {
-            inserts.push((first, vec!["#[allow(unused_imports)]".to_owned()]));
+    let use_ranges: Vec<Range<usize>> = uses.iter().map(|item| range(*item)).collect();
+    let mentioned = |name: &str, except: &[Range<usize>]| {
+        source
+            .words()
+            .any(|(word, at)| word == name && !except.iter().any(|r| r.contains(&at)))
+    };
+    for item in &uses {
+        let mut names = Vec::new();
+        imported_names(&item.tree, None, &mut names);
+        if names.iter().any(|name| !mentioned(name, &use_ranges)) {
+            let line = source.line_of(range(&item.use_token).start);
+            let indent = source.indent(line);
+            inserts.push((line, vec![format!("{indent}#[allow(unused_imports)]")]));
         }
     }
 
-    // Private helpers nothing in the stub calls.
-    for (n, line) in masked_lines.iter().enumerate() {
-        // Top-level items only: a method may be a trait's, called from afar.
-        let code = *line;
-        let name = code
-            .strip_prefix("fn ")
-            .or_else(|| code.strip_prefix("const "))
-            .and_then(identifier);
-        let Some(name) = name else { continue };
-        let rest: String = masked_lines
-            .iter()
-            .enumerate()
-            .filter(|&(m, _)| m != n)
-            .map(|(_, line)| format!("{line}\n"))
-            .collect();
-        if !has_word(&rest, name) {
-            let indent = " ".repeat(indent_of(line));
-            inserts.push((n, vec![format!("{indent}#[allow(dead_code)]")]));
+    // Top-level private helpers (`fn`, `const`) that nothing outside
+    // themselves mentions. Top-level items only: a method may be a
+    // trait's, called from afar.
+    for item in &source.file.items {
+        let (name, first_token) = match item {
+            Item::Fn(function) if private(&function.vis) => {
+                (&function.sig.ident, range(&function.sig).start)
+            }
+            Item::Const(constant) if private(&constant.vis) => {
+                (&constant.ident, range(&constant.const_token).start)
+            }
+            _ => continue,
+        };
+        let name = name.to_string();
+        if !name.starts_with('_') && !mentioned(&name, &[range(item)]) {
+            let line = source.line_of(first_token);
+            let indent = source.indent(line);
+            inserts.push((line, vec![format!("{indent}#[allow(dead_code)]")]));
         }
     }
 
@@ -452,9 +387,87 @@ pub fn f(p: Pixel) -> Pixel {
 
     #[test]
     fn imported_names_follow_paths_aliases_and_self() {
+        let item: syn::ItemUse =
+            syn::parse_str("use a::{b, c::D as E, f::{self, g}, h::*, i as _};").expect("a use");
+        let mut names = Vec::new();
+        imported_names(&item.tree, None, &mut names);
+        assert_eq!(names, ["b", "E", "f", "g"]);
+    }
+
+    #[test]
+    fn names_in_strings_comments_and_raw_byte_strings_are_no_use() {
+        let stub = "\
+pub fn f(from: u8, to: u8, by: u8, size: u8) -> u8 {
+    let _bytes = br#\"from\"#;
+    /* /* to */ size */
+    println!(\"{}\", \"by\");
+    todo!(\"t: x\")
+}
+";
         assert_eq!(
-            imported_names("use a::{b, c::D as E, f::{self, g}, h::*, i as _};"),
-            ["b", "E", "f", "g"]
+            quiet_all(stub),
+            "\
+pub fn f(from: u8, to: u8, by: u8, size: u8) -> u8 {
+    let _bytes = br#\"from\"#;
+    /* /* to */ size */
+    println!(\"{}\", \"by\");
+    // Unused until you write the body:
+    let _ = (&from, &to, &by, &size);
+    todo!(\"t: x\")
+}
+"
+        );
+    }
+
+    #[test]
+    fn the_function_and_block_around_a_todo_are_read_from_the_tree() {
+        // The method's attribute shares its line; a local of an earlier
+        // block at the todo!'s indentation is out of its scope.
+        let stub = "\
+impl A {
+    #[must_use] pub fn f<F: Fn(u8) -> Vec<Vec<u8>>>(&self, n: u8, g: F) -> u8 where F: Copy {
+        for i in 0..n {
+            let step = i;
+            println!(\"{step}\");
+        }
+        {
+            todo!(\"t: x\")
+        }
+    }
+}
+";
+        let quiet = quiet_all(stub);
+        assert!(
+            quiet.contains("        {\n            // Unused until you write the body:\n            let _ = &g;\n            todo!"),
+            "{quiet}"
+        );
+        assert!(!quiet.contains("&step"), "{quiet}");
+    }
+
+    #[test]
+    fn private_const_fns_and_helpers_used_only_by_themselves_are_allowed() {
+        let stub = "\
+const fn half(x: u32) -> u32 {
+    x / 2
+}
+
+fn countdown(n: u32) -> u32 {
+    if n == 0 { 0 } else { countdown(n - 1) }
+}
+
+/// Draws.
+pub fn f() {
+    todo!(\"t: x\")
+}
+";
+        let quiet = quiet_all(stub);
+        assert!(
+            quiet.contains("#[allow(dead_code)]\nconst fn half"),
+            "{quiet}"
+        );
+        assert!(
+            quiet.contains("#[allow(dead_code)]\nfn countdown"),
+            "{quiet}"
         );
     }
 }

@@ -6,165 +6,201 @@
 //! to score 0: given code never solves a task.
 //!
 //! Two functions have the same signature when their generics, parameter
-//! types, return type and `where` clause agree with paths and spaces
-//! taken out (`glam::Vec2` is `Vec2`); parameter names do not count.
+//! types, return type and `where` clause agree token for token with paths
+//! and spaces taken out (`glam::Vec2` is `Vec2`); parameter names do not
+//! count. The functions are read from each file's syntax tree (see
+//! [`super::syntax`]), their parts by their places in the text.
 
 use std::fmt::Write as _;
 use std::ops::Range;
 
-use super::quiet::{closing, identifier, split_top_level};
-use crate::stubs::quiet::mask;
+use syn::visit::{self, Visit};
+use syn::{FnArg, ImplItem, Item, Pat, ReturnType, Signature, Type, Visibility};
 
-/// A public free function at the top level of a source file.
+use super::syntax::{Source, inside, range};
+
+/// A function with a body: a public free function at the top level of a
+/// source file, or a function of an `impl` block (see [`Method`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Function {
     /// Its name.
     pub name: String,
-    /// Its parameters' patterns, as written (`mut plot`, `[u, v]`).
-    pub patterns: Vec<String>,
+    /// Its parameters, the receiver aside.
+    pub parameters: Vec<Parameter>,
     /// Its signature without its name, parameter names, paths and spaces:
     /// what two functions share when one can stand in for the other.
     pub shape: String,
     /// The contents of its body, between the braces.
     pub body: Range<usize>,
+    /// The task of a stub's function: the `<task>` of the first
+    /// `todo!("<task>: …")` in its body, if it holds one.
+    pub task: Option<String>,
+}
+
+/// A parameter of a [`Function`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Parameter {
+    /// Its pattern, as written (`mut plot`, `[u, v]`).
+    pub pattern: String,
+    /// The pattern as the expression that passes the parameter's value on
+    /// (`mut plot` → `plot`, `[u, v]` → `[u, v]`); `None` where the
+    /// pattern binds less than it takes (`_`, `..`, `&x`, `ref x`).
+    pub argument: Option<String>,
 }
 
 /// The public free functions at the top level of `source`: not methods,
-/// not functions of a nested module.
+/// not functions of a nested module. None for a file that is not Rust.
 pub fn public_functions(source: &str) -> Vec<Function> {
-    let masked = mask(source);
-    let depth = brace_depths(&masked);
-    let mut found = Vec::new();
-    let mut from = 0;
-    while let Some(offset) = masked[from..].find("pub ") {
-        let start = from + offset;
-        from = start + 4;
-        let word_start = start == 0 || !is_ident_char(masked.as_bytes()[start - 1]);
-        if !word_start || depth[start] != 0 {
-            continue;
-        }
-        let rest = masked[start + 4..].trim_start();
-        let rest = rest.strip_prefix("const ").map_or(rest, str::trim_start);
-        let Some(after_fn) = rest.strip_prefix("fn ") else {
-            continue;
-        };
-        if let Some(function) = parse(&masked, masked.len() - after_fn.len()) {
-            found.push(function);
-        }
-    }
-    found
-}
-
-/// The function whose name starts at byte `at` of `masked`.
-fn parse(masked: &str, at: usize) -> Option<Function> {
-    parse_in(masked, at, None).and_then(|(receiver, f)| receiver.is_empty().then_some(f))
-}
-
-/// The function whose name starts at byte `at` of `masked`, and its
-/// receiver (`self`, `&self`, `&mut self`; empty for none). In an `impl`
-/// block of `self_type`, that type is named `Self` in the shape.
-fn parse_in(masked: &str, at: usize, self_type: Option<&str>) -> Option<(String, Function)> {
-    let after = masked[at..].trim_start();
-    let name = identifier(after)?;
-    let mut cursor = masked.len() - after.len() + name.len();
-    let mut generics = "";
-    if masked[cursor..].starts_with('<') {
-        let end = closing(masked, cursor, true)?;
-        generics = &masked[cursor..=end];
-        cursor = end + 1;
-    }
-    let open = cursor + masked[cursor..].find('(')?;
-    let close = closing(masked, open, false)?;
-    let body_open = close + masked[close..].find(['{', ';'])?;
-    if masked.as_bytes()[body_open] != b'{' {
-        return None;
-    }
-    let body_close = closing(masked, body_open, false)?;
-    let mut patterns = Vec::new();
-    let mut types = Vec::new();
-    let mut receiver = String::new();
-    for (i, parameter) in split_top_level(&masked[open + 1..close])
-        .into_iter()
-        .enumerate()
-    {
-        if parameter.trim().is_empty() {
-            continue;
-        }
-        if i == 0
-            && self_type.is_some()
-            && let Some(kind) = receiver_kind(parameter)
-        {
-            receiver = kind.to_owned();
-            continue;
-        }
-        let (pattern, ty) = split_parameter(parameter)?;
-        patterns.push(pattern.trim().to_owned());
-        types.push(normalized(ty));
-    }
-    let tail = &masked[close + 1..body_open];
-    let (ret, clause) = tail.split_once(" where").unwrap_or((tail, ""));
-    let ret = ret.trim().strip_prefix("->").unwrap_or("");
-    let mut shape = format!(
-        "{}({})->{} where {}",
-        normalized(generics),
-        types.join(","),
-        normalized(ret),
-        normalized(clause)
-    );
-    if let Some(self_type) = self_type {
-        shape = named_self(&shape, self_type);
-    }
-    let function = Function {
-        name: name.to_owned(),
-        patterns,
-        shape,
-        body: body_open + 1..body_close,
+    let Some(source) = Source::parse(source) else {
+        return Vec::new();
     };
-    Some((receiver, function))
+    source
+        .file
+        .items
+        .iter()
+        .filter_map(|item| match item {
+            Item::Fn(function) if matches!(function.vis, Visibility::Public(_)) => {
+                Some(read(&source, &function.sig, &function.block, None))
+            }
+            _ => None,
+        })
+        .collect()
 }
 
-/// The kind of a receiver parameter (`self`, `mut self`, `&self`, `&'a mut
-/// self`, `self: &Self`): `self`, `&self` or `&mut self`; `None` for a
-/// parameter that is not one.
-fn receiver_kind(parameter: &str) -> Option<&'static str> {
-    let compact: String = parameter.split_whitespace().collect::<Vec<_>>().join(" ");
-    let (head, ty) = compact
-        .split_once(':')
-        .map_or((compact.as_str(), ""), |(h, t)| (h, t));
-    let head = head.trim().trim_start_matches("mut ").trim();
-    if head != "self" && !head.ends_with(" self") && !head.ends_with("&self") {
+/// The function of `signature` and `block`, read from `source`; in an
+/// `impl` block of `self_type`, that type is named `Self` in the shape.
+fn read(
+    source: &Source<'_>,
+    signature: &Signature,
+    block: &syn::Block,
+    self_type: Option<&str>,
+) -> Function {
+    let compact = |within: Range<usize>| source.compact(within, self_type);
+    let generics = &signature.generics;
+    let types: Vec<String> = signature
+        .inputs
+        .iter()
+        .filter_map(|input| match input {
+            FnArg::Typed(parameter) => Some(compact(range(&parameter.ty))),
+            FnArg::Receiver(_) => None,
+        })
+        .collect();
+    let ret = match &signature.output {
+        ReturnType::Type(_, ty) => compact(range(ty)),
+        ReturnType::Default => String::new(),
+    };
+    let clause = generics
+        .where_clause
+        .as_ref()
+        .map_or_else(String::new, |clause| compact(range(&clause.predicates)));
+    let generics = if generics.params.is_empty() {
+        String::new()
+    } else {
+        compact(range(generics))
+    };
+    let parameters = signature
+        .inputs
+        .iter()
+        .filter_map(|input| match input {
+            FnArg::Typed(parameter) => Some(Parameter {
+                pattern: source.text_of(&parameter.pat).to_owned(),
+                argument: argument(source, &parameter.pat),
+            }),
+            FnArg::Receiver(_) => None,
+        })
+        .collect();
+    let mut task = FirstTask(None);
+    task.visit_block(block);
+    Function {
+        name: signature.ident.to_string(),
+        parameters,
+        shape: format!("{generics}({})->{ret} where {clause}", types.join(",")),
+        body: inside(
+            block.brace_token.span.open(),
+            block.brace_token.span.close(),
+        ),
+        task: task.0,
+    }
+}
+
+/// The task named by the first `todo!("<task>: …")` of a body, where the
+/// call's first argument is a string that starts with an identifier and
+/// a colon.
+struct FirstTask(Option<String>);
+
+impl<'ast> Visit<'ast> for FirstTask {
+    fn visit_macro(&mut self, call: &'ast syn::Macro) {
+        if self.0.is_some() || !call.path.is_ident("todo") {
+            return;
+        }
+        let message = call.parse_body_with(|input: syn::parse::ParseStream<'_>| {
+            let message: syn::LitStr = input.parse()?;
+            input.parse::<proc_macro2::TokenStream>()?; // the format arguments
+            Ok(message.value())
+        });
+        self.0 = message.ok().and_then(|message| {
+            let (task, _) = message.split_once(':')?;
+            syn::parse_str::<syn::Ident>(task).ok()?;
+            Some(task.to_owned())
+        });
+    }
+}
+
+/// A parameter's pattern as the expression that passes its value on: its
+/// text without its `mut`s; `None` where the pattern binds less than it
+/// takes.
+fn argument(source: &Source<'_>, pattern: &Pat) -> Option<String> {
+    fn binds_all(pattern: &Pat) -> bool {
+        match pattern {
+            Pat::Ident(binding) => binding.by_ref.is_none() && binding.subpat.is_none(),
+            Pat::Tuple(tuple) => tuple.elems.iter().all(binds_all),
+            Pat::Slice(slice) => slice.elems.iter().all(binds_all),
+            Pat::Paren(inner) => binds_all(&inner.pat),
+            Pat::TupleStruct(tuple) => tuple.elems.iter().all(binds_all),
+            Pat::Struct(record) => {
+                record.rest.is_none() && record.fields.iter().all(|field| binds_all(&field.pat))
+            }
+            // `_`, `..`, `&x`, literals and ranges: not an expression of
+            // the value, or not all of it.
+            _ => false,
+        }
+    }
+    /// The `mut` keywords of a pattern, by their places.
+    struct Muts(Vec<Range<usize>>);
+    impl<'ast> Visit<'ast> for Muts {
+        fn visit_pat_ident(&mut self, binding: &'ast syn::PatIdent) {
+            if let Some(keyword) = &binding.mutability {
+                self.0.push(range(keyword));
+            }
+            visit::visit_pat_ident(self, binding);
+        }
+    }
+    if !binds_all(pattern) {
         return None;
     }
-    let written = if ty.is_empty() { head } else { ty.trim() };
-    Some(if written.contains("&mut") || written.contains("& mut") {
-        "&mut self"
-    } else if written.contains('&') {
-        "&self"
-    } else {
-        "self"
-    })
+    let mut muts = Muts(Vec::new());
+    muts.visit_pat(pattern);
+    // The pattern's text with each `mut` and the spaces after it cut out.
+    let whole = range(pattern);
+    let mut expression = String::new();
+    let mut at = whole.start;
+    for keyword in muts.0 {
+        expression.push_str(&source.text[at..keyword.start]);
+        let after = &source.text[keyword.end..whole.end];
+        at = keyword.end + (after.len() - after.trim_start().len());
+    }
+    expression.push_str(&source.text[at..whole.end]);
+    Some(expression)
 }
 
-/// `text` with every whole-word `name` replaced by `Self`.
-fn named_self(text: &str, name: &str) -> String {
-    if name.is_empty() {
-        return text.to_owned();
+/// The kind of a method's receiver (`self`, `mut self`, `&self`, `&'a mut
+/// self`, `self: &Self`, `self: Box<Self>`): `self`, `&self` or `&mut self`.
+fn receiver_kind(receiver: &syn::Receiver) -> &'static str {
+    match &*receiver.ty {
+        Type::Reference(reference) if reference.mutability.is_some() => "&mut self",
+        Type::Reference(_) => "&self",
+        _ => "self",
     }
-    let mut out = String::new();
-    let mut rest = text;
-    while let Some(at) = rest.find(name) {
-        let before = rest[..at].bytes().next_back();
-        let after = rest.as_bytes().get(at + name.len()).copied();
-        out.push_str(&rest[..at]);
-        if before.is_some_and(is_ident_char) || after.is_some_and(is_ident_char) {
-            out.push_str(name);
-        } else {
-            out.push_str("Self");
-        }
-        rest = &rest[at + name.len()..];
-    }
-    out.push_str(rest);
-    out
 }
 
 /// A function of an `impl` block at the top level of a source file: an
@@ -196,158 +232,70 @@ impl Method {
     /// shape.
     pub fn could_be(&self, given: &Method) -> bool {
         self.receiver == given.receiver
-            && self.function.patterns.len() == given.function.patterns.len()
+            && self.function.parameters.len() == given.function.parameters.len()
             && (self.function.name == given.function.name
                 || self.function.shape == given.function.shape)
     }
 }
 
-/// The functions with a body of the `impl` blocks at the top level of
-/// `source` (not those of a nested module).
+/// The functions of the `impl` blocks at the top level of `source` (not
+/// those of a nested module). None for a file that is not Rust.
 pub fn methods(source: &str) -> Vec<Method> {
-    let masked = mask(source);
-    let depth = brace_depths(&masked);
-    let bytes = masked.as_bytes();
+    let Some(source) = Source::parse(source) else {
+        return Vec::new();
+    };
     let mut found = Vec::new();
-    let mut from = 0;
-    while let Some(offset) = masked[from..].find("impl") {
-        let start = from + offset;
-        from = start + 4;
-        let word_start = start == 0 || !is_ident_char(bytes[start - 1]);
-        let word_end = bytes
-            .get(start + 4)
-            .is_some_and(|&b| b == b'<' || b.is_ascii_whitespace());
-        if !word_start || !word_end || depth[start] != 0 {
+    for item in &source.file.items {
+        let Item::Impl(block) = item else {
             continue;
+        };
+        // `impl<T> Solid for &Placed<T>` implements for `Placed`.
+        let mut ty = &*block.self_ty;
+        while let Type::Reference(reference) = ty {
+            ty = &reference.elem;
         }
-        let Some(open) = masked[start..].find('{').map(|o| start + o) else {
-            break;
+        let self_type = match ty {
+            Type::Path(path) => path
+                .path
+                .segments
+                .last()
+                .map(|segment| segment.ident.to_string())
+                .unwrap_or_default(),
+            _ => String::new(),
         };
-        let Some(close) = closing(&masked, open, false) else {
-            break;
-        };
-        let mut header = masked[start + 4..open].trim();
-        if header.starts_with('<') {
-            header = closing(header, 0, true).map_or(header, |end| header[end + 1..].trim());
-        }
-        let header = header.split(" where").next().unwrap_or(header);
-        let (trait_name, self_type) = match header.split_once(" for ") {
-            Some((t, ty)) => (Some(normalized(t)), normalized(ty)),
-            None => (None, normalized(header)),
-        };
-        let self_type = identifier(self_type.trim_start_matches('&'))
-            .unwrap_or_default()
-            .to_owned();
-        let mut at = open + 1;
-        while let Some(offset) = masked[at..close].find("fn ") {
-            let f = at + offset;
-            at = f + 3;
-            if depth[f] != 1 || (f > 0 && is_ident_char(bytes[f - 1])) {
+        let trait_name = block
+            .trait_
+            .as_ref()
+            .map(|(_, path, _)| source.compact(range(path), None));
+        for inner in &block.items {
+            let ImplItem::Fn(function) = inner else {
                 continue;
-            }
-            if let Some((receiver, function)) = parse_in(&masked, f + 3, Some(&self_type)) {
-                at = function.body.end;
-                found.push(Method {
-                    self_type: self_type.clone(),
-                    trait_name: trait_name.clone(),
-                    receiver,
-                    function,
-                });
-            }
+            };
+            let receiver = match function.sig.inputs.first() {
+                Some(FnArg::Receiver(receiver)) => receiver_kind(receiver),
+                _ => "",
+            };
+            found.push(Method {
+                self_type: self_type.clone(),
+                trait_name: trait_name.clone(),
+                receiver: receiver.to_owned(),
+                function: read(&source, &function.sig, &function.block, Some(&self_type)),
+            });
         }
-        from = close;
     }
     found
 }
 
-/// `pattern: type` split at the colon that is not part of a path (`::`).
-fn split_parameter(parameter: &str) -> Option<(&str, &str)> {
-    let bytes = parameter.as_bytes();
-    let colon = (0..bytes.len()).find(|&i| {
-        bytes[i] == b':' && bytes.get(i + 1) != Some(&b':') && (i == 0 || bytes[i - 1] != b':')
-    })?;
-    Some((&parameter[..colon], &parameter[colon + 1..]))
-}
-
-/// `text` without spaces and without path prefixes (`a::b::C` → `C`).
-fn normalized(text: &str) -> String {
-    let compact: String = text.chars().filter(|c| !c.is_whitespace()).collect();
-    let mut out = String::new();
-    let mut rest = compact.as_str();
-    while !rest.is_empty() {
-        match identifier(rest) {
-            Some(ident) => {
-                rest = &rest[ident.len()..];
-                match rest.strip_prefix("::") {
-                    // A path segment: `glam::` in `glam::Vec2` goes.
-                    Some(after) if after.starts_with(|c: char| c.is_alphabetic() || c == '_') => {
-                        rest = after;
-                    }
-                    _ => out.push_str(ident),
-                }
-            }
-            None => {
-                let c = rest.chars().next().unwrap_or(' ');
-                out.push(c);
-                rest = &rest[c.len_utf8()..];
-            }
-        }
-    }
-    out
-}
-
-fn is_ident_char(b: u8) -> bool {
-    b.is_ascii_alphanumeric() || b == b'_'
-}
-
-/// The brace depth at every byte of `masked`.
-fn brace_depths(masked: &str) -> Vec<u32> {
-    let mut depth = 0u32;
-    masked
-        .bytes()
-        .map(|b| {
-            let here = depth;
-            match b {
-                b'{' => depth += 1,
-                b'}' => depth = depth.saturating_sub(1),
-                _ => {}
-            }
-            here
-        })
-        .collect()
-}
-
-/// The task a stub's function belongs to: the `<task>` of its body's
-/// `todo!("<task>: …")`, if its body holds one.
-pub fn stub_task(source: &str, function: &Function) -> Option<String> {
-    let body = &source[function.body.clone()];
-    let call = body.find("todo!(")?;
-    let message = body[call..].split_once('"')?.1;
-    let (task, _) = message.split_once(':')?;
-    identifier(task)
-        .filter(|id| id.len() == task.len())
-        .map(str::to_owned)
-}
-
 /// The arguments that pass a function's parameters on: each pattern as an
-/// expression (`mut plot` → `plot`, `[u, v]` → `[u, v]`); `None` where a
-/// pattern binds less than it takes (`_`, `..`).
+/// expression ([`Parameter::argument`]); `None` where a pattern binds
+/// less than it takes.
 pub fn arguments(function: &Function) -> Option<String> {
-    let out: Option<Vec<String>> = function.patterns.iter().map(|p| argument(p)).collect();
+    let out: Option<Vec<&str>> = function
+        .parameters
+        .iter()
+        .map(|p| p.argument.as_deref())
+        .collect();
     Some(out?.join(", "))
-}
-
-/// A parameter's pattern as the expression that passes its value on;
-/// `None` where the pattern binds less than it takes.
-fn argument(pattern: &str) -> Option<String> {
-    let expression = pattern.replace("mut ", "");
-    let binds_all = expression
-        .split(|c: char| !is_ident_char(c as u8) || !c.is_ascii())
-        .all(|word| word != "_" && word != "ref")
-        && !expression.contains("..")
-        && !expression.contains('@')
-        && !expression.contains('&');
-    binds_all.then_some(expression)
 }
 
 /// `stub` with the body of `function` (one of its [`public_functions`])
@@ -389,9 +337,14 @@ pub fn plant_method(
         }
         None => body.push_str("    #[allow(unused_imports)]\n    use self::stand_in::*;\n"),
     }
-    for (theirs, ours) in given.function.patterns.iter().zip(&task.function.patterns) {
-        let value = argument(ours)?;
-        if *theirs != value {
+    for (theirs, ours) in given
+        .function
+        .parameters
+        .iter()
+        .zip(&task.function.parameters)
+    {
+        let (theirs, value) = (&theirs.pattern, ours.argument.as_ref()?);
+        if theirs != value {
             let _ = writeln!(
                 body,
                 "    #[allow(unused_variables, unused_mut)]\n    let {theirs} = {value};"
@@ -451,13 +404,18 @@ mod nested {
         let names: Vec<&str> = found.iter().map(|f| f.name.as_str()).collect();
         assert_eq!(names, ["dda_line", "cube"]);
         assert_eq!(found[0].shape, "(Vec2,Vec2,implFnMut(Pixel))-> where ");
-        assert_eq!(found[0].patterns, ["from", "to", "mut plot"]);
+        let patterns: Vec<&str> = found[0]
+            .parameters
+            .iter()
+            .map(|p| p.pattern.as_str())
+            .collect();
+        assert_eq!(patterns, ["from", "to", "mut plot"]);
         assert_eq!(
             found[1].shape,
             "<T:Copy>([f64;2],&str)->Result<T,E> where T:Default"
         );
-        assert_eq!(stub_task(SOURCE, &found[0]).as_deref(), Some("dda"));
-        assert_eq!(stub_task(SOURCE, &found[1]), None);
+        assert_eq!(found[0].task.as_deref(), Some("dda"));
+        assert_eq!(found[1].task, None);
     }
 
     #[test]
@@ -512,13 +470,16 @@ mod nested {
         );
         let receivers: Vec<&str> = found.iter().map(|m| m.receiver.as_str()).collect();
         assert_eq!(receivers, ["self", "&mut self", "", "&self"]);
-        assert_eq!(found[0].function.patterns, ["incoming", "stored"]);
+        let patterns: Vec<&str> = found[0]
+            .function
+            .parameters
+            .iter()
+            .map(|p| p.pattern.as_str())
+            .collect();
+        assert_eq!(patterns, ["incoming", "stored"]);
         assert_eq!(found[1].function.shape, "(Self)->Self where ");
         assert_eq!(found[3].function.shape, "(&Ray)->Option<Span> where ");
-        assert_eq!(
-            stub_task(IMPLS, &found[0].function).as_deref(),
-            Some("zbuffer")
-        );
+        assert_eq!(found[0].function.task.as_deref(), Some("zbuffer"));
     }
 
     #[test]
@@ -546,5 +507,50 @@ mod nested {
         let found = public_functions(source);
         assert_eq!(arguments(&found[0]), None);
         assert_eq!(arguments(&found[1]).as_deref(), Some("_a"));
+    }
+
+    #[test]
+    fn functions_returning_arrays_are_found() {
+        // The `;` of an array type in a return type is no end of a
+        // declaration.
+        let source = "\
+pub fn table() -> [f32; 4] { [0.0; 4] }
+pub fn edges(triangles: &[[u32; 3]]) -> Vec<[u32; 2]> { todo!(\"render: edges\") }
+";
+        let found = public_functions(source);
+        let names: Vec<&str> = found.iter().map(|f| f.name.as_str()).collect();
+        assert_eq!(names, ["table", "edges"]);
+        assert_eq!(found[1].shape, "(&[[u32;3]])->Vec<[u32;2]> where ");
+        assert_eq!(&source[found[1].body.clone()], " todo!(\"render: edges\") ");
+    }
+
+    #[test]
+    fn shapes_keep_mut_and_name_the_implementing_type_self() {
+        // `mut` is a keyword, not a path segment of `mut glam`; a type
+        // after a lifetime (`&'static Recorder`) is still that type.
+        let found = public_functions("pub fn a(v: &mut glam::Vec2) {}\npub fn b(v: &Vec2) {}\n");
+        assert_eq!(found[0].shape, "(&mutVec2)-> where ");
+        assert_ne!(found[0].shape, found[1].shape);
+        let found =
+            methods("impl Recorder {\n    pub fn get() -> Option<&'static Recorder> { None }\n}\n");
+        assert_eq!(found[0].function.shape, "()->Option<&'staticSelf> where ");
+    }
+
+    #[test]
+    fn functions_and_todos_in_strings_and_comments_are_not_code() {
+        let source = "\
+const FAKE: &[u8] = br#\"pub fn fake() {\"#;
+/* /* pub fn hidden() {} */ */
+const QUOTED: &str = \"pub fn quoted() {}\";
+pub fn real() {
+    let _ = \"todo!(\\\"fake: x\\\")\";
+    // todo!(\"comment: y\")
+    todo!(\"real: z\")
+}
+";
+        let found = public_functions(source);
+        let names: Vec<&str> = found.iter().map(|f| f.name.as_str()).collect();
+        assert_eq!(names, ["real"]);
+        assert_eq!(found[0].task.as_deref(), Some("real"));
     }
 }

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 
 use crate::stage;
-use crate::{stubs, topics};
+use crate::topics;
 
 use super::{grade_planted, rounds};
 
@@ -104,7 +104,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
 /// stand-ins could not be planted (a pattern such as `_` drops a value).
 pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)> {
     use crate::staff::stubs::stand_ins::{
-        Function, Method, methods, plant, plant_method, public_functions, stub_task,
+        Function, Method, methods, plant, plant_method, public_functions,
     };
     let read = |path: &Path| {
         fs::read_to_string(root.join(path))
@@ -176,7 +176,7 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
         for file in task_files.iter().filter(|f| f.starts_with(&crate_dir)) {
             let stub = read(file)?;
             for task_fn in public_functions(&stub) {
-                let Some(task) = stub_task(&stub, &task_fn) else {
+                let Some(task) = task_fn.task.clone() else {
                     continue;
                 };
                 for ((dir, given_file, package), text, function) in &given {
@@ -220,7 +220,7 @@ pub(super) fn find_stand_ins(root: &Path) -> Result<(Vec<StandIn>, usize, usize)
             // task's, its parameters bound to the task's arguments and the
             // names of its module in scope.
             for task_method in methods(&stub) {
-                let Some(task) = stub_task(&stub, &task_method.function) else {
+                let Some(task) = task_method.function.task.clone() else {
                     continue;
                 };
                 for ((dir, given_file, package), text, method) in &given_methods {
@@ -292,8 +292,7 @@ pub(super) fn public_chain(root: &Path, crate_dir: &Path, module: &[String]) -> 
     let mut folder = src.clone();
     for name in module {
         let text = fs::read_to_string(&parent).unwrap_or_default();
-        let masked = stubs::quiet::mask(&text);
-        if !masked.contains(&format!("pub mod {name};")) {
+        if !declares_public_module(&text, name) {
             return false;
         }
         folder = folder.join(name);
@@ -304,4 +303,31 @@ pub(super) fn public_chain(root: &Path, crate_dir: &Path, module: &[String]) -> 
         };
     }
     true
+}
+
+/// Whether the Rust file `text` declares `pub mod name;` among its items
+/// (read from its syntax tree: not in a comment, not in a nested module).
+fn declares_public_module(text: &str, name: &str) -> bool {
+    syn::parse_str::<syn::File>(text).is_ok_and(|file| {
+        file.items.iter().any(|item| {
+            matches!(item, syn::Item::Mod(module)
+                if module.ident == name
+                    && module.content.is_none()
+                    && matches!(module.vis, syn::Visibility::Public(_)))
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_public_module_is_declared_by_an_item_not_a_comment() {
+        let text = "// pub mod commented;\n/* pub mod hidden; */\nmod private;\nmod outer {\n    pub mod inner;\n}\npub mod dda;\n";
+        assert!(declares_public_module(text, "dda"));
+        for name in ["commented", "hidden", "private", "inner"] {
+            assert!(!declares_public_module(text, name), "{name}");
+        }
+    }
 }
