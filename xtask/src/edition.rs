@@ -24,8 +24,31 @@ use anyhow::{Context, Result, ensure};
 use serde::Deserialize;
 
 use crate::cargo::{self, cargo};
-use crate::stage::{Files, Source};
 use crate::topics::{self, Topic};
+
+/// Where a staged file's contents come from.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Source {
+    /// A file to copy.
+    File(PathBuf),
+    /// Contents made by the tooling (a rewritten manifest).
+    Text(Vec<u8>),
+}
+
+impl Source {
+    /// The contents.
+    pub fn read(&self) -> Result<Vec<u8>> {
+        match self {
+            Source::File(path) => {
+                fs::read(path).with_context(|| format!("cannot read {}", path.display()))
+            }
+            Source::Text(text) => Ok(text.clone()),
+        }
+    }
+}
+
+/// The files of a tree: (path in it, contents), sorted by path.
+pub type Files = Vec<(PathBuf, Source)>;
 
 /// Paths (relative to the course root) that only the course's authors
 /// need: never released.

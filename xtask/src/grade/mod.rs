@@ -195,7 +195,7 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
         Overlay::Reference => Edition::Reference,
         Overlay::Own | Overlay::Submission(_) => Edition::Student,
         #[cfg(feature = "staff")]
-        Overlay::DoNothing(_) => Edition::Student,
+        Overlay::Texts(_) => Edition::Student,
     };
     let report = grade_tree(&in_stage, edition)?.report(Adjustments {
         shown_root: Some(root),

@@ -14,8 +14,9 @@ use anyhow::{Result, bail, ensure};
 
 use super::class_workflow;
 use super::classroom::{self, CourseRepo};
+use crate::edition::Source;
 use crate::edition::{edition_files, select_topics, trim_lock_file};
-use crate::stage::{self, Source};
+use crate::stage;
 
 /// What a release holds.
 #[derive(Debug)]

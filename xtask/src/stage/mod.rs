@@ -41,6 +41,7 @@ use std::path::{Component, Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 
+use crate::edition::{Files, Source};
 use crate::files::{files_under, plain_file};
 
 mod build;
@@ -77,30 +78,6 @@ pub fn class_home(root: &Path, slot: usize) -> PathBuf {
 pub fn class_homes(root: &Path) -> PathBuf {
     home(root).join("class")
 }
-
-/// Where a staged file's contents come from.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Source {
-    /// A file to copy.
-    File(PathBuf),
-    /// Contents made by the tooling (a rewritten manifest).
-    Text(Vec<u8>),
-}
-
-impl Source {
-    /// The contents.
-    pub fn read(&self) -> Result<Vec<u8>> {
-        match self {
-            Source::File(path) => {
-                fs::read(path).with_context(|| format!("cannot read {}", path.display()))
-            }
-            Source::Text(text) => Ok(text.clone()),
-        }
-    }
-}
-
-/// The files of a tree: (path in it, contents), sorted by path.
-pub type Files = Vec<(PathBuf, Source)>;
 
 /// A synced stage, locked for as long as this value lives.
 #[derive(Debug)]
@@ -139,17 +116,16 @@ pub enum Overlay<'a> {
     /// lacks, or reaches through a symbolic link ([`plain_file`]), keeps
     /// its stub.
     Submission(&'a Path),
-    /// The stubs with each `todo!()` replaced by the cheapest body that
-    /// compiles (see `stubs::do_nothing`), except on the lines listed per
-    /// task file: the edition every task must score 0 with.
+    /// The stubs with the given task files' texts laid over them, by the
+    /// file's path in the course (the staff's do-nothing edition, which
+    /// every task must score 0 with).
     #[cfg(feature = "staff")]
-    DoNothing(&'a DoNothingKeep),
+    Texts(&'a TaskTexts),
 }
 
-/// Lines (1-based) of task files whose `todo!()` the do-nothing edition
-/// keeps, by the file's path in the course.
+/// Task files' texts by their paths in the course (see [`Overlay::Texts`]).
 #[cfg(feature = "staff")]
-pub type DoNothingKeep = std::collections::BTreeMap<PathBuf, Vec<usize>>;
+pub type TaskTexts = std::collections::BTreeMap<PathBuf, String>;
 
 /// Whether a path (relative to a course root) is a student's: inside
 /// `exercises/<topic>/src/`.
@@ -236,15 +212,10 @@ pub fn edition_plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
             }
         }
         #[cfg(feature = "staff")]
-        Overlay::DoNothing(keep) => {
-            for task_file in task_files(root)? {
-                let path = root.join(&task_file);
-                let stub = fs::read_to_string(&path)
-                    .with_context(|| format!("cannot read {}", path.display()))?;
-                let lines = keep.get(&task_file).map_or(&[][..], Vec::as_slice);
-                let (text, _) = crate::staff::stubs::do_nothing(&stub, lines);
-                files.retain(|(to, _)| *to != task_file);
-                files.push((task_file, Source::Text(text.into_bytes())));
+        Overlay::Texts(texts) => {
+            for (task_file, text) in texts {
+                files.retain(|(to, _)| to != task_file);
+                files.push((task_file.clone(), Source::Text(text.clone().into_bytes())));
             }
         }
         Overlay::Submission(submission) => {

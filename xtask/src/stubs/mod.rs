@@ -2,7 +2,8 @@
 //! solution region, which file holds a task's stub, and the masking of
 //! comments and strings the grader's checks share. Writing the stubs, and
 //! the do-nothing edition of the self-test, is the staff's (`cargo xtask
-//! stubs`, `crate::staff::stubs`, which reads Rust as syn's syntax trees).
+//! stubs`, in the course repository only, which reads Rust as syn's
+//! syntax trees).
 //!
 //! Every `reference/NN-topic/src/X.rs` is copied to `exercises/NN-topic/src/X.rs`
 //! with each marked solution replaced by a `todo!`:

@@ -2,7 +2,7 @@
 //! character literals blanked out ([`mask`]), and the few lexical helpers
 //! built on it: what the grader's checks of a task file (`todo!` stubs,
 //! forbidden constructs, snapshot names) read Rust by. (The staff's stub
-//! tools read it as syntax trees: `crate::staff::stubs::syntax`.)
+//! tools, in the course repository only, read it as syntax trees.)
 
 use proc_macro2::{TokenStream, TokenTree};
 

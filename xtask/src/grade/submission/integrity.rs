@@ -11,8 +11,9 @@ use serde::{Deserialize, Serialize};
 
 use super::slashed;
 use crate::edition as release;
+use crate::edition::{Files, Source};
 use crate::files::files_under;
-use crate::stage::{self, Files, Source, is_student_file};
+use crate::stage::{self, is_student_file};
 use crate::topics::{self, Topic};
 
 /// What differs between a submission and the official course, in the

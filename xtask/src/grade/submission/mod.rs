@@ -43,7 +43,8 @@ use super::Permits;
 use super::adjustments::Adjustments;
 use super::report::{Edition, Report};
 use super::{GradeOptions, table};
-use crate::stage::{self, Overlay, Source};
+use crate::edition::{Files, Source};
+use crate::stage::{self, Overlay};
 use crate::topics;
 
 mod integrity;
@@ -138,7 +139,7 @@ struct Intake {
     absent: Vec<String>,
     integrity: Integrity,
     /// The files of its stage (see [`staged_files`]).
-    files: stage::Files,
+    files: Files,
     refused: Vec<(String, Vec<String>)>,
     unreadable: Vec<(String, String)>,
     /// The official course's files before the grade, to find what its
@@ -247,7 +248,7 @@ struct Taken {
     /// Every task file of the course (see `stage::task_files`): the
     /// submission's copy, read once, or the official stub where the
     /// submission's is missing, unreadable or refused.
-    files: stage::Files,
+    files: Files,
     /// Per topic, the uses of what a task file may not do (see
     /// `forbidden`): the topic is not compiled.
     refused: Vec<(String, Vec<String>)>,
@@ -326,7 +327,7 @@ fn take_task_files(official: &Path, submission: &Path) -> Result<Taken> {
 /// them (each read once, held in memory), and what it found. Nothing of
 /// the submission is left to be read later: no staged file is a path
 /// into it.
-fn staged_files(official: &Path, submission: &Path) -> Result<(stage::Files, Taken)> {
+fn staged_files(official: &Path, submission: &Path) -> Result<(Files, Taken)> {
     let taken = take_task_files(official, submission)?;
     let mut files = stage::plan(official, Overlay::Submission(submission))?;
     files.retain(|(to, _)| !taken.files.iter().any(|(task_file, _)| task_file == to));

@@ -2,14 +2,15 @@
 //! the untouched stubs and a do-nothing edition nothing, and the snapshot
 //! review of the diffs the do-nothing edition leaves.
 
+use std::collections::BTreeMap;
 use std::fs;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-use anyhow::{Result, bail, ensure};
+use anyhow::{Context, Result, bail, ensure};
 
 use crate::grade::TaskStatus;
 use crate::grade::report::TestStatus;
-use crate::stage::{self, DoNothingKeep, Overlay};
+use crate::stage::{self, Overlay, TaskTexts};
 
 use super::browser::report_in_chromium;
 use super::edition::error_lines;
@@ -165,14 +166,33 @@ pub(super) fn stubs_score_zero(root: &Path) -> Result<String> {
     ))
 }
 
+/// The task files of the do-nothing edition: each `todo!()` replaced by
+/// the cheapest body that compiles (`staff::stubs::do_nothing`), except on
+/// the lines listed per task file.
+fn do_nothing_edition(root: &Path, keep: &BTreeMap<PathBuf, Vec<usize>>) -> Result<TaskTexts> {
+    stage::task_files(root)?
+        .into_iter()
+        .map(|task_file| {
+            let path = root.join(&task_file);
+            let stub = fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            let lines = keep.get(&task_file).map_or(&[][..], Vec::as_slice);
+            let (text, _) = crate::staff::stubs::do_nothing(&stub, lines);
+            Ok((task_file, text))
+        })
+        .collect()
+}
+
 /// A do-nothing edition (every `todo!()` replaced by the cheapest body
 /// that compiles) scores 0 on every task: no test pays for doing nothing.
 pub(super) fn do_nothing_scores_zero(root: &Path) -> Result<String> {
     // A body that does not compile (a return type without `Default`) keeps
     // its `todo!()`: the errors name the lines, a few rounds at most.
-    let mut keep = DoNothingKeep::new();
+    let mut keep: BTreeMap<PathBuf, Vec<usize>> = BTreeMap::new();
+    let mut texts = TaskTexts::new();
     for round in 1.. {
-        let staged = stage::stage(root, Overlay::DoNothing(&keep), None)?;
+        texts = do_nothing_edition(root, &keep)?;
+        let staged = stage::stage(root, Overlay::Texts(&texts), None)?;
         let mut command = staged.cargo();
         // Every crate's errors at once, not just the first failing crate's.
         command.args([
@@ -202,7 +222,7 @@ pub(super) fn do_nothing_scores_zero(root: &Path) -> Result<String> {
             );
         }
     }
-    let report = grade_into(root, Overlay::DoNothing(&keep), "do-nothing")?;
+    let report = grade_into(root, Overlay::Texts(&texts), "do-nothing")?;
     let mut problems = Vec::new();
     for topic in &report.topics {
         for task in topic.tasks.iter().filter(|t| t.score > 0.0) {
