@@ -246,6 +246,35 @@ fn drop_marked(text: &str, begin: &str, end: &str) -> String {
     out
 }
 
+/// The opening marker of a part of the README about some topics only:
+/// `<!-- topics 07-bezier 08-nurbs -->`, closed by [`TOPICS_END`].
+const TOPICS_BEGIN: &str = "<!-- topics ";
+
+/// The closing marker of a [`TOPICS_BEGIN`] part.
+const TOPICS_END: &str = "<!-- /topics -->";
+
+/// `text` with its marked parts about some topics (see [`TOPICS_BEGIN`])
+/// kept where one of their topics is released and dropped where none is;
+/// the markers go either way.
+fn keep_parts_of(text: &str, topics: &[String]) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut keeping = true;
+    for line in text.split_inclusive('\n') {
+        if let Some(names) = line
+            .trim_start()
+            .strip_prefix(TOPICS_BEGIN)
+            .and_then(|rest| rest.trim_end().strip_suffix("-->"))
+        {
+            keeping = names.split_whitespace().any(|n| topics.iter().any(|t| t == n));
+        } else if line.trim() == TOPICS_END {
+            keeping = true;
+        } else if keeping {
+            out.push_str(line);
+        }
+    }
+    out
+}
+
 /// The root manifest of the edition.
 fn manifest(text: &str, crates: &[String], all_crates: &[String]) -> String {
     let text = drop_marked(text, "# BEGIN COURSE ONLY", "# END COURSE ONLY");
@@ -270,10 +299,12 @@ const README_REPLACEMENTS: [(&str, &str); 2] = [
     ("cargo xtask test", "cargo test"),
 ];
 
-/// The README of the edition: without the course-only parts, the layout
-/// lines of what it lacks and the table rows of topics not released.
+/// The README of the edition: without the course-only parts, the parts
+/// and table rows of topics not released and the layout lines of what it
+/// lacks.
 fn readme(text: &str, topics: &[String], all_topics: &[String], crates: &[String]) -> String {
     let text = drop_marked(text, "<!-- course only -->", "<!-- /course only -->");
+    let text = keep_parts_of(&text, topics);
     let absent_topic = |line: &str| {
         line.starts_with('|')
             && all_topics
@@ -480,6 +511,16 @@ mod tests {
             drop_marked(text, "# BEGIN COURSE ONLY", "# END COURSE ONLY"),
             "a\nc\n"
         );
+    }
+
+    #[test]
+    fn a_part_about_topics_stays_only_with_one_of_them() {
+        let text = "a\n<!-- topics 07-bezier 08-nurbs -->\ncurves\n<!-- /topics -->\nb\n<!-- topics 10-gpu -->\ngpu\n<!-- /topics -->\n";
+        assert_eq!(
+            keep_parts_of(text, &["08-nurbs".to_owned()]),
+            "a\ncurves\nb\n"
+        );
+        assert_eq!(keep_parts_of(text, &["01-lines".to_owned()]), "a\nb\n");
     }
 
     #[test]
