@@ -265,7 +265,9 @@ fn keep_parts_of(text: &str, topics: &[String]) -> String {
             .strip_prefix(TOPICS_BEGIN)
             .and_then(|rest| rest.trim_end().strip_suffix("-->"))
         {
-            keeping = names.split_whitespace().any(|n| topics.iter().any(|t| t == n));
+            keeping = names
+                .split_whitespace()
+                .any(|n| topics.iter().any(|t| t == n));
         } else if line.trim() == TOPICS_END {
             keeping = true;
         } else if keeping {

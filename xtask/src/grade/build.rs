@@ -80,6 +80,16 @@ pub struct Builder {
     pub emptied: Vec<PathBuf>,
 }
 
+impl Builder {
+    /// Whether nothing was built into the build folder yet: the first
+    /// build compiles every dependency too.
+    #[must_use]
+    pub fn is_first(&self) -> bool {
+        std::fs::read_dir(self.target_dir.join("debug").join("deps"))
+            .map_or(true, |mut entries| entries.next().is_none())
+    }
+}
+
 /// How one cargo run of a build ended.
 pub struct CargoRun {
     /// It succeeded.
@@ -237,6 +247,7 @@ pub fn target_dir_of(root: &Path, target_dir: Option<&Path>) -> PathBuf {
 /// with [`build`], so that one topic's compile errors fail that topic
 /// alone; `Err(Some(reason))` when it ran into a limit, which every topic
 /// fails with (building them one by one would only run into it again).
+#[cfg(feature = "staff")]
 pub fn build_all(
     builder: &Builder,
     topics: &[Topic],
@@ -282,6 +293,59 @@ pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
         return Ok(Build::Failed(compiler_errors(&run.stderr)));
     }
     Ok(Build::Built(test_binaries(&run.stdout, None)))
+}
+
+/// Builds `topic`'s tests alone, as a build of all of `topics` (which
+/// holds it) would: cargo chooses the dependencies' features by the
+/// packages a build names, so the topic's test targets are named with
+/// every topic's package, and the dependencies are built once, with the
+/// features of the whole set, whichever topic comes first. (A test file
+/// of the same name in another topic is built with it: found again when
+/// that topic's turn comes.)
+pub fn build_among(builder: &Builder, topics: &[Topic], topic: &Topic) -> Result<Build> {
+    let targets = test_targets(&topic.dir);
+    if topics.len() < 2 || targets.is_empty() {
+        return build(builder, topic);
+    }
+    let mut args = cargo_test_args();
+    for topic in topics {
+        args.extend(["--package", &topic.package]);
+    }
+    for target in &targets {
+        args.extend(["--test", target]);
+    }
+    let run = builder.cargo(&topic.name, &args, &[])?;
+    if let Some(stopped) = run.stopped {
+        return Ok(Build::Failed(stopped));
+    }
+    if !run.success {
+        return Ok(Build::Failed(compiler_errors(&run.stderr)));
+    }
+    Ok(Build::Built(test_binaries(&run.stdout, Some(&topic.dir))))
+}
+
+/// The names of the integration-test targets of the package at `dir`:
+/// cargo's `tests/<name>.rs` and `tests/<name>/main.rs`.
+fn test_targets(dir: &Path) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(dir.join("tests")) else {
+        return Vec::new();
+    };
+    let mut names: Vec<String> = entries
+        .filter_map(|entry| {
+            let entry = entry.ok()?;
+            let name = entry.file_name().into_string().ok()?;
+            let kind = entry.file_type().ok()?;
+            if kind.is_file() {
+                name.strip_suffix(".rs").map(str::to_owned)
+            } else if kind.is_dir() && entry.path().join("main.rs").is_file() {
+                Some(name)
+            } else {
+                None
+            }
+        })
+        .collect();
+    names.sort();
+    names
 }
 
 /// Builds the replay package of `topic`, whose folder in the stage is
@@ -488,6 +552,27 @@ fn is_cargo_status(line: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn test_targets_are_the_files_and_folders_cargo_builds_as_tests() {
+        let dir = std::env::temp_dir().join(format!("test-targets-{}", std::process::id()));
+        let tests = dir.join("tests");
+        for folder in ["common", "images", "walk"] {
+            std::fs::create_dir_all(tests.join(folder)).unwrap();
+        }
+        for file in [
+            "dda.rs",
+            "wu.rs",
+            "common/mod.rs",
+            "walk/main.rs",
+            "notes.txt",
+        ] {
+            std::fs::write(tests.join(file), "").unwrap();
+        }
+        assert_eq!(test_targets(&dir), ["dda", "walk", "wu"]);
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert!(test_targets(&dir).is_empty());
+    }
 
     #[test]
     fn test_executables_are_the_test_targets_built_for_testing() {

@@ -34,7 +34,9 @@
 mod adjustments;
 mod build;
 pub mod classroom;
+mod events;
 pub mod export;
+mod flow;
 mod forbidden;
 pub(crate) mod html;
 mod junit;
@@ -52,25 +54,22 @@ pub mod submission;
 pub(crate) mod table;
 mod verdict;
 
-use std::collections::HashMap;
-use std::fs;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use anyhow::{Context, Result, bail};
-use indicatif::ProgressBar;
+use anyhow::{Context, Result};
 
 use adjustments::Adjustments;
+#[cfg(feature = "staff")]
+pub(crate) use events::Silent;
+pub(crate) use events::{Events, Terminal};
 #[cfg(feature = "staff")]
 pub use pool::Permits;
 pub use report::{Edition, Report, TaskStatus};
 
 use crate::stage;
 pub use crate::stage::Overlay;
-use crate::topics;
-use build::{Build, TestBinary};
 use report::TopicReport;
-use run::Finished;
 
 /// Where insta writes the snapshots a test failed (`.snap.new`), under the
 /// report folder: the course's own stay untouched (and read-only in the
@@ -163,8 +162,13 @@ pub fn default_jobs() -> usize {
 /// The student code is graded in the checkout itself; the reference
 /// solutions in the stage (see `stage`), built in the stage's cache.
 pub fn grade(options: &GradeOptions) -> Result<Report> {
+    grade_with(options, &Terminal::new(options.progress))
+}
+
+/// [`grade`], telling `events` what it does.
+fn grade_with(options: &GradeOptions, events: &dyn Events) -> Result<Report> {
     if options.reference {
-        grade_staged(options, Overlay::Reference)
+        grade_staged_with(options, Overlay::Reference, events)
     } else {
         let root = std::path::absolute(&options.root)
             .with_context(|| format!("cannot find {}", options.root.display()))?;
@@ -172,7 +176,7 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
         // run that copy's tests.
         let target_dir = build::target_dir_of(&root, options.target_dir.as_deref());
         stage::claim_checkout_build(&root, &target_dir)?;
-        let report = grade_tree(options, Edition::Student)?.report(Adjustments {
+        let report = grade_tree(options, Edition::Student, events)?.report(Adjustments {
             shown_root: Some(root),
             ..Adjustments::default()
         });
@@ -184,7 +188,17 @@ pub fn grade(options: &GradeOptions) -> Result<Report> {
 /// Grades `options.root` staged with `overlay` (see `stage`), built in the
 /// stage's cache unless `options.target_dir` says otherwise, and writes
 /// the report files.
+#[cfg(feature = "staff")]
 pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Report> {
+    grade_staged_with(options, overlay, &Terminal::new(options.progress))
+}
+
+/// [`grade_staged`], telling `events` what it does.
+fn grade_staged_with(
+    options: &GradeOptions,
+    overlay: Overlay<'_>,
+    events: &dyn Events,
+) -> Result<Report> {
     let root = std::path::absolute(&options.root)
         .with_context(|| format!("cannot find {}", options.root.display()))?;
     let staged = stage::stage(&root, overlay, options.target_dir.as_deref())?;
@@ -197,7 +211,7 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
         #[cfg(feature = "staff")]
         Overlay::Texts(_) => Edition::Student,
     };
-    let report = grade_tree(&in_stage, edition)?.report(Adjustments {
+    let report = grade_tree(&in_stage, edition, events)?.report(Adjustments {
         shown_root: Some(root),
         ..Adjustments::default()
     });
@@ -207,341 +221,8 @@ pub fn grade_staged(options: &GradeOptions, overlay: Overlay<'_>) -> Result<Repo
 
 /// Grades the course at `options.root` as it is, building it into
 /// `options.target_dir`; makes no report yet.
-fn grade_tree(options: &GradeOptions, edition: Edition) -> Result<Graded> {
-    prepare(options, edition, Setting::default())?.finish()
-}
-
-/// A course built and its tests listed, ready to run: the first half of a
-/// grade. Where the executables are kept apart (`Beside::keep_binaries`),
-/// what the tests run from no longer depends on the build folder.
-pub(crate) struct Prepared {
-    options: GradeOptions,
-    #[cfg(feature = "staff")]
-    beside: Option<Beside>,
-    edition: Edition,
-    started: Instant,
-    /// Seconds the builds took (and the listing of the tests).
-    build_s: f64,
-    root: PathBuf,
-    out: PathBuf,
-    plans: Vec<plan::Plan>,
-    viewer: pipeline::Viewer,
-}
-
-/// Builds the course at `options.root` (every topic and the pipeline's
-/// viewer, but the topics `setting` says are absent) and lists its tests.
-pub(crate) fn prepare(
-    options: &GradeOptions,
-    edition: Edition,
-    setting: Setting,
-) -> Result<Prepared> {
-    let started = Instant::now();
-    let root = std::path::absolute(&options.root)
-        .with_context(|| format!("cannot find {}", options.root.display()))?;
-    let out = std::path::absolute(&options.out)
-        .with_context(|| format!("cannot find {}", options.out.display()))?;
-    let topics = topics::select(&root, &options.topics)?;
-    if topics.is_empty() {
-        bail!(
-            "there are no topics in {}",
-            root.join("exercises").display()
-        );
-    }
-    fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
-    if topics.iter().any(|topic| topic.sheet.gpu) {
-        crate::setup::ensure_vulkan();
-    }
-    let spinner = |message: String| spinner(message, options.progress);
-    // (What an earlier grade's tests left may be anything: removed by the
-    // grader's bounded removal, never `fs::remove_dir_all`.)
-    for stale in [
-        out.join(PENDING_SNAPSHOTS),
-        out.join("scratch"),
-        out.join("build"),
-    ] {
-        crate::files::remove_tree(&stale)
-            .with_context(|| format!("cannot clear {}", stale.display()))?;
-    }
-
-    // Build every topic first: cargo serialises builds anyway. All at
-    // once when they compile, one by one to tell whose errors they are.
-    let target_dir = build::target_dir_of(&root, options.target_dir.as_deref());
-    let builder = build::Builder {
-        root: root.clone(),
-        logs: out.join("build"),
-        time_limit: options.build_time_limit,
-        // A checkout graded in place builds into its own `target/`, which
-        // also holds its stages and reports: not cargo's, not shown.
-        emptied: [
-            target_dir.join("xtask"),
-            target_dir.join("grade"),
-            out.clone(),
-        ]
-        .into_iter()
-        .filter(|dir| dir.starts_with(&target_dir))
-        .collect(),
-        target_dir,
-    };
-    let mut together: Option<std::vec::IntoIter<Vec<TestBinary>>> = None;
-    let mut stopped: Option<String> = None;
-    let held: Vec<topics::Topic> = topics
-        .iter()
-        .filter(|topic| !setting.absent.contains(&topic.name))
-        .cloned()
-        .collect();
-    if held.len() > 1 {
-        let spinner = spinner(format!("building {} topics", held.len()));
-        match build::build_all(&builder, &held)? {
-            Ok(all) => together = Some(all.into_iter()),
-            Err(reason) => stopped = reason,
-        }
-        spinner.finish_and_clear();
-    }
-    let mut plans = Vec::new();
-    for topic in &topics {
-        for stale in [
-            out.join("images").join(&topic.name),
-            out.join("logs").join(&topic.name),
-        ] {
-            crate::files::remove_tree(&stale)
-                .with_context(|| format!("cannot clear {}", stale.display()))?;
-        }
-        if setting.absent.contains(&topic.name) {
-            plans.push(plan::absent(topic));
-            continue;
-        }
-        let build = match (together.as_mut().and_then(Iterator::next), &stopped) {
-            // (None found: built on its own, which says why.)
-            (Some(binaries), _) if !binaries.is_empty() => Build::Built(binaries),
-            (_, Some(reason)) => Build::Failed(reason.clone()),
-            _ => {
-                let spinner = spinner(format!("building {}", topic.name));
-                let build = build::build(&builder, topic);
-                spinner.finish_and_clear();
-                build?
-            }
-        };
-        let build = match (crate::stage::replay::package_dir(&root, topic), build) {
-            (Some(package_dir), Build::Built(mut binaries)) => {
-                let spinner = spinner(format!("building the replay of {}", topic.name));
-                let built = build::add_replays(&builder, topic, &package_dir, &mut binaries);
-                spinner.finish_and_clear();
-                built?;
-                Build::Built(binaries)
-            }
-            (_, build) => build,
-        };
-        #[cfg(feature = "staff")]
-        let build = match (&setting.beside, build) {
-            (Some(beside), Build::Built(binaries)) => Build::Built(keep_binaries(
-                binaries,
-                &beside.keep_binaries.join(&topic.name),
-            )?),
-            (_, build) => build,
-        };
-        plans.push(plan::plan(&root, &out, topic, build));
-    }
-    let compiled: Vec<&str> = plans
-        .iter()
-        .filter(|plan| plan.compile_error.is_none())
-        .map(|plan| plan.topic.name.as_str())
-        .collect();
-    let graded: Vec<&str> = plans
-        .iter()
-        .filter(|plan| !plan.absent)
-        .map(|plan| plan.topic.name.as_str())
-        .collect();
-    let viewer = pipeline::build_viewer(&builder, &graded, &compiled);
-    #[cfg(feature = "staff")]
-    let viewer = match (&setting.beside, viewer) {
-        (Some(beside), pipeline::Viewer::Built(binary)) => {
-            match keep_binary(&binary, &beside.keep_binaries.join("viewer")) {
-                Ok(kept) => pipeline::Viewer::Built(kept),
-                Err(error) => pipeline::Viewer::Failed(format!("{error:#}")),
-            }
-        }
-        (_, viewer) => viewer,
-    };
-    Ok(Prepared {
-        options: options.clone(),
-        #[cfg(feature = "staff")]
-        beside: setting.beside,
-        edition,
-        started,
-        build_s: started.elapsed().as_secs_f64(),
-        root,
-        out,
-        plans,
-        viewer,
-    })
-}
-
-/// Hard links `binaries` into `dir` (emptied first): cargo replaces an
-/// executable it rebuilds with a new file, so the link keeps this build's.
-#[cfg(feature = "staff")]
-fn keep_binaries(binaries: Vec<TestBinary>, dir: &Path) -> Result<Vec<TestBinary>> {
-    crate::files::remove_tree(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
-    binaries
-        .into_iter()
-        .map(|binary| {
-            Ok(TestBinary {
-                executable: keep_binary(&binary.executable, dir)?,
-                replay: match &binary.replay {
-                    Some(replay) => Some(keep_binary(replay, &dir.join("replay"))?),
-                    None => None,
-                },
-                name: binary.name,
-            })
-        })
-        .collect()
-}
-
-/// Hard links (or, across file systems, copies) `binary` into `dir`.
-#[cfg(feature = "staff")]
-fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
-    fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let name = binary
-        .file_name()
-        .with_context(|| format!("{} has no file name", binary.display()))?;
-    let kept = dir.join(name);
-    let _ = fs::remove_file(&kept);
-    if fs::hard_link(binary, &kept).is_err() {
-        fs::copy(binary, &kept)
-            .with_context(|| format!("cannot copy {} to {}", binary.display(), kept.display()))?;
-    }
-    Ok(kept)
-}
-
-impl Prepared {
-    /// Runs the tests and draws the pipeline: the second half of a grade.
-    pub(crate) fn finish(self) -> Result<Graded> {
-        #[cfg(feature = "staff")]
-        let kept = self.beside.as_ref().map(|b| b.keep_binaries.clone());
-        let report = self.run();
-        #[cfg(feature = "staff")]
-        if let Some(kept) = kept {
-            let _ = crate::files::remove_tree(&kept);
-        }
-        report
-    }
-
-    fn run(self) -> Result<Graded> {
-        let Prepared {
-            options,
-            #[cfg(feature = "staff")]
-            beside,
-            edition,
-            started,
-            build_s,
-            root,
-            out,
-            plans,
-            viewer,
-        } = self;
-        let testing = Instant::now();
-        let out = out.as_path();
-        // Then run all tests of all topics in one pool.
-        let mut jobs: Vec<(usize, usize)> = plans
-            .iter()
-            .enumerate()
-            .flat_map(|(p, plan)| {
-                let runnable = plan
-                    .tests
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, test)| test.command.is_some());
-                runnable.map(move |(t, _)| (p, t))
-            })
-            .collect();
-        // First the first test of every task, then the second of every task,
-        // and so on: the workers run tests of different tasks side by side,
-        // so a task that loops costs one time limit, not one per worker.
-        let mut rank: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut order: HashMap<(usize, usize), usize> = HashMap::new();
-        for &(p, t) in &jobs {
-            let task = (p, plans[p].tests[t].task);
-            let next = rank.entry(task).or_insert(0);
-            order.insert((p, t), *next);
-            *next += 1;
-        }
-        jobs.sort_by_key(|&(p, t)| (order[&(p, t)], p, plans[p].tests[t].task, t));
-        // What the tests write into the report folder is kept within one
-        // budget for the whole grade, swept after each test (see
-        // `files::Keeper`).
-        let kept = pool::Kept {
-            keeper: std::sync::Mutex::new(crate::files::Keeper::new(
-                out,
-                crate::files::KEPT_BUDGET,
-            )),
-            pending: out.join(PENDING_SNAPSHOTS),
-        };
-        let workers = pool::Workers {
-            threads: options.jobs.max(1),
-            progress: options.progress,
-            #[cfg(feature = "staff")]
-            permits: beside.map(|beside| beside.permits),
-        };
-        let results = pool::run_all(&plans, &jobs, &workers, &kept)?;
-        let mut keeper = kept
-            .keeper
-            .into_inner()
-            .unwrap_or_else(std::sync::PoisonError::into_inner);
-
-        let mut finished: HashMap<(usize, usize), Finished> = HashMap::new();
-        for (&(p, t), result) in jobs.iter().zip(results) {
-            finished.insert((p, t), result);
-        }
-        let tests_s = testing.elapsed().as_secs_f64();
-        let graded: Vec<String> = plans
-            .iter()
-            .filter(|plan| !plan.absent)
-            .map(|plan| plan.topic.name.clone())
-            .collect();
-        let topics: Vec<TopicReport> = plans
-            .into_iter()
-            .enumerate()
-            .map(|(p, plan)| verdict::topic_report(out, plan, |t| finished.remove(&(p, t))))
-            .collect();
-        let spinner = spinner(
-            "drawing the pipeline with your stages".to_owned(),
-            options.progress,
-        );
-        let graded: Vec<&str> = graded.iter().map(String::as_str).collect();
-        let drawing = Instant::now();
-        let pipeline = pipeline::draw_all(
-            &pipeline::Plan {
-                root: &root,
-                out,
-                graded: &graded,
-            },
-            &viewer,
-        );
-        spinner.finish_and_clear();
-        // The builds' logs (the compiler's messages, which quote student
-        // code) and what the listings of the tests and the viewer printed
-        // into scratch, up to the output limit each, count to the same
-        // budget.
-        for folder in [out.join("build"), out.join("scratch")] {
-            for log in crate::files::listing(&folder) {
-                keeper.keep_log(&folder.join(log));
-            }
-        }
-        let left_out = keeper.left_out();
-        let phases = report::Phases {
-            build_s: report::round2(build_s),
-            tests_s: report::round2(tests_s),
-            pipeline_s: report::round2(drawing.elapsed().as_secs_f64()),
-        };
-        Ok(Graded {
-            root,
-            edition,
-            started,
-            phases,
-            topics,
-            pipeline,
-            left_out,
-        })
-    }
+fn grade_tree(options: &GradeOptions, edition: Edition, events: &dyn Events) -> Result<Graded> {
+    flow::prepare(options, edition, Setting::default(), events)?.finish(events)
 }
 
 /// A grade whose tests have run and whose pipeline is drawn, before its
@@ -601,18 +282,23 @@ impl Graded {
     }
 }
 
-/// `cargo xtask grade`: grade, print the table and the failures.
+/// `cargo xtask grade`: grade, print the table (each topic's rows as soon
+/// as its tests have ended) and the failures.
 pub fn run(options: &GradeOptions) -> Result<Report> {
-    let report = grade(options)?;
-    print!(
-        "{}",
-        table::render(
-            &report,
-            &options.out,
-            table::Style::detect(),
-            table::Details::EveryTask
-        )
-    );
+    let terminal = Terminal::with_rows(options.progress);
+    let report = grade_with(options, &terminal)?;
+    let style = table::Style::detect();
+    let details = table::Details::EveryTask;
+    if terminal.rows_shown() == report.topics.len() {
+        let layout = table::Layout::of(&report);
+        print!(
+            "{}{}",
+            layout.total(&report, style),
+            table::below_table(&report, &options.out, style, details)
+        );
+    } else {
+        print!("{}", table::render(&report, &options.out, style, details));
+    }
     Ok(report)
 }
 
@@ -648,13 +334,4 @@ pub fn one_screen(report: &Report, out: &Path) -> String {
         table::Style::detect(),
         table::Details::FirstTask,
     )
-}
-
-fn spinner(message: String, shown: bool) -> ProgressBar {
-    if !shown {
-        return ProgressBar::hidden();
-    }
-    let spinner = ProgressBar::new_spinner().with_message(message);
-    spinner.enable_steady_tick(Duration::from_millis(100));
-    spinner
 }

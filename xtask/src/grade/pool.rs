@@ -1,16 +1,18 @@
 //! The pool tests run in: `--jobs` workers, and across the submissions of
 //! a class graded side by side (the staff's class), one count of tests
-//! running at once (`Permits`).
+//! running at once (`Permits`). The pool says what it does to the grade's
+//! [`Events`]; when a topic's last test has ended, its caller is handed
+//! the topic's outcomes at once, while the workers go on with the next.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::Duration;
+use std::sync::mpsc;
 
 use anyhow::Result;
-use indicatif::{ProgressBar, ProgressStyle};
 
+use super::events::Events;
 use super::plan::{Plan, PlannedTest};
 use super::run::Finished;
 use crate::files::Keeper;
@@ -87,44 +89,58 @@ impl Kept {
 pub(super) struct Workers {
     /// Tests run at the same time.
     pub(super) threads: usize,
-    /// A progress bar on stderr (hidden when stderr is not a terminal).
-    pub(super) progress: bool,
     /// Shared with the grades of a class's other slots: a test runs only
     /// while one of them is free.
     #[cfg(feature = "staff")]
     pub(super) permits: Option<std::sync::Arc<Permits>>,
 }
 
-/// Runs the given tests as `workers` says; after each, `kept` sweeps what
-/// it wrote into the report folder.
+/// The outcomes of a topic's tests, by the test's index in its plan.
+pub(super) type TopicOutcomes = HashMap<usize, Finished>;
+
+/// Runs the tests `jobs` ((plan, test) pairs) as `workers` says; after
+/// each, `kept` sweeps what it wrote into the report folder. As soon as
+/// every test of a plan has ended, and every plan before it is done,
+/// `topic_done` gets the plan's index and its outcomes (a plan without
+/// tests is done at once): in the plans' order, on the calling thread,
+/// while the workers run the next tests.
+///
+/// # Errors
+/// The first test that could not be run at all (not one that failed):
+/// the tests still run, and the plans after it are not handed on.
 pub(super) fn run_all(
     plans: &[Plan],
     jobs: &[(usize, usize)],
     workers: &Workers,
     kept: &Kept,
-) -> Result<Vec<Finished>> {
+    events: &dyn Events,
+    mut topic_done: impl FnMut(usize, TopicOutcomes),
+) -> Result<()> {
     crate::sandbox::stop_all_on_interrupt();
-    let bar = if workers.progress {
-        let bar = ProgressBar::new(jobs.len() as u64).with_style(
-            ProgressStyle::with_template(
-                "{spinner} [{elapsed}] {bar:30} {pos}/{len} tests  {wide_msg}",
-            )
-            .expect("a valid progress template"),
-        );
-        bar.enable_steady_tick(Duration::from_millis(100));
-        bar
-    } else {
-        ProgressBar::hidden()
+    let mut remaining = vec![0_usize; plans.len()];
+    for &(p, _) in jobs {
+        remaining[p] += 1;
+    }
+    let mut outcomes: Vec<TopicOutcomes> = plans.iter().map(|_| HashMap::new()).collect();
+    let mut told = 0;
+    let mut tell = |remaining: &[usize], outcomes: &mut [TopicOutcomes]| {
+        while told < plans.len() && remaining[told] == 0 {
+            topic_done(told, std::mem::take(&mut outcomes[told]));
+            told += 1;
+        }
     };
+    tell(&remaining, &mut outcomes);
     let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Finished>>>> =
-        Mutex::new((0..jobs.len()).map(|_| None).collect());
     // Fail fast: the tasks (plan, task) one of whose tests timed out; their
     // tests not started yet are not run.
     let timed_out: Mutex<HashSet<(usize, usize)>> = Mutex::default();
+    let mut first_error = None;
     std::thread::scope(|scope| {
+        let (sender, receiver) = mpsc::channel::<(usize, Result<Finished>)>();
         for _ in 0..workers.threads.min(jobs.len()) {
-            scope.spawn(|| {
+            let sender = sender.clone();
+            let (next, timed_out) = (&next, &timed_out);
+            scope.spawn(move || {
                 loop {
                     let index = next.fetch_add(1, Ordering::Relaxed);
                     let Some(&(p, t)) = jobs.get(index) else {
@@ -133,11 +149,7 @@ pub(super) fn run_all(
                     let plan = &plans[p];
                     let test = &plan.tests[t];
                     // (A test's name is what its program listed: escaped.)
-                    bar.set_message(format!(
-                        "{} {}",
-                        plan.topic.name,
-                        super::table::shown(&test.name)
-                    ));
+                    events.test_start(&plan.topic.name, &super::table::shown(&test.name));
                     let command = test.command.as_ref().expect("only runnable tests are jobs");
                     let key = (p, test.task);
                     let skip = timed_out.lock().expect("no worker panics").contains(&key);
@@ -152,17 +164,29 @@ pub(super) fn run_all(
                     if result.as_ref().is_ok_and(|f| f.exit.timed_out) {
                         timed_out.lock().expect("no worker panics").insert(key);
                     }
-                    results.lock().expect("no worker panics")[index] = Some(result);
-                    bar.inc(1);
+                    events.test_end();
+                    if sender.send((index, result)).is_err() {
+                        break;
+                    }
                 }
             });
         }
+        drop(sender);
+        for (index, result) in receiver {
+            let (p, t) = jobs[index];
+            match result {
+                Ok(finished) => {
+                    outcomes[p].insert(t, finished);
+                }
+                Err(error) => {
+                    first_error.get_or_insert(error);
+                }
+            }
+            remaining[p] -= 1;
+            if first_error.is_none() {
+                tell(&remaining, &mut outcomes);
+            }
+        }
     });
-    bar.finish_and_clear();
-    results
-        .into_inner()
-        .expect("no worker panics")
-        .into_iter()
-        .map(|result| result.expect("every job ran"))
-        .collect()
+    first_error.map_or(Ok(()), Err)
 }

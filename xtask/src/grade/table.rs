@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::io::IsTerminal as _;
 use std::path::Path;
 
-use super::report::{self, Report, TaskReport, TaskStatus, TestStatus};
+use super::report::{self, Report, TaskReport, TaskStatus, TestStatus, TopicReport};
 
 /// Titles longer than this are cut in the table.
 const TITLE_WIDTH: usize = 44;
@@ -181,78 +181,184 @@ pub enum Details {
     FirstTask,
 }
 
+/// A task's row in the table, as the sheet gives it.
+#[derive(Debug, Clone)]
+pub struct RowShape {
+    /// The task's id.
+    pub id: String,
+    /// The task's title.
+    pub title: String,
+    /// Whether it is a bonus task.
+    pub bonus: bool,
+    /// Its points.
+    pub points: f64,
+}
+
+/// The table's columns, wide enough for every row and total any grade of
+/// these tasks can show: known before a test runs, so that each topic's
+/// rows can be printed as soon as its tests end and still line up.
+#[derive(Debug, Clone)]
+pub struct Layout {
+    /// topic, task, title, points.
+    widths: [usize; 4],
+}
+
+/// The columns' headings.
+const HEADINGS: [&str; 5] = ["topic", "task", "", "points", "status"];
+
+impl Layout {
+    /// The columns for the tasks `rows`, of the topics `topics`.
+    #[must_use]
+    pub fn new<'a>(topics: impl IntoIterator<Item = &'a str>, rows: &[RowShape]) -> Self {
+        let width = |text: &str| text.chars().count();
+        let mut widths = [0; 4];
+        for (w, heading) in widths.iter_mut().zip(HEADINGS) {
+            *w = width(heading);
+        }
+        widths[0] = widths[0].max(width("total"));
+        for topic in topics {
+            widths[0] = widths[0].max(width(&shown(topic)));
+        }
+        let (mut max, mut bonus) = (0.0, 0.0);
+        for row in rows {
+            widths[1] = widths[1].max(width(&shown(&row.id)));
+            widths[2] = widths[2].max(width(&title_text(&row.title, row.bonus)));
+            // A score has the integer digits of the points at most.
+            widths[3] = widths[3].max(width(&points_text(row.points, row.points)));
+            if row.bonus {
+                bonus += row.points;
+            } else {
+                max += row.points;
+            }
+        }
+        let (max, bonus) = (report::round2(max), report::round2(bonus));
+        widths[3] = widths[3].max(width(&total_text(max, max, bonus, bonus)));
+        Self { widths }
+    }
+
+    /// The columns of the tasks of `report`.
+    #[must_use]
+    pub fn of(report: &Report) -> Self {
+        Self::new(
+            report.topics.iter().map(|t| t.name.as_str()),
+            &report
+                .topics
+                .iter()
+                .flat_map(|topic| {
+                    topic.tasks.iter().map(|task| RowShape {
+                        id: task.id.clone(),
+                        title: task.title.clone(),
+                        bonus: task.bonus,
+                        points: task.points,
+                    })
+                })
+                .collect::<Vec<_>>(),
+        )
+    }
+
+    /// One line of the table, its last column painted by `paint`.
+    fn line(&self, cells: [&str; 4], last: &str) -> String {
+        let plain = format!(
+            "{}  {}  {}  {:>w$}  ",
+            pad(cells[0], self.widths[0]),
+            pad(cells[1], self.widths[1]),
+            pad(cells[2], self.widths[2]),
+            cells[3],
+            w = self.widths[3]
+        );
+        format!("{plain}{last}").trim_end().to_owned()
+    }
+
+    /// The heading line (after a blank line).
+    #[must_use]
+    pub fn heading(&self, style: Style) -> String {
+        let [a, b, c, d, e] = HEADINGS;
+        format!("\n{}\n", style.bold(&self.line([a, b, c, d], e)))
+    }
+
+    /// The rows of one topic's tasks.
+    #[must_use]
+    pub fn topic_rows(&self, topic: &TopicReport, style: Style) -> String {
+        let mut text = String::new();
+        for (i, task) in topic.tasks.iter().enumerate() {
+            let name = if i == 0 {
+                shown(&topic.name)
+            } else {
+                String::new()
+            };
+            let status = status_text(task);
+            let status = match task.status {
+                TaskStatus::Ok => style.good(status),
+                TaskStatus::Fail => style.bad(status),
+                TaskStatus::CompileError | TaskStatus::Error => style.warn(status),
+            };
+            let points = points_text(task.score, task.points);
+            let title = title_text(&task.title, task.bonus);
+            let _ = writeln!(
+                text,
+                "{}",
+                self.line([&name, &shown(&task.id), &title, &points], &status)
+            );
+        }
+        text
+    }
+
+    /// The total line: the points of the tasks that are not bonuses
+    /// against their maximum, the bonus apart (a bonus never hides a lost
+    /// point).
+    #[must_use]
+    pub fn total(&self, report: &Report, style: Style) -> String {
+        let base: f64 = report.topics.iter().map(|t| t.base_score()).sum();
+        let (bonus, possible) = report.topics.iter().fold((0.0, 0.0), |(e, p), t| {
+            let (earned, of) = t.bonus();
+            (e + earned, p + of)
+        });
+        let total = total_text(
+            report::round2(base),
+            report.max_score,
+            report::round2(bonus),
+            possible,
+        );
+        format!(
+            "{}\n",
+            style.bold(&self.line(["total", "", "", &total], ""))
+        )
+    }
+}
+
+/// A task's title in the table, cut to [`TITLE_WIDTH`].
+fn title_text(title: &str, bonus: bool) -> String {
+    let bonus = if bonus { " (bonus)" } else { "" };
+    cut(&shown(&format!("{title}{bonus}")), TITLE_WIDTH)
+}
+
+/// The total's points, with the bonus where a bonus is possible.
+fn total_text(base: f64, max: f64, bonus: f64, possible: f64) -> String {
+    let total = points_text(base, max);
+    if possible > 0.0 {
+        format!("{total} + {} bonus", points_text(bonus, possible))
+    } else {
+        total
+    }
+}
+
 /// The whole terminal output for a report: the table, then the failures
 /// `details` asks for.
 pub fn render(report: &Report, out: &Path, style: Style, details: Details) -> String {
-    let mut text = String::new();
-    // Columns: topic, task id, title, points (right-aligned), status.
-    let mut rows: Vec<[String; 5]> =
-        vec![["topic", "task", "", "points", "status"].map(str::to_owned)];
-    let mut statuses = vec![None];
+    let layout = Layout::of(report);
+    let mut text = layout.heading(style);
     for topic in &report.topics {
-        for (i, task) in topic.tasks.iter().enumerate() {
-            let bonus = if task.bonus { " (bonus)" } else { "" };
-            rows.push([
-                if i == 0 {
-                    shown(&topic.name)
-                } else {
-                    String::new()
-                },
-                shown(&task.id),
-                cut(&shown(&format!("{}{bonus}", task.title)), TITLE_WIDTH),
-                points_text(task.score, task.points),
-                status_text(task).to_owned(),
-            ]);
-            statuses.push(Some(task.status));
-        }
+        text.push_str(&layout.topic_rows(topic, style));
     }
-    // The points of the tasks that are not bonuses against their maximum,
-    // the bonus apart: a bonus never hides a lost point.
-    let base: f64 = report.topics.iter().map(|t| t.base_score()).sum();
-    let (bonus, possible) = report.topics.iter().fold((0.0, 0.0), |(e, p), t| {
-        let (earned, of) = t.bonus();
-        (e + earned, p + of)
-    });
-    let mut total = points_text(report::round2(base), report.max_score);
-    if possible > 0.0 {
-        total = format!(
-            "{total} + {} bonus",
-            points_text(report::round2(bonus), possible)
-        );
-    }
-    rows.push(["total", "", "", &total, ""].map(str::to_owned));
-    statuses.push(None);
-    let mut widths = [0; 5];
-    for row in &rows {
-        for (width, cell) in widths.iter_mut().zip(row) {
-            *width = (*width).max(cell.chars().count());
-        }
-    }
-    let last = rows.len() - 1;
-    let _ = writeln!(text);
-    for (index, (row, status)) in rows.iter().zip(&statuses).enumerate() {
-        let plain = format!(
-            "{}  {}  {}  {:>w$}  ",
-            pad(&row[0], widths[0]),
-            pad(&row[1], widths[1]),
-            pad(&row[2], widths[2]),
-            row[3],
-            w = widths[3]
-        );
-        let line = match status {
-            Some(TaskStatus::Ok) => format!("{plain}{}", style.good(&row[4])),
-            Some(TaskStatus::Fail) => format!("{plain}{}", style.bad(&row[4])),
-            Some(TaskStatus::CompileError | TaskStatus::Error) => {
-                format!("{plain}{}", style.warn(&row[4]))
-            }
-            None if index == 0 || index == last => {
-                style.bold(format!("{plain}{}", row[4]).trim_end())
-            }
-            None => plain,
-        };
-        let _ = writeln!(text, "{}", line.trim_end());
-    }
+    text.push_str(&layout.total(report, style));
+    text.push_str(&below_table(report, out, style, details));
+    text
+}
 
+/// What the terminal shows below the table: the compile errors, the
+/// errors, the failures `details` asks for, and the report's notes.
+pub fn below_table(report: &Report, out: &Path, style: Style, details: Details) -> String {
+    let mut text = String::new();
     let mut shown_one = false;
     for topic in &report.topics {
         if let Some(errors) = &topic.compile_error {
@@ -510,12 +616,48 @@ mod tests {
         // (Text of many lines, a compiler's message or a reason, keeps its
         // lines, each indented under its label: none starts a line.)
         let totals: Vec<&str> = text.lines().filter(|l| l.starts_with("total")).collect();
-        assert_eq!(totals, ["total           0.0 / 20"], "{text}");
+        assert_eq!(totals, ["total            0.0 / 20"], "{text}");
         assert!(!text.contains(['\r', '\u{1b}', '\u{202e}']), "{text}");
         assert!(
             text.contains("x\\ntotal 20.0 / 20 ok\\r\\u{1b}[2J"),
             "{text}"
         );
+    }
+
+    /// The table's lines are as long whatever the scores: a topic's rows
+    /// printed as soon as it is graded line up with the rows and the
+    /// total printed later.
+    #[test]
+    fn the_columns_do_not_depend_on_the_scores() {
+        let failed = report_of(12.5, vec![test("t::a", TestStatus::Failed)]);
+        let passed = report_of(12.5, vec![test("t::a", TestStatus::Passed)]);
+        let lines = |report: &Report| -> Vec<usize> {
+            let layout = Layout::of(report);
+            let style = Style { colour: false };
+            let text = format!(
+                "{}{}{}",
+                layout.heading(style),
+                layout.topic_rows(&report.topics[0], style),
+                layout.total(report, style)
+            );
+            // (The status column is last and not padded.)
+            text.lines()
+                .map(|line| {
+                    line.trim_end_matches(['o', 'k', 'F', 'A', 'I', 'L', ' '])
+                        .len()
+                })
+                .collect()
+        };
+        assert_eq!(passed.topics[0].tasks[0].score, 12.5);
+        assert_eq!(failed.topics[0].tasks[0].score, 0.0);
+        assert_eq!(lines(&failed), lines(&passed));
+        let text = render(
+            &failed,
+            Path::new("out"),
+            Style { colour: false },
+            Details::None,
+        );
+        assert!(text.contains("t   0.0 / 12.5  FAIL"), "{text}");
     }
 
     #[test]

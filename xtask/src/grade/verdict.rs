@@ -1,7 +1,7 @@
 //! From finished tests to the report of a topic: each test's verdict
 //! ([`super::outcome::judge`]), its pictures, and each task's points.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use super::outcome::{self, Exit};
 use super::plan::{Plan, PlannedTest};
@@ -13,7 +13,7 @@ const OUTPUT_EXCERPT_CHARS: usize = 4000;
 
 pub(super) fn topic_report(
     out: &Path,
-    plan: Plan,
+    plan: &Plan,
     mut finished: impl FnMut(usize) -> Option<Finished>,
 ) -> TopicReport {
     let topic = &plan.topic;
@@ -48,10 +48,10 @@ pub(super) fn topic_report(
             tests: Vec::new(),
         })
         .collect();
-    for (t, test) in plan.tests.into_iter().enumerate() {
+    for (t, test) in plan.tests.iter().enumerate() {
         let task = &mut tasks[test.task];
         let mut report = match finished(t) {
-            None => ignored_test(test.name),
+            None => ignored_test(test.name.clone()),
             Some(run) => test_report(out, test, run, time_limit_s),
         };
         if report.exit.timed_out
@@ -77,8 +77,8 @@ pub(super) fn topic_report(
         dir: topic.dir.clone(),
         time_limit_s,
         memory_limit_mib: topic.sheet.memory_limit_mib,
-        compile_error: plan.compile_error,
-        errors: plan.errors,
+        compile_error: plan.compile_error.clone(),
+        errors: plan.errors.clone(),
         score: 0.0,
         max_score: 0.0,
         tasks,
@@ -153,7 +153,7 @@ fn ignored_test(name: String) -> TestReport {
     }
 }
 
-fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
+fn test_report(out: &Path, test: &PlannedTest, run: Finished, time_limit_s: f64) -> TestReport {
     let verdict = outcome::judge(&run.output, &run.exit, &run.token, time_limit_s);
     let status = if verdict.passed {
         TestStatus::Passed
@@ -163,13 +163,12 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
     // Never following a link, never without end: the folder is the test's.
     let images = crate::files::listing(&test.images_dir);
     let ran = !run.exit.not_run;
-    let relative = |path: PathBuf| {
+    let relative = |path: &Path| {
         path.strip_prefix(out)
-            .map(Path::to_path_buf)
-            .unwrap_or(path)
+            .map_or_else(|_| path.to_path_buf(), Path::to_path_buf)
     };
     TestReport {
-        name: test.name,
+        name: test.name.clone(),
         status,
         reason: verdict.reason,
         panic_location: verdict.panic_location,
@@ -186,9 +185,10 @@ fn test_report(out: &Path, test: PlannedTest, run: Finished, time_limit_s: f64) 
         }),
         log: test
             .command
+            .as_ref()
             .filter(|_| ran)
-            .map(|command| relative(command.log)),
-        images_dir: (!images.is_empty()).then(|| relative(test.images_dir)),
+            .map(|command| relative(&command.log)),
+        images_dir: (!images.is_empty()).then(|| relative(&test.images_dir)),
         images,
     }
 }

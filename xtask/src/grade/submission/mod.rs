@@ -91,12 +91,14 @@ pub(crate) fn grade_one(
         .clone()
         .unwrap_or_else(|| submissions_build(official));
     let staged = stage::stage_plan(official, &intake.files, Some(&target_dir))?;
-    let prepared = super::prepare(
+    let events = super::Terminal::new(options.progress);
+    let prepared = super::flow::prepare(
         &intake.in_stage(&staged),
         Edition::Student,
         intake.setting(),
+        &events,
     )?;
-    intake.graded(official, &staged, prepared)
+    intake.graded(official, &staged, prepared, &events)
 }
 
 /// [`grade_one`] in a class's `slot` instead of the course's stage: the
@@ -122,10 +124,10 @@ pub(crate) fn grade_in_slot(
             }),
             ..intake.setting()
         };
-        let prepared = super::prepare(&in_stage, Edition::Student, setting)?;
+        let prepared = super::flow::prepare(&in_stage, Edition::Student, setting, &super::Silent)?;
         (staged, prepared)
     };
-    intake.graded(official, &staged, prepared)
+    intake.graded(official, &staged, prepared, &super::Silent)
 }
 
 /// A submission compared with the official course and its task files
@@ -208,9 +210,10 @@ impl Intake {
         self,
         official: &Path,
         staged: &stage::Stage,
-        prepared: super::Prepared,
+        prepared: super::flow::Prepared,
+        events: &dyn super::Events,
     ) -> Result<Report> {
-        let graded = prepared.finish()?;
+        let graded = prepared.finish(events)?;
         let mut integrity = self.integrity;
         integrity.tampered = tampered(official, &self.course_before, &staged.root, &self.planned)?;
         let in_course: Vec<String> = integrity
