@@ -152,18 +152,22 @@ fn building(builder: &build::Builder, what: &str) -> String {
 }
 
 impl Prepared {
+    /// The topics the graded code holds: all but the absent.
+    fn held(&self) -> Vec<Topic> {
+        self.topics
+            .iter()
+            .filter(|topic| !self.setting.absent.contains(&topic.name))
+            .cloned()
+            .collect()
+    }
+
     /// Builds every topic (all at once when they compile, one by one to
     /// tell whose errors they are) and the viewer, and lists the tests:
     /// a class's slot, before it gives up its turn.
     #[cfg(feature = "staff")]
     fn build_everything(&mut self, events: &dyn Events) -> Result<()> {
         let building_started = Instant::now();
-        let held: Vec<Topic> = self
-            .topics
-            .iter()
-            .filter(|topic| !self.setting.absent.contains(&topic.name))
-            .cloned()
-            .collect();
+        let held = self.held();
         let mut together: Option<std::vec::IntoIter<Vec<TestBinary>>> = None;
         let mut stopped: Option<String> = None;
         if held.len() > 1 {
@@ -219,13 +223,7 @@ impl Prepared {
             Some(build) => build,
             None => {
                 events.step(&building(&self.builder, &topic.name));
-                let held: Vec<Topic> = self
-                    .topics
-                    .iter()
-                    .filter(|topic| !self.setting.absent.contains(&topic.name))
-                    .cloned()
-                    .collect();
-                build::build_among(&self.builder, &held, topic)?
+                build::build_among(&self.builder, &self.held(), topic)?
             }
         };
         let build = match (crate::stage::replay::package_dir(&self.root, topic), build) {

@@ -15,7 +15,7 @@
 //! statement with no `;` after it, and only there; a `todo!(` in a string
 //! or a comment is no call.
 
-use syn::visit::{self, Visit};
+use syn::visit::Visit;
 use syn::{Block, Expr, Macro, ReturnType, Signature, Stmt, Type, TypeParamBound};
 
 use super::syntax::{Source, range};
@@ -93,22 +93,7 @@ impl<'ast> Tails<'ast> {
 }
 
 impl<'ast> Visit<'ast> for Tails<'ast> {
-    fn visit_item_fn(&mut self, function: &'ast syn::ItemFn) {
-        self.function(&function.sig, &function.block);
-        visit::visit_item_fn(self, function);
-    }
-
-    fn visit_impl_item_fn(&mut self, function: &'ast syn::ImplItemFn) {
-        self.function(&function.sig, &function.block);
-        visit::visit_impl_item_fn(self, function);
-    }
-
-    fn visit_trait_item_fn(&mut self, function: &'ast syn::TraitItemFn) {
-        if let Some(body) = &function.default {
-            self.function(&function.sig, body);
-        }
-        visit::visit_trait_item_fn(self, function);
-    }
+    super::syntax::visit_function_bodies!();
 }
 
 /// `stub` with each `todo!(…)` that is its function's whole result

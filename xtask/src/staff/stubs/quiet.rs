@@ -96,22 +96,7 @@ impl<'ast> Around<'ast> {
 // The tree is walked from the outside in: the last function and block
 // found to hold `at` are the innermost.
 impl<'ast> Visit<'ast> for Around<'ast> {
-    fn visit_item_fn(&mut self, function: &'ast syn::ItemFn) {
-        self.function(&function.sig, &function.block);
-        visit::visit_item_fn(self, function);
-    }
-
-    fn visit_impl_item_fn(&mut self, function: &'ast syn::ImplItemFn) {
-        self.function(&function.sig, &function.block);
-        visit::visit_impl_item_fn(self, function);
-    }
-
-    fn visit_trait_item_fn(&mut self, function: &'ast syn::TraitItemFn) {
-        if let Some(body) = &function.default {
-            self.function(&function.sig, body);
-        }
-        visit::visit_trait_item_fn(self, function);
-    }
+    super::syntax::visit_function_bodies!();
 
     fn visit_block(&mut self, block: &'ast Block) {
         if self.holds(block) {

@@ -200,6 +200,32 @@ fn flatten(text: &str, stream: TokenStream, tokens: &mut Vec<Token>) {
     }
 }
 
+/// The three methods of a `syn::visit::Visit` that hand every function
+/// with a body (a free function, one in an `impl`, a trait's default) to
+/// the visitor's own `function(&mut self, &Signature, &Block)`, outside in,
+/// and walk on into the body.
+macro_rules! visit_function_bodies {
+    () => {
+        fn visit_item_fn(&mut self, function: &'ast syn::ItemFn) {
+            self.function(&function.sig, &function.block);
+            syn::visit::visit_item_fn(self, function);
+        }
+
+        fn visit_impl_item_fn(&mut self, function: &'ast syn::ImplItemFn) {
+            self.function(&function.sig, &function.block);
+            syn::visit::visit_impl_item_fn(self, function);
+        }
+
+        fn visit_trait_item_fn(&mut self, function: &'ast syn::TraitItemFn) {
+            if let Some(body) = &function.default {
+                self.function(&function.sig, body);
+            }
+            syn::visit::visit_trait_item_fn(self, function);
+        }
+    };
+}
+pub(super) use visit_function_bodies;
+
 #[cfg(test)]
 mod tests {
     use super::*;
