@@ -151,6 +151,57 @@ fn building(builder: &build::Builder, what: &str) -> String {
     }
 }
 
+/// Runs `build` while a second thread tells `events`, every quarter of a
+/// second, how many crates cargo has built so far and which last, as its
+/// JSON messages in `log` (the build's stdout) say: a first build takes
+/// minutes, and a student sees it move.
+fn showing_progress<T>(
+    events: &dyn Events,
+    what: &str,
+    log: &std::path::Path,
+    build: impl FnOnce() -> T,
+) -> T {
+    let done = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        scope.spawn(|| {
+            let mut built = 0;
+            let mut read = 0;
+            let mut last = String::new();
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                std::thread::sleep(std::time::Duration::from_millis(250));
+                let Ok(bytes) = fs::read(log) else {
+                    continue;
+                };
+                // (Only whole lines, from where the last look ended.)
+                let Some(end) = bytes.iter().rposition(|&b| b == b'\n') else {
+                    continue;
+                };
+                let Some(new) = bytes.get(read..=end) else {
+                    continue;
+                };
+                for line in String::from_utf8_lossy(new).lines() {
+                    let message = crate::cargo::Message::parse(line);
+                    if let Some(target) = message.filter(|m| m.is_artifact()).and_then(|m| m.target)
+                    {
+                        built += 1;
+                        last = target.name;
+                    }
+                }
+                read = end + 1;
+                if built > 0 {
+                    events.step(&format!(
+                        "{what} · {built} crates built, the last {}",
+                        table::shown(&last)
+                    ));
+                }
+            }
+        });
+        let result = build();
+        done.store(true, std::sync::atomic::Ordering::Relaxed);
+        result
+    })
+}
+
 impl Prepared {
     /// The topics the graded code holds: all but the absent.
     fn held(&self) -> Vec<Topic> {
@@ -222,8 +273,12 @@ impl Prepared {
         let build = match built {
             Some(build) => build,
             None => {
-                events.step(&building(&self.builder, &topic.name));
-                build::build_among(&self.builder, &self.held(), topic)?
+                let what = building(&self.builder, &topic.name);
+                events.step(&what);
+                let log = self.builder.logs.join(format!("{}.out", topic.name));
+                showing_progress(events, &what, &log, || {
+                    build::build_among(&self.builder, &self.held(), topic)
+                })?
             }
         };
         let build = match (crate::stage::replay::package_dir(&self.root, topic), build) {
@@ -258,8 +313,12 @@ impl Prepared {
             .filter(|plan| !plan.absent)
             .map(|plan| plan.topic.name.as_str())
             .collect();
-        events.step("building the viewer that draws the report's pipeline");
-        pipeline::build_viewer(&self.builder, &graded, &compiled)
+        let what = building(&self.builder, "the viewer that draws the report's pipeline");
+        events.step(&what);
+        let log = self.builder.logs.join("viewer.out");
+        showing_progress(events, &what, &log, || {
+            pipeline::build_viewer(&self.builder, &graded, &compiled)
+        })
     }
 
     /// Runs the tests and draws the pipeline (building each topic in its
@@ -465,4 +524,58 @@ fn keep_binary(binary: &Path, dir: &Path) -> Result<PathBuf> {
             .with_context(|| format!("cannot copy {} to {}", binary.display(), kept.display()))?;
     }
     Ok(kept)
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Mutex;
+
+    use super::*;
+
+    /// The steps told.
+    #[derive(Default)]
+    struct Told(Mutex<Vec<String>>);
+
+    impl Events for Told {
+        fn step(&self, what: &str) {
+            self.0.lock().unwrap().push(what.to_owned());
+        }
+    }
+
+    #[test]
+    fn a_build_in_progress_says_how_many_crates_are_built() {
+        let dir = std::env::temp_dir().join(format!("showing-progress-{}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        let log = dir.join("01-x.out");
+        let artifact = |name: &str| {
+            format!(
+                "{{\"reason\":\"compiler-artifact\",\"target\":{{\"name\":\"{name}\",\"kind\":[\"lib\"]}}}}\n"
+            )
+        };
+        let told = Told::default();
+        let built = showing_progress(&told, "building 01-x", &log, || {
+            fs::write(&log, artifact("image")).unwrap();
+            std::thread::sleep(std::time::Duration::from_millis(600));
+            let more = format!(
+                "{}{}{{\"reason\":\"build-finished\"}}\n{{\"reason\":\"compiler-artifact\"",
+                artifact("image"),
+                artifact("lines\\u001b[2J")
+            );
+            fs::write(&log, more).unwrap();
+            std::thread::sleep(std::time::Duration::from_millis(600));
+            7
+        });
+        assert_eq!(built, 7);
+        let told = told.0.into_inner().unwrap();
+        assert!(
+            told.contains(&"building 01-x · 1 crates built, the last image".to_owned()),
+            "{told:?}"
+        );
+        // (A line not yet whole is not read; a name is escaped.)
+        assert_eq!(
+            told.last().unwrap(),
+            "building 01-x · 2 crates built, the last lines\\u{1b}[2J"
+        );
+        fs::remove_dir_all(&dir).unwrap();
+    }
 }
