@@ -58,7 +58,13 @@ cat > "$initrd/init" << EOF
 mount -t proc proc /proc
 mount -t sysfs sys /sys
 mount -t devtmpfs dev /dev
-for m in $order; do insmod /lib/modules/\$m.ko || echo "init: no module \$m"; done
+# (In passes: which module needs which differs between kernel builds.)
+for pass in 1 2 3 4 5; do
+  for m in $order; do
+    grep -q "^\$m " /proc/modules || insmod /lib/modules/\$m.ko 2> /dev/null || true
+  done
+done
+for m in $order; do grep -q "^\$m " /proc/modules || echo "init: no module \$m"; done
 mount -t 9p -o trans=virtio,version=9p2000.L,ro,msize=512000,cache=loose hostroot /lower
 mount -t ext4 /dev/vda /upper
 mkdir -p /upper/u /upper/w
