@@ -247,7 +247,6 @@ pub fn target_dir_of(root: &Path, target_dir: Option<&Path>) -> PathBuf {
 /// with [`build`], so that one topic's compile errors fail that topic
 /// alone; `Err(Some(reason))` when it ran into a limit, which every topic
 /// fails with (building them one by one would only run into it again).
-#[cfg(feature = "staff")]
 pub fn build_all(
     builder: &Builder,
     topics: &[Topic],

@@ -21,6 +21,14 @@ pub(crate) trait Events: Sync {
     /// when the next event comes.
     fn step(&self, _what: &str) {}
 
+    /// Whether the sink shows each topic as soon as it is graded: then the
+    /// grade builds and runs topic by topic, so that the first topic's
+    /// rows come after its own build; otherwise it builds every topic
+    /// first, in one cargo run, which is quicker in all.
+    fn topic_by_topic(&self) -> bool {
+        false
+    }
+
     /// The table of the grade will have the columns `layout`.
     fn table(&self, _layout: &Layout) {}
 
@@ -118,6 +126,10 @@ impl Terminal {
 }
 
 impl Events for Terminal {
+    fn topic_by_topic(&self) -> bool {
+        self.rows
+    }
+
     fn step(&self, what: &str) {
         let spinner = self
             .progress

@@ -1,13 +1,16 @@
 //! A grade's course of events: set up, build, list, run, judge, draw.
 //!
-//! A grade runs topic by topic: a topic is built, its tests listed and
-//! run and its verdicts made before the next topic is built, so that the
-//! first topic's rows of the table are on screen after its own build, not
-//! after the whole course's (a first build compiles the dependencies, some
-//! minutes for the GPU topic's). The viewer that draws the report's
-//! pipeline is built last. A grade in a class's slot (the staff's class)
-//! builds everything first instead, while the slot holds its turn, so that
-//! its tests run from executables kept apart while the next slot builds.
+//! A grade whose reader sees each topic as soon as it is graded (a
+//! student's `cargo xtask grade`) runs topic by topic: a topic is built,
+//! its tests listed and run and its verdicts made before the next topic is
+//! built, so that the first topic's rows of the table are on screen after
+//! its own build, not after the whole course's (a first build compiles the
+//! dependencies, some minutes for the GPU topic's), and the viewer that
+//! draws the report's pipeline is built last. Any other grade builds every
+//! topic and the viewer first, in one cargo run where they compile, which
+//! keeps both cores busy and is quicker in all; a grade in a class's slot
+//! (the staff's class) does so while the slot holds its turn, so that its
+//! tests run from executables kept apart while the next slot builds.
 
 use std::collections::HashMap;
 use std::fs;
@@ -18,7 +21,6 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 
-#[cfg(feature = "staff")]
 use super::build::TestBinary;
 use super::build::{self, Build};
 use super::events::Events;
@@ -50,8 +52,9 @@ pub(crate) struct Prepared {
 }
 
 /// Sets up the grade of the course at `options.root` (every topic but
-/// those `setting` says are absent). In a class's slot, also builds every
-/// topic and the pipeline's viewer and lists the tests.
+/// those `setting` says are absent). Unless `events` shows each topic as
+/// it is graded, also builds every topic and the pipeline's viewer and
+/// lists the tests.
 pub(crate) fn prepare(
     options: &GradeOptions,
     edition: Edition,
@@ -102,7 +105,6 @@ pub(crate) fn prepare(
         target_dir,
     };
     events.table(&layout_of(&topics));
-    #[cfg_attr(not(feature = "staff"), expect(unused_mut))]
     let mut prepared = Prepared {
         options: options.clone(),
         setting,
@@ -117,7 +119,10 @@ pub(crate) fn prepare(
         build_s: 0.0,
     };
     #[cfg(feature = "staff")]
-    if prepared.setting.beside.is_some() {
+    let up_front = prepared.setting.beside.is_some() || !events.topic_by_topic();
+    #[cfg(not(feature = "staff"))]
+    let up_front = !events.topic_by_topic();
+    if up_front {
         prepared.build_everything(events)?;
     }
     Ok(prepared)
@@ -213,9 +218,8 @@ impl Prepared {
     }
 
     /// Builds every topic (all at once when they compile, one by one to
-    /// tell whose errors they are) and the viewer, and lists the tests:
-    /// a class's slot, before it gives up its turn.
-    #[cfg(feature = "staff")]
+    /// tell whose errors they are) and the viewer, and lists the tests
+    /// (a class's slot: before it gives up its turn).
     fn build_everything(&mut self, events: &dyn Events) -> Result<()> {
         let building_started = Instant::now();
         let held = self.held();
@@ -243,7 +247,8 @@ impl Prepared {
             plans.push(self.plan_topic(topic, built, events)?);
         }
         let viewer = self.build_viewer(&plans, events);
-        self.viewer = Some(match (&self.setting.beside, viewer) {
+        #[cfg(feature = "staff")]
+        let viewer = match (&self.setting.beside, viewer) {
             (Some(beside), pipeline::Viewer::Built(binary)) => {
                 match keep_binary(&binary, &beside.keep_binaries.join("viewer")) {
                     Ok(kept) => pipeline::Viewer::Built(kept),
@@ -251,7 +256,8 @@ impl Prepared {
                 }
             }
             (_, viewer) => viewer,
-        });
+        };
+        self.viewer = Some(viewer);
         self.plans = plans;
         self.build_s = building_started.elapsed().as_secs_f64();
         Ok(())
