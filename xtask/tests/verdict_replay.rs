@@ -184,11 +184,44 @@ fn attacks_on_the_verdict_score_nothing_and_the_honest_member_everything() {
     );
     member(&official, &class, "links-record", &ops(&link, &link, &link));
 
+    // Writes into the replays' cache of compiled shaders (which a GPU
+    // driver would run in the process that holds the token), found beside
+    // its own, then answers right.
+    let poison = |right: &str| {
+        format!(
+            r#"let own = std::path::PathBuf::from(std::env::var_os("MESA_SHADER_CACHE_DIR").unwrap_or_default());
+            let theirs = own.with_file_name("replayed");
+            let written = std::fs::create_dir_all(&theirs).and_then(|()| std::fs::write(theirs.join("index"), b"poison"));
+            println!("shader cache {{}}; poisoned the replays': {{}}", own.display(), written.is_ok());
+            {right}"#
+        )
+    };
+    member(
+        &official,
+        &class,
+        "poisons-shaders",
+        &ops(&poison(RIGHT[0]), &poison(RIGHT[1]), &poison(RIGHT[2])),
+    );
+
     let out = fresh(official.join("target/attacks"));
     let output = grade_submission(&official, &class, &out, &[]);
     assert!(output.status.success(), "{output:?}");
     let report = |name: &str| read_json(&out.join(name).join("report.json"));
     assert_eq!(score(&report("a-honest")), 4.0, "{:#}", report("a-honest"));
+    // The recording has a shader cache of its own, and cannot reach the
+    // replays'.
+    let poisoned = fs::read_to_string(
+        out.join("poisons-shaders")
+            .join("logs")
+            .join(TOPIC)
+            .join("sum/sums_small_numbers.log"),
+    )
+    .unwrap();
+    assert!(
+        poisoned.contains("shader-cache/recorded; poisoned the replays': false")
+            && !poisoned.contains("poisoned the replays': true"),
+        "{poisoned}"
+    );
     for name in [
         "forges",
         "snoops",

@@ -82,6 +82,7 @@ pub(crate) fn prepare(
     for stale in [
         out.join(PENDING_SNAPSHOTS),
         out.join("scratch"),
+        out.join(plan::SHADER_CACHE),
         out.join("build"),
     ] {
         crate::files::remove_tree(&stale)
@@ -424,6 +425,8 @@ impl Prepared {
             &viewer,
         );
         events.done();
+        // The shaders the driver compiled are of no use to a reader.
+        let _ = crate::files::remove_tree(&out.join(plan::SHADER_CACHE));
         // The builds' logs (the compiler's messages, which quote student
         // code) and what the listings of the tests and the viewer printed
         // into scratch, up to the output limit each, count to the same

@@ -12,6 +12,11 @@ use super::build::{Build, TestBinary};
 use super::run::{self, TestCommand};
 use crate::topics::Topic;
 
+/// Where a grade's GPU tests keep the shaders the driver compiled, in the
+/// grade's folder (see [`run::ShaderCache`]); removed with
+/// the scratch folders.
+pub(super) const SHADER_CACHE: &str = "shader-cache";
+
 /// A topic ready to run: its tests, or why there are none.
 pub(super) struct Plan {
     pub(super) topic: Topic,
@@ -116,6 +121,7 @@ pub(super) fn plan(root: &Path, out: &Path, topic: &Topic, build: Build) -> Plan
                 course: root.to_path_buf(),
                 writable: vec![scratch.clone(), images_dir.clone(), pending.clone()],
                 gpu: topic.sheet.gpu,
+                shader_cache: topic.sheet.gpu.then(|| out.join(SHADER_CACHE)),
                 env,
                 time_limit: Duration::from_secs_f64(topic.sheet.time_limit_s),
                 memory_limit_mib: topic.sheet.memory_limit_mib,

@@ -72,6 +72,9 @@ pub struct TestCommand {
     pub writable: Vec<PathBuf>,
     /// The GPU's device files are shown.
     pub gpu: bool,
+    /// For a GPU topic: the grade's folder of compiled shaders (see
+    /// [`ShaderCache`]).
+    pub shader_cache: Option<PathBuf>,
     /// Where stdout and stderr go.
     pub log: PathBuf,
     /// Where the run's secret token is written for the test to take (in
@@ -125,6 +128,56 @@ const EVIDENCE_VARS: [(&str, &str); 2] = [
 /// The line before a recording run's output, where it is shown.
 pub const EVIDENCE_HEADER: &str = "\n--- the run of your code (its output, shown as evidence; the verdict above is the replay's) ---";
 
+/// The two caches of compiled shaders under a grade's shader folder.
+///
+/// Mesa's drivers (lavapipe, the software Vulkan driver of machines
+/// without a GPU) keep the shaders they compiled in a folder: compiling a
+/// test's shaders anew in every process costs lavapipe seconds, reading
+/// them back milliseconds. What a driver reads from its cache it runs, so
+/// the processes of the two sides never share one: the recordings of the
+/// student's code share one folder, the replays (which hold the token)
+/// another that no process of student code can reach. Each is a writable
+/// folder of the jobs that use it, its bytes counted with theirs; Mesa
+/// keeps it under [`ShaderCache::MAX_SIZE`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShaderCache {
+    /// The recordings' folder.
+    Recorded,
+    /// The replays' folder.
+    Replayed,
+}
+
+impl ShaderCache {
+    /// The size Mesa keeps each cache under (`MESA_SHADER_CACHE_MAX_SIZE`),
+    /// well within a test's written bytes.
+    pub const MAX_SIZE: &str = "128M";
+
+    /// This side's folder under the grade's shader folder `shaders`.
+    #[must_use]
+    pub fn dir(self, shaders: &Path) -> PathBuf {
+        shaders.join(match self {
+            Self::Recorded => "recorded",
+            Self::Replayed => "replayed",
+        })
+    }
+
+    /// Gives the job of this side `writable` and `env` to use its cache.
+    fn add_to(
+        self,
+        shaders: Option<&Path>,
+        writable: &mut Vec<PathBuf>,
+        env: &mut Vec<(OsString, OsString)>,
+    ) {
+        let Some(shaders) = shaders else {
+            return;
+        };
+        let dir = self.dir(shaders);
+        env.push(("MESA_SHADER_CACHE_DIR".into(), dir.clone().into()));
+        env.push(("MESA_SHADER_CACHE_MAX_SIZE".into(), Self::MAX_SIZE.into()));
+        writable.push(dir);
+    }
+}
+
 /// A recorded or replayed run may take this many times the sheet's time
 /// limit: writing down (or reading back) every value a task hands out is
 /// the grader's cost, not the student's. A long line hands its callback
@@ -176,6 +229,8 @@ impl TestCommand {
             })
             .collect();
         env.push((transcript::RECORD_VAR.into(), transcript.clone().into()));
+        let mut writable = vec![scratch.clone(), record_dir.clone()];
+        ShaderCache::Recorded.add_to(self.shader_cache.as_deref(), &mut writable, &mut env);
         let recorded_log = self.log.with_extension("record.log");
         let mut limits = Limits::test(self.time_limit * REPLAY_TIME_FACTOR, self.memory_limit_mib);
         limits.output = OUTPUT_LIMIT;
@@ -186,7 +241,7 @@ impl TestCommand {
             cwd: self.cwd.clone(),
             course: self.course.clone(),
             read_only: vec![self.executable.clone()],
-            writable: vec![scratch.clone(), record_dir.clone()],
+            writable,
             emptied: Vec::new(),
             env,
             gpu: self.gpu,
@@ -319,11 +374,15 @@ impl TestCommand {
         let mut env = self.env.clone();
         env.push((VERDICT_FILE_VAR.into(), self.verdict_file.clone().into()));
         let mut read_only = vec![executable.to_path_buf()];
+        let mut writable = self.writable.clone();
         if let Some(transcript) = transcript {
             env.push((transcript::REPLAY_VAR.into(), transcript.into()));
             if transcript.exists() {
                 read_only.push(transcript.to_path_buf());
             }
+            // A test of a topic not replayed runs the student's code with
+            // the token, and keeps no cache.
+            ShaderCache::Replayed.add_to(self.shader_cache.as_deref(), &mut writable, &mut env);
         }
         let time_limit = if transcript.is_some() {
             self.time_limit * REPLAY_TIME_FACTOR
@@ -339,7 +398,7 @@ impl TestCommand {
             cwd: self.cwd.clone(),
             course: self.course.clone(),
             read_only,
-            writable: self.writable.clone(),
+            writable,
             emptied: Vec::new(),
             env,
             gpu: self.gpu,
