@@ -66,7 +66,8 @@ pub(crate) fn prepare(
         .with_context(|| format!("cannot find {}", options.root.display()))?;
     let out = std::path::absolute(&options.out)
         .with_context(|| format!("cannot find {}", options.out.display()))?;
-    let topics = topics::select(&root, &options.topics)?;
+    let mut topics = topics::select(&root, &options.topics)?;
+    narrow(&mut topics, &options.tasks)?;
     if topics.is_empty() {
         bail!(
             "there are no topics in {}",
@@ -127,6 +128,34 @@ pub(crate) fn prepare(
         prepared.build_everything(events)?;
     }
     Ok(prepared)
+}
+
+/// Keeps of each topic that `tasks` names only the tasks it names there
+/// (see [`GradeOptions::tasks`]).
+fn narrow(topics: &mut [Topic], tasks: &[(String, String)]) -> Result<()> {
+    for (topic_name, task) in tasks {
+        let topic = topics
+            .iter()
+            .find(|topic| topic.name == *topic_name)
+            .with_context(|| format!("{topic_name} is not among the topics graded"))?;
+        if !topic.sheet.tasks.iter().any(|t| t.id == *task) {
+            bail!("{topic_name} has no task {task}");
+        }
+    }
+    for topic in topics {
+        let named: Vec<&str> = tasks
+            .iter()
+            .filter(|(name, _)| *name == topic.name)
+            .map(|(_, task)| task.as_str())
+            .collect();
+        if !named.is_empty() {
+            topic
+                .sheet
+                .tasks
+                .retain(|task| named.contains(&task.id.as_str()));
+        }
+    }
+    Ok(())
 }
 
 /// The table's columns for the tasks of `topics` (see [`table::Layout`]).
@@ -287,6 +316,21 @@ impl Prepared {
                     build::build_among(&self.builder, &self.held(), topic)
                 })?
             }
+        };
+        // Of a topic narrowed to some tasks (see `narrow`), the others'
+        // tests are not run.
+        let build = match build {
+            Build::Built(mut binaries) => {
+                binaries.retain(|binary| {
+                    self.options
+                        .tasks
+                        .iter()
+                        .all(|(name, _)| *name != topic.name)
+                        || topic.sheet.tasks.iter().any(|task| task.id == binary.name)
+                });
+                Build::Built(binaries)
+            }
+            failed @ Build::Failed(_) => failed,
         };
         let build = match (crate::stage::replay::package_dir(&self.root, topic), build) {
             (Some(package_dir), Build::Built(mut binaries)) => {
@@ -586,5 +630,36 @@ mod tests {
             "building 01-x · 2 crates built, the last lines\\u{1b}[2J"
         );
         fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_narrowed_topic_keeps_the_named_tasks_and_the_others_stay_whole() {
+        let topic = |name: &str| {
+            Topic {
+            name: name.to_owned(),
+            package: name.to_owned(),
+            dir: PathBuf::from(name),
+            sheet: topics::TaskSheet::parse(
+                "[[tasks]]\nid = \"a\"\ntitle = \"A\"\npoints = 1\n\n[[tasks]]\nid = \"b\"\ntitle = \"B\"\npoints = 1\n",
+            )
+            .unwrap(),
+        }
+        };
+        let ids = |topic: &Topic| -> Vec<String> {
+            topic.sheet.tasks.iter().map(|t| t.id.clone()).collect()
+        };
+        let mut topics = vec![topic("01-x"), topic("02-y")];
+        narrow(&mut topics, &[("01-x".to_owned(), "b".to_owned())]).unwrap();
+        assert_eq!(ids(&topics[0]), ["b"]);
+        assert_eq!(ids(&topics[1]), ["a", "b"]);
+        let unknown = narrow(&mut topics, &[("02-y".to_owned(), "c".to_owned())]);
+        assert!(
+            unknown
+                .unwrap_err()
+                .to_string()
+                .contains("02-y has no task c")
+        );
+        let absent = narrow(&mut topics, &[("03-z".to_owned(), "a".to_owned())]);
+        assert!(absent.is_err());
     }
 }

@@ -83,6 +83,11 @@ pub struct GradeOptions {
     pub root: PathBuf,
     /// Topics by folder name, short name, package or number; empty: all.
     pub topics: Vec<String>,
+    /// Of a topic named here by its folder name, only these tasks are
+    /// graded (`(topic, task)`; the report holds those alone): the
+    /// self-test's plants are each judged by their own task. A topic not
+    /// named here is graded whole.
+    pub tasks: Vec<(String, String)>,
     /// Grade the reference solutions, staged over the stubs (see `stage`).
     pub reference: bool,
     /// Where the report files, logs and images go.
@@ -109,6 +114,7 @@ impl GradeOptions {
         Self {
             root,
             topics: Vec::new(),
+            tasks: Vec::new(),
             reference: false,
             out,
             jobs: default_jobs(),

@@ -263,13 +263,13 @@ pub(super) fn rounds<T>(items: &[T], clash: impl Fn(&T, &T) -> bool) -> Vec<Vec<
 /// Grades items planted a round at a time (made by [`rounds`]):
 /// `plant` writes each item of a round into the round's submission-like
 /// folder, `target/xtask/<scratch>`, which is graded as a submission of
-/// the round's topics into `target/grade/<out(round number)>`, its summary
-/// printed; `check` reads the round's report. Returns how many rounds
-/// there were.
+/// the round's items' tasks (`task`: its topic and task) alone into
+/// `target/grade/<out(round number)>`, its summary printed; `check` reads
+/// the round's report. Returns how many rounds there were.
 pub(super) fn grade_planted<T>(
     root: &Path,
     rounds: &[Vec<&T>],
-    topic: impl Fn(&T) -> &str,
+    task: impl Fn(&T) -> (&str, &str),
     scratch: &str,
     out: impl Fn(usize) -> String,
     mut plant: impl FnMut(&Path, &T) -> Result<()>,
@@ -282,7 +282,18 @@ pub(super) fn grade_planted<T>(
         }
         let mut options = GradeOptions::new(root.to_path_buf());
         options.out = root.join("target").join("grade").join(out(number));
-        options.topics = round.iter().map(|item| topic(item).to_owned()).collect();
+        options.tasks = round
+            .iter()
+            .map(|item| {
+                let (topic, task) = task(item);
+                (topic.to_owned(), task.to_owned())
+            })
+            .collect();
+        options.topics = options
+            .tasks
+            .iter()
+            .map(|(topic, _)| topic.clone())
+            .collect();
         options.topics.sort();
         options.topics.dedup();
         let report = grade::grade_staged(&options, Overlay::Submission(&planted))?;

@@ -195,7 +195,7 @@ pub(super) fn shortcuts_lose_their_points(root: &Path) -> Result<String> {
     let rounds = grade_planted(
         root,
         &rounds(&shortcuts.shortcut, Shortcut::meets),
-        |s| &s.topic,
+        |s| (&s.topic, &s.task),
         "shortcuts",
         |number| match number {
             0 => "shortcuts".to_owned(),

@@ -44,7 +44,7 @@ pub(super) fn given_code_stands_in_for_no_task(root: &Path) -> Result<String> {
     grade_planted(
         root,
         &rounds(&stand_ins, |a, b| a.topic == b.topic),
-        |s| &s.topic,
+        |s| (&s.topic, &s.task),
         "stand-ins",
         |number| format!("stand-ins-{}", number + 1),
         |planted, stand_in| {
