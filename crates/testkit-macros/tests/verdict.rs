@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 const TOKEN: &str = "5e1f0a9c7d2b4e6f8a0b1c2d3e4f5a6b";
 use wire::VERDICT_PREFIX as PREFIX;
@@ -48,7 +49,10 @@ fn reads_its_own_token_file() {
 /// Runs test `name` of this binary with a token file; returns its output
 /// and whether the token file is left.
 fn run(name: &str) -> (String, bool) {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    // A folder of each run's own: two tests run the same child at once.
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    let run = RUNS.fetch_add(1, Ordering::Relaxed);
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}-{run}"));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("token");
     std::fs::write(&file, TOKEN).unwrap();

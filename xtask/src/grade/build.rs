@@ -81,6 +81,16 @@ pub struct Builder {
 }
 
 impl Builder {
+    /// `args` with the stage's features package named too, where the
+    /// workspace has one (see `stage::features`): every build of the
+    /// grade gets the dependencies' features of the whole course.
+    fn unified<'a>(&self, mut args: Vec<&'a str>) -> Vec<&'a str> {
+        if crate::stage::features::is_in(&self.root) {
+            args.extend(["--package", crate::stage::features::FEATURES_PACKAGE]);
+        }
+        args
+    }
+
     /// Whether nothing was built into the build folder yet: the first
     /// build compiles every dependency too.
     #[must_use]
@@ -255,6 +265,7 @@ pub fn build_all(
     for topic in topics {
         args.extend(["--package", &topic.package]);
     }
+    let args = builder.unified(args);
     let names: Vec<&str> = topics.iter().map(|t| t.name.as_str()).collect();
     let run = builder.cargo(&names.join("+"), &args, &[])?;
     if let Some(stopped) = run.stopped {
@@ -284,6 +295,7 @@ fn cargo_test_args() -> Vec<&'static str> {
 pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
     let mut args = cargo_test_args();
     args.extend(["--package", &topic.package]);
+    let args = builder.unified(args);
     let run = builder.cargo(&topic.name, &args, &[])?;
     if let Some(stopped) = run.stopped {
         return Ok(Build::Failed(stopped));
@@ -301,9 +313,13 @@ pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
 /// features of the whole set, whichever topic comes first. (A test file
 /// of the same name in another topic is built with it: found again when
 /// that topic's turn comes.)
+///
+/// In a stage, whose features package (see `stage::features`) does what
+/// naming every topic would, the topic is built on its own.
 pub fn build_among(builder: &Builder, topics: &[Topic], topic: &Topic) -> Result<Build> {
     let targets = test_targets(&topic.dir);
-    if topics.len() < 2 || targets.is_empty() {
+    // A stage's features package does what naming the others would.
+    if topics.len() < 2 || targets.is_empty() || crate::stage::features::is_in(&builder.root) {
         return build(builder, topic);
     }
     let mut args = cargo_test_args();
@@ -360,6 +376,7 @@ pub fn add_replays(
     let package = crate::stage::replay::package_name(topic);
     let mut args = cargo_test_args();
     args.extend(["--package", &package]);
+    let args = builder.unified(args);
     let what = format!("{}{}", topic.name, crate::stage::replay::REPLAY_SUFFIX);
     let run = builder.cargo(&what, &args, &[])?;
     if !run.success {

@@ -45,6 +45,7 @@ use crate::edition::{Files, Source};
 use crate::files::{files_under, plain_file};
 
 mod build;
+pub mod features;
 pub mod replay;
 mod sync;
 #[cfg(test)]
@@ -175,11 +176,15 @@ pub fn task_files(root: &Path) -> Result<Vec<PathBuf>> {
 }
 
 /// The files of a stage of the course at `root`: (path in the stage,
-/// file to copy), sorted by the former: the edition ([`edition_plan`]) and
-/// the replay packages of its replayed topics ([`replay`]).
+/// file to copy), sorted by the former: the edition ([`edition_plan`]),
+/// the replay packages of its replayed topics ([`replay`]) and the
+/// features package ([`features`]).
 pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
     let mut files = edition_plan(root, overlay)?;
     replay::add_packages(root, &mut files)?;
+    if root.join("exercises").is_dir() {
+        features::add_package(&crate::topics::discover(root)?, &mut files)?;
+    }
     files.sort();
     Ok(files)
 }

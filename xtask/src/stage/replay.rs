@@ -147,6 +147,16 @@ fn optimise(files: &mut Files, replayed: &[&Topic]) -> Result<()> {
 
 /// Makes the replay packages members of the staged workspace.
 fn add_members(files: &mut Files) -> Result<()> {
+    add_member(
+        files,
+        "The replay builds of the graded tests (the grader's stage only).",
+        &format!("{REPLAY_DIR}/*"),
+    )
+}
+
+/// Adds `member` (a folder, or a pattern of folders) to the staged
+/// workspace's `members`, with `comment` above it.
+pub(super) fn add_member(files: &mut Files, comment: &str, member: &str) -> Result<()> {
     let workspace = files
         .iter_mut()
         .find(|(to, _)| to == Path::new("Cargo.toml"))
@@ -163,10 +173,10 @@ fn add_members(files: &mut Files) -> Result<()> {
             rest.starts_with('[').then(|| text.len() - rest.len() + 1)
         });
     let Some(at) = list else {
-        bail!("the course's Cargo.toml has no `members = [` list to add the replay packages to");
+        bail!("the course's Cargo.toml has no `members = [` list to add {member} to");
     };
     let text = format!(
-        "{}\n    # The replay builds of the graded tests (the grader's stage only).\n    \"{REPLAY_DIR}/*\",{}",
+        "{}\n    # {comment}\n    \"{member}\",{}",
         &text[..at],
         &text[at..]
     );

@@ -193,7 +193,24 @@ fn stubs_in_sync(root: &Path) -> Result<String> {
 
 fn workspace_tests(root: &Path) -> Result<String> {
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    let tested = cargo::run_visibly(staged.cargo().args([
+    // The topics first, with the features every grade of the stage builds
+    // them with (see `stage::features`): the grades that follow find their
+    // tests built. Then everything else.
+    let packages: Vec<String> = topics::discover(root)?
+        .into_iter()
+        .map(|topic| topic.package)
+        .collect();
+    let mut topics_tested = staged.cargo();
+    topics_tested.args(["test", "--no-fail-fast"]);
+    for package in packages
+        .iter()
+        .map(String::as_str)
+        .chain([stage::features::FEATURES_PACKAGE])
+    {
+        topics_tested.args(["--package", package]);
+    }
+    let mut rest = staged.cargo();
+    rest.args([
         "test",
         "--workspace",
         "--no-fail-fast",
@@ -202,7 +219,13 @@ fn workspace_tests(root: &Path) -> Result<String> {
         // The replay builds run only with a record (see `stage::replay`).
         "--exclude",
         REPLAY_PACKAGES,
-    ]));
+        "--exclude",
+        stage::features::FEATURES_PACKAGE,
+    ]);
+    for package in &packages {
+        rest.args(["--exclude", package]);
+    }
+    let tested = cargo::run_visibly(&mut topics_tested).and(cargo::run_visibly(&mut rest));
     // The grader's own tests copy fixture courses there, each with a build
     // folder of its own.
     disk::remove_build(
