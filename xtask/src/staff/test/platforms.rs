@@ -1,5 +1,5 @@
 //! The other systems (steps 12 and 13): clippy for macOS and Windows
-//! targets, and the course's workflow for the hosted runners linted.
+//! targets of the code that differs between systems, and the course's workflow for the hosted runners linted.
 
 use std::fs;
 use std::path::Path;
@@ -9,7 +9,6 @@ use anyhow::{Context, Result, ensure};
 use crate::cargo;
 use crate::stage::{self, Overlay};
 
-use super::BENCH_PACKAGE;
 
 /// The course's workflow that grades the solutions and draws the viewer's
 /// picture on GitHub's hosted macOS and Windows runners (course only).
@@ -39,6 +38,14 @@ pub(super) fn platforms_workflow(root: &Path) -> Result<String> {
     ))
 }
 
+/// The packages with code for one system and not another: the grader
+/// (`cfg(windows)`, `cfg(unix)`, the sandbox), the GPU library and the
+/// viewer (wgpu's Metal and DX12 backends, eframe's windows, notify), and
+/// topic 10, which draws through them. The rest is the same Rust on every
+/// system; the hosted runners' workflow lints the whole workspace there
+/// ([`PLATFORMS_WORKFLOW`]).
+const PLATFORM_PACKAGES: [&str; 4] = ["xtask", "gpu", "course-viewer", "gpu-tessellation"];
+
 /// The systems students use besides Linux, with the target cargo checks
 /// for each: no machine of the project runs them.
 pub(super) const OTHER_SYSTEMS: [(&str, &str); 2] = [
@@ -46,15 +53,15 @@ pub(super) const OTHER_SYSTEMS: [(&str, &str); 2] = [
     ("Windows", "x86_64-pc-windows-gnu"),
 ];
 
-/// `cargo clippy` over the workspace (the solutions staged, all targets)
-/// for macOS and Windows: the code behind `cfg(windows)` and `cfg(unix)`,
+/// `cargo clippy` over the packages with code of their own for each system
+/// ([`PLATFORM_PACKAGES`]; the solutions staged, all targets) for macOS
+/// and Windows: the code behind `cfg(windows)` and `cfg(unix)`,
 /// wgpu's Metal and DX12 backends, eframe's and notify's platform code. A
 /// check links nothing, so no cross linker is needed; a target that is
-/// missing is installed with rustup. The benchmarks are left out: criterion
-/// compiles C (`alloca`) for the target, which needs a cross compiler, and
-/// students never build them. The other targets' artifacts lie in their
-/// own folders of the stage's cache, removed when checked.
+/// missing is installed with rustup. The other targets' artifacts lie in
+/// their own folders of the stage's cache, removed when checked.
 pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
+    let packages = PLATFORM_PACKAGES.map(|package| ["--package", package]).concat();
     for (_, target) in OTHER_SYSTEMS {
         crate::staff::setup::rustup_target(target)?;
     }
@@ -64,19 +71,13 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
     for (system, target) in OTHER_SYSTEMS {
         let checked = cargo::run_visibly(staged.cargo().args([
             "clippy",
-            "--workspace",
             "--all-targets",
             "--all-features",
-            "--exclude",
-            BENCH_PACKAGE,
-            "--exclude",
-            super::REPLAY_PACKAGES,
             "--target",
             target,
-            "--",
-            "-D",
-            "warnings",
-        ]));
+        ])
+        .args(&packages)
+        .args(["--", "-D", "warnings"]));
         // No other step reads the other systems' artifacts.
         super::disk::remove_build(
             &staged.target_dir.join(target),
@@ -89,7 +90,8 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
         .map(|(system, target)| format!("{system} ({target})"))
         .collect();
     Ok(format!(
-        "no warnings in the solutions or the tooling for {}",
+        "no warnings in {} for {}",
+        PLATFORM_PACKAGES.join(", "),
         systems.join(" and ")
     ))
 }
