@@ -763,7 +763,11 @@ pub(crate) mod tests {
         for n in 0..bound {
             File::create(dir.join(format!("f{n}"))).unwrap();
         }
-        assert_eq!(bytes_within(&dir, bound), None, "a walk past its bound says so");
+        assert_eq!(
+            bytes_within(&dir, bound),
+            None,
+            "a walk past its bound says so"
+        );
         assert!(bytes_within(&dir, 2 * bound).is_some());
         remove_tree(&dir).unwrap();
     }

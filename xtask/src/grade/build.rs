@@ -84,7 +84,7 @@ impl Builder {
     /// `args` with the stage's features package named too, where the
     /// workspace has one (see `stage::features`): every build of the
     /// grade gets the dependencies' features of the whole course.
-    fn unified<'a>(&self, mut args: Vec<&'a str>) -> Vec<&'a str> {
+    pub fn unified<'a>(&self, mut args: Vec<&'a str>) -> Vec<&'a str> {
         if crate::stage::features::is_in(&self.root) {
             args.extend(["--package", crate::stage::features::FEATURES_PACKAGE]);
         }

@@ -274,10 +274,15 @@ fn expected(root: &Path, out: &Path, scene: &Scene) -> Option<PathBuf> {
 
 /// Builds the viewer without its window; its executable.
 fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
+    // Named as the viewer's: the stage's features package is built beside.
+    let features: Vec<String> = features.iter().map(|f| format!("{VIEWER}/{f}")).collect();
     let features = features.join(",");
     let mut args = vec![
         "build",
         "--package",
+        VIEWER,
+        // Its program alone (the features package has no program).
+        "--bin",
         VIEWER,
         "--no-default-features",
         "--message-format",
@@ -288,6 +293,7 @@ fn build(builder: &Builder, features: &[&str]) -> Result<PathBuf> {
     if !features.is_empty() {
         args.extend(["--features", &features]);
     }
+    let args = builder.unified(args);
     let run = builder.cargo("viewer", &args, &[])?;
     if let Some(stopped) = run.stopped {
         anyhow::bail!("{stopped}");

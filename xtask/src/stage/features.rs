@@ -17,19 +17,25 @@
 //!
 //! ```text
 //!   stage/features/        package `course-features`: lib.rs, empty, not
-//!     Cargo.toml lib.rs    tested; depends on every topic (their own
-//!                          dependencies come with them) and on their
-//!                          dev-dependencies
+//!     Cargo.toml lib.rs    tested; depends on what every member of the
+//!                          workspace depends on (its dependencies and
+//!                          dev-dependencies, each system's too), with
+//!                          the features each asks for
 //! ```
+//!
+//! Every member but the benchmarks ([`BENCHMARKS`], built only by `cargo
+//! xtask bench`): the grader and the viewer too, so that the course's own
+//! `cargo test` of the stage gets the same features as its grades. A
+//! member's optional dependencies count where its default features turn
+//! them on (the viewer's window).
 
 use std::collections::BTreeMap;
 use std::fs;
 use std::path::Path;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 
 use super::{Files, Source};
-use crate::topics::Topic;
 
 /// Where the features package lies in a stage.
 pub const FEATURES_DIR: &str = "features";
@@ -37,27 +43,31 @@ pub const FEATURES_DIR: &str = "features";
 /// Its name, which builds name with `--package`.
 pub const FEATURES_PACKAGE: &str = "course-features";
 
+/// The benchmarks' package, whose features count for no build of a grade.
+pub const BENCHMARKS: &str = "course-bench";
+
 /// Whether the stage (or checkout) at `root` holds the features package.
 #[must_use]
 pub fn is_in(root: &Path) -> bool {
     root.join(FEATURES_DIR).join("Cargo.toml").is_file()
 }
 
-/// Adds the features package of the course's `topics` to `files`, and
-/// makes it a member of the staged workspace.
-pub fn add_package(topics: &[Topic], files: &mut Files) -> Result<()> {
-    if topics.is_empty() {
+/// Adds the features package of the course at `root` to `files`, and
+/// makes it a member of the staged workspace. A workspace without a
+/// `members` list (a single package) gets none.
+pub fn add_package(root: &Path, files: &mut Files) -> Result<()> {
+    let Some(members) = members(root)? else {
         return Ok(());
-    }
+    };
     let home = Path::new(FEATURES_DIR);
     files.push((
         home.join("Cargo.toml"),
-        Source::Text(manifest(topics)?.into()),
+        Source::Text(manifest(root, &members)?.into()),
     ));
     files.push((
         home.join("lib.rs"),
         Source::Text(
-            "//! Names every topic and its test dependencies, so that every build of the stage\n//! gets the same features of the dependencies (made by the grader).\n"
+            "//! Names what every member of the workspace depends on, so that every build of the\n//! stage gets the same features of the dependencies (made by the grader).\n"
                 .into(),
         ),
     ));
@@ -68,29 +78,159 @@ pub fn add_package(topics: &[Topic], files: &mut Files) -> Result<()> {
     )
 }
 
-/// The manifest: every topic by its path, and every topic's
-/// dev-dependency with the features any topic asks for.
-fn manifest(topics: &[Topic]) -> Result<String> {
+/// The folders of the members of the workspace at `root` (its `members`,
+/// a `dir/*` pattern read as the folders in `dir` with a manifest),
+/// relative to it; `None` where it lists none.
+fn members(root: &Path) -> Result<Option<Vec<String>>> {
+    let path = root.join("Cargo.toml");
+    let text =
+        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    let manifest: toml::Table =
+        toml::from_str(&text).with_context(|| format!("cannot parse {}", path.display()))?;
+    let Some(listed) = manifest
+        .get("workspace")
+        .and_then(|w| w.get("members"))
+        .and_then(toml::Value::as_array)
+    else {
+        return Ok(None);
+    };
+    let mut members = Vec::new();
+    for member in listed.iter().filter_map(toml::Value::as_str) {
+        match member.strip_suffix("/*") {
+            Some(dir) => {
+                let entries = fs::read_dir(root.join(dir))
+                    .with_context(|| format!("cannot read {}", root.join(dir).display()))?;
+                let mut found: Vec<String> = entries
+                    .flatten()
+                    .filter(|entry| entry.path().join("Cargo.toml").is_file())
+                    .filter_map(|entry| entry.file_name().into_string().ok())
+                    .map(|name| format!("{dir}/{name}"))
+                    .collect();
+                found.sort();
+                members.extend(found);
+            }
+            None => members.push(member.to_owned()),
+        }
+    }
+    Ok(Some(members))
+}
+
+/// The dependencies a manifest's default features turn on (`dep:x`, or an
+/// optional `x` named as a feature), each with the features they ask of it
+/// (`x/feature`).
+fn enabled_by_default(manifest: &toml::Table) -> BTreeMap<String, Vec<String>> {
+    let features = manifest
+        .get("features")
+        .and_then(toml::Value::as_table)
+        .cloned()
+        .unwrap_or_default();
+    let mut enabled: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut seen = std::collections::BTreeSet::new();
+    let mut to_visit = vec!["default".to_owned()];
+    while let Some(feature) = to_visit.pop() {
+        if !seen.insert(feature.clone()) {
+            continue;
+        }
+        let Some(entries) = features.get(&feature).and_then(toml::Value::as_array) else {
+            // Not a feature: an optional dependency's implicit one.
+            enabled.entry(feature).or_default();
+            continue;
+        };
+        for entry in entries.iter().filter_map(toml::Value::as_str) {
+            if let Some(dep) = entry.strip_prefix("dep:") {
+                enabled.entry(dep.to_owned()).or_default();
+            } else if let Some((dep, feature)) = entry.split_once('/') {
+                if let Some(dep) = dep.strip_suffix('?') {
+                    // Only where the dependency is on for another reason.
+                    if enabled.contains_key(dep) {
+                        enabled
+                            .entry(dep.to_owned())
+                            .or_default()
+                            .push(feature.to_owned());
+                    }
+                } else {
+                    enabled
+                        .entry(dep.to_owned())
+                        .or_default()
+                        .push(feature.to_owned());
+                }
+            } else {
+                to_visit.push(entry.to_owned());
+            }
+        }
+    }
+    enabled
+}
+
+/// The manifest: what every member (but the benchmarks) depends on, each
+/// system's dependencies under that system's `target` table.
+fn manifest(root: &Path, members: &[String]) -> Result<String> {
     let mut dependencies: BTreeMap<String, toml::Value> = BTreeMap::new();
-    for topic in topics {
-        let path = topic.dir.join("Cargo.toml");
+    let mut targets: BTreeMap<String, BTreeMap<String, toml::Value>> = BTreeMap::new();
+    for member in members {
+        let path = root.join(member).join("Cargo.toml");
+        if !path.is_file() {
+            continue;
+        }
         let text =
             fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
         let manifest: toml::Table =
             toml::from_str(&text).with_context(|| format!("cannot parse {}", path.display()))?;
-        let mut topic_table = toml::Table::new();
-        topic_table.insert("path".into(), format!("../exercises/{}", topic.name).into());
-        merge(&mut dependencies, &topic.package, topic_table.into())
-            .with_context(|| format!("in {}", path.display()))?;
-        let dev = manifest
-            .get("dev-dependencies")
+        let name = manifest
+            .get("package")
+            .and_then(|p| p.get("name"))
+            .and_then(toml::Value::as_str);
+        if name == Some(BENCHMARKS) || name.is_none() {
+            continue;
+        }
+        let by_default = enabled_by_default(&manifest);
+        let tables = |table: &toml::Table| -> Vec<(String, toml::Value)> {
+            ["dependencies", "dev-dependencies"]
+                .iter()
+                .filter_map(|kind| table.get(*kind).and_then(toml::Value::as_table))
+                .flat_map(|deps| deps.iter().map(|(k, v)| (k.clone(), v.clone())))
+                .filter_map(|(name, spec)| {
+                    let optional =
+                        spec.get("optional").and_then(toml::Value::as_bool) == Some(true);
+                    let features = by_default.get(&name);
+                    if optional && features.is_none() {
+                        return None;
+                    }
+                    let mut spec = spec;
+                    if let (Some(features), toml::Value::Table(table)) = (features, &mut spec)
+                        && !features.is_empty()
+                    {
+                        let mut all: Vec<toml::Value> = table
+                            .get("features")
+                            .and_then(toml::Value::as_array)
+                            .cloned()
+                            .unwrap_or_default();
+                        all.extend(features.iter().map(|f| toml::Value::from(f.as_str())));
+                        table.insert("features".into(), all.into());
+                    }
+                    Some((name, spec))
+                })
+                .collect()
+        };
+        for (name, spec) in tables(&manifest) {
+            merge(&mut dependencies, &name, rebased(spec, member));
+        }
+        let system_tables = manifest
+            .get("target")
             .and_then(toml::Value::as_table)
             .cloned()
             .unwrap_or_default();
-        for (name, spec) in dev {
-            let spec = rebased(spec, &topic.name);
-            merge(&mut dependencies, &name, spec)
-                .with_context(|| format!("in {}", path.display()))?;
+        for (system, table) in system_tables {
+            let Some(table) = table.as_table() else {
+                continue;
+            };
+            for (name, spec) in tables(table) {
+                merge(
+                    targets.entry(system.clone()).or_default(),
+                    &name,
+                    rebased(spec, member),
+                );
+            }
         }
     }
     let mut lib = toml::Table::new();
@@ -116,16 +256,25 @@ fn manifest(topics: &[Topic]) -> Result<String> {
         "dependencies".into(),
         toml::Table::from_iter(dependencies).into(),
     );
+    let mut target = toml::Table::new();
+    for (system, deps) in targets {
+        let mut table = toml::Table::new();
+        table.insert("dependencies".into(), toml::Table::from_iter(deps).into());
+        target.insert(system, table.into());
+    }
+    if !target.is_empty() {
+        manifest.insert("target".into(), target.into());
+    }
     toml::to_string(&manifest).context("cannot write the features package's manifest")
 }
 
-/// A dependency of topic `topic` as the features package names it: a
-/// `path` is the topic folder's, made the features folder's.
-fn rebased(spec: toml::Value, topic: &str) -> toml::Value {
+/// A dependency of the member in folder `member` as the features package
+/// names it: a `path` is the member's, made the features folder's.
+fn rebased(spec: toml::Value, member: &str) -> toml::Value {
     match spec {
         toml::Value::Table(mut table) => {
             if let Some(path) = table.get("path").and_then(toml::Value::as_str) {
-                let path = format!("../exercises/{topic}/{path}");
+                let path = format!("../{member}/{path}");
                 table.insert("path".into(), path.into());
             }
             toml::Value::Table(table)
@@ -134,23 +283,23 @@ fn rebased(spec: toml::Value, topic: &str) -> toml::Value {
     }
 }
 
-/// Adds `spec` for `name` to `dependencies`: where another topic named it
-/// already, the features of both, default features where either has
-/// them; the rest of the two must agree.
-fn merge(
-    dependencies: &mut BTreeMap<String, toml::Value>,
-    name: &str,
-    spec: toml::Value,
-) -> Result<()> {
+/// Adds `spec` for `name` to `dependencies`: where another member named
+/// it already, the first's way of naming it (a version, the workspace's,
+/// a path: the one package either way) with the features of both, and
+/// default features where either has them.
+fn merge(dependencies: &mut BTreeMap<String, toml::Value>, name: &str, spec: toml::Value) {
     let as_table = |spec: toml::Value| -> toml::Table {
         match spec {
-            toml::Value::Table(table) => table,
+            toml::Value::Table(mut table) => {
+                table.remove("optional");
+                table
+            }
             version => toml::Table::from_iter([("version".to_owned(), version)]),
         }
     };
     let Some(known) = dependencies.remove(name) else {
         dependencies.insert(name.to_owned(), toml::Value::Table(as_table(spec)));
-        return Ok(());
+        return;
     };
     let (mut known, new) = (as_table(known), as_table(spec));
     let features = |table: &toml::Table| -> Vec<String> {
@@ -174,29 +323,13 @@ fn merge(
     all.extend(features(&new));
     all.sort();
     all.dedup();
-    let default_features = defaults(&known) || defaults(&new);
-    let rest = |table: &toml::Table| -> toml::Table {
-        table
-            .iter()
-            .filter(|(key, _)| {
-                !["features", "default-features", "optional"].contains(&key.as_str())
-            })
-            .map(|(key, value)| (key.clone(), value.clone()))
-            .collect()
-    };
-    if rest(&known) != rest(&new) {
-        bail!("the topics name the dependency `{name}` in different ways");
-    }
     if !all.is_empty() {
         known.insert("features".into(), all.into());
     }
-    if !default_features {
-        known.insert("default-features".into(), false.into());
-    } else {
+    if defaults(&known) || defaults(&new) {
         known.remove("default-features");
     }
     dependencies.insert(name.to_owned(), toml::Value::Table(known));
-    Ok(())
 }
 
 #[cfg(test)]
@@ -210,19 +343,17 @@ mod tests {
     #[test]
     fn a_dependency_named_twice_gets_the_features_of_both() {
         let mut dependencies = BTreeMap::new();
-        merge(&mut dependencies, "glam", table("workspace = true")).unwrap();
+        merge(&mut dependencies, "glam", table("workspace = true"));
         merge(
             &mut dependencies,
             "glam",
             table("workspace = true\nfeatures = [\"bytemuck\"]"),
-        )
-        .unwrap();
+        );
         merge(
             &mut dependencies,
             "glam",
             table("workspace = true\nfeatures = [\"serde\", \"bytemuck\"]"),
-        )
-        .unwrap();
+        );
         assert_eq!(
             dependencies["glam"],
             table("workspace = true\nfeatures = [\"bytemuck\", \"serde\"]")
@@ -232,24 +363,59 @@ mod tests {
             &mut dependencies,
             "image",
             table("version = \"0.25\"\ndefault-features = false"),
-        )
-        .unwrap();
-        merge(&mut dependencies, "image", toml::Value::from("0.25")).unwrap();
+        );
+        merge(&mut dependencies, "image", toml::Value::from("0.25"));
         assert_eq!(dependencies["image"], table("version = \"0.25\""));
-        // Two ways of naming one dependency are the course's mistake.
-        let clash = merge(&mut dependencies, "glam", table("path = \"../glam\""));
-        assert!(clash.unwrap_err().to_string().contains("`glam`"));
+        // Named another way: the first way, the features of both.
+        merge(
+            &mut dependencies,
+            "syn",
+            table("version = \"2\"\ndefault-features = false\nfeatures = [\"full\"]"),
+        );
+        merge(
+            &mut dependencies,
+            "syn",
+            table("workspace = true\ndefault-features = false\nfeatures = [\"parsing\"]"),
+        );
+        assert_eq!(
+            dependencies["syn"],
+            table("version = \"2\"\ndefault-features = false\nfeatures = [\"full\", \"parsing\"]")
+        );
     }
 
     #[test]
-    fn a_path_of_a_topic_is_made_the_features_folders() {
+    fn a_path_of_a_member_is_made_the_features_folders() {
         assert_eq!(
-            rebased(table("path = \"../../crates/x\""), "01-lines"),
+            rebased(table("path = \"../../crates/x\""), "exercises/01-lines"),
             table("path = \"../exercises/01-lines/../../crates/x\"")
         );
         assert_eq!(
-            rebased(table("workspace = true"), "01-lines"),
+            rebased(table("workspace = true"), "exercises/01-lines"),
             table("workspace = true")
         );
+    }
+
+    #[test]
+    fn the_course_s_members_but_the_benchmarks_are_named() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let members = members(root).unwrap().unwrap();
+        assert!(
+            members.contains(&"exercises/01-lines".to_owned()),
+            "{members:?}"
+        );
+        assert!(members.contains(&"xtask/viewer".to_owned()), "{members:?}");
+        let manifest: toml::Table = toml::from_str(&manifest(root, &members).unwrap()).unwrap();
+        let dependencies = manifest["dependencies"].as_table().unwrap();
+        // A topic's, the grader's, the viewer's, a test's; not the benchmarks'.
+        for name in ["glam", "proptest", "clap", "eframe", "egui_kittest"] {
+            assert!(dependencies.contains_key(name), "{name}: {dependencies:?}");
+        }
+        assert!(!dependencies.contains_key("criterion"), "{dependencies:?}");
+        // An optional dependency no default feature turns on is left out.
+        let by_default = enabled_by_default(
+            &toml::from_str("[features]\ndefault = [\"window\"]\nwindow = [\"dep:eframe\", \"wgpu/dx12\"]\nextra = [\"dep:lz4\"]\n").unwrap(),
+        );
+        assert_eq!(by_default["wgpu"], ["dx12"]);
+        assert!(by_default.contains_key("eframe") && !by_default.contains_key("lz4"));
     }
 }

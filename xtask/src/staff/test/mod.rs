@@ -69,7 +69,7 @@ pub(super) const SHORTCUTS: &str = "xtask/tests/shortcuts";
 pub(super) const REPLAY_PACKAGES: &str = "*-replay";
 
 /// The benchmark crate: built by `cargo xtask bench`, not by the tests.
-pub(super) const BENCH_PACKAGE: &str = "course-bench";
+pub(super) const BENCH_PACKAGE: &str = crate::stage::features::BENCHMARKS;
 
 /// Runs the steps (all, or those numbered in `only`) and prints a
 /// summary; fails if any step failed.
@@ -194,24 +194,10 @@ fn stubs_in_sync(root: &Path) -> Result<String> {
 
 fn workspace_tests(root: &Path) -> Result<String> {
     let staged = stage::stage(root, Overlay::Reference, None)?;
-    // The topics first, with the features every grade of the stage builds
-    // them with (see `stage::features`): the grades that follow find their
-    // tests built. Then everything else.
-    let packages: Vec<String> = topics::discover(root)?
-        .into_iter()
-        .map(|topic| topic.package)
-        .collect();
-    let mut topics_tested = staged.cargo();
-    topics_tested.args(["test", "--no-fail-fast"]);
-    for package in packages
-        .iter()
-        .map(String::as_str)
-        .chain([stage::features::FEATURES_PACKAGE])
-    {
-        topics_tested.args(["--package", package]);
-    }
-    let mut rest = staged.cargo();
-    rest.args([
+    // With the stage's features package a member (see `stage::features`),
+    // the dependencies get the features every grade of the stage builds
+    // them with: the grades that follow find the topics' tests built.
+    let tested = cargo::run_visibly(staged.cargo().args([
         "test",
         "--workspace",
         "--no-fail-fast",
@@ -220,13 +206,7 @@ fn workspace_tests(root: &Path) -> Result<String> {
         // The replay builds run only with a record (see `stage::replay`).
         "--exclude",
         REPLAY_PACKAGES,
-        "--exclude",
-        stage::features::FEATURES_PACKAGE,
-    ]);
-    for package in &packages {
-        rest.args(["--exclude", package]);
-    }
-    let tested = cargo::run_visibly(&mut topics_tested).and(cargo::run_visibly(&mut rest));
+    ]));
     // The grader's own tests copy fixture courses there, each with a build
     // folder of its own.
     disk::remove_build(

@@ -9,7 +9,6 @@ use anyhow::{Context, Result, ensure};
 use crate::cargo;
 use crate::stage::{self, Overlay};
 
-
 /// The course's workflow that grades the solutions and draws the viewer's
 /// picture on GitHub's hosted macOS and Windows runners (course only).
 pub(super) const PLATFORMS_WORKFLOW: &str = ".github/workflows/platforms.yml";
@@ -61,7 +60,9 @@ pub(super) const OTHER_SYSTEMS: [(&str, &str); 2] = [
 /// missing is installed with rustup. The other targets' artifacts lie in
 /// their own folders of the stage's cache, removed when checked.
 pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
-    let packages = PLATFORM_PACKAGES.map(|package| ["--package", package]).concat();
+    let packages = PLATFORM_PACKAGES
+        .map(|package| ["--package", package])
+        .concat();
     for (_, target) in OTHER_SYSTEMS {
         crate::staff::setup::rustup_target(target)?;
     }
@@ -69,15 +70,19 @@ pub(super) fn clippy_for_other_systems(root: &Path) -> Result<String> {
     // macros, built by the steps before, serve the other targets too.
     let staged = stage::stage(root, Overlay::Reference, None)?;
     for (system, target) in OTHER_SYSTEMS {
-        let checked = cargo::run_visibly(staged.cargo().args([
-            "clippy",
-            "--all-targets",
-            "--all-features",
-            "--target",
-            target,
-        ])
-        .args(&packages)
-        .args(["--", "-D", "warnings"]));
+        let checked = cargo::run_visibly(
+            staged
+                .cargo()
+                .args([
+                    "clippy",
+                    "--all-targets",
+                    "--all-features",
+                    "--target",
+                    target,
+                ])
+                .args(&packages)
+                .args(["--", "-D", "warnings"]),
+        );
         // No other step reads the other systems' artifacts.
         super::disk::remove_build(
             &staged.target_dir.join(target),
