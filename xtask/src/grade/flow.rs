@@ -200,21 +200,18 @@ fn showing_progress<T>(
     std::thread::scope(|scope| {
         scope.spawn(|| {
             let mut built = 0;
-            let mut read = 0;
+            let mut read: u64 = 0;
             let mut last = String::new();
             while !done.load(std::sync::atomic::Ordering::Relaxed) {
                 std::thread::sleep(std::time::Duration::from_millis(250));
-                let Ok(bytes) = fs::read(log) else {
+                // What the log gained since the last look, whole lines only.
+                let Some(bytes) = read_from(log, read) else {
                     continue;
                 };
-                // (Only whole lines, from where the last look ended.)
                 let Some(end) = bytes.iter().rposition(|&b| b == b'\n') else {
                     continue;
                 };
-                let Some(new) = bytes.get(read..=end) else {
-                    continue;
-                };
-                for line in String::from_utf8_lossy(new).lines() {
+                for line in String::from_utf8_lossy(&bytes[..=end]).lines() {
                     let message = crate::cargo::Message::parse(line);
                     if let Some(target) = message.filter(|m| m.is_artifact()).and_then(|m| m.target)
                     {
@@ -222,7 +219,7 @@ fn showing_progress<T>(
                         last = target.name;
                     }
                 }
-                read = end + 1;
+                read += end as u64 + 1;
                 if built > 0 {
                     events.step(&format!(
                         "{what} · {built} crates built, the last {}",
@@ -235,6 +232,17 @@ fn showing_progress<T>(
         done.store(true, std::sync::atomic::Ordering::Relaxed);
         result
     })
+}
+
+/// The bytes of the file at `path` from `offset` on; `None` when it
+/// cannot be read.
+fn read_from(path: &std::path::Path, offset: u64) -> Option<Vec<u8>> {
+    use std::io::{Read as _, Seek as _};
+    let mut file = fs::File::open(path).ok()?;
+    file.seek(std::io::SeekFrom::Start(offset)).ok()?;
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes).ok()?;
+    Some(bytes)
 }
 
 impl Prepared {

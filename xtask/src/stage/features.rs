@@ -30,7 +30,6 @@
 //! them on (the viewer's window).
 
 use std::collections::BTreeMap;
-use std::fs;
 use std::path::Path;
 
 use anyhow::{Context, Result};
@@ -52,18 +51,17 @@ pub fn is_in(root: &Path) -> bool {
     root.join(FEATURES_DIR).join("Cargo.toml").is_file()
 }
 
-/// Adds the features package of the course at `root` to `files`, and
-/// makes it a member of the staged workspace. A workspace without a
-/// `members` list (a single package) gets none.
-pub fn add_package(root: &Path, files: &mut Files) -> Result<()> {
-    let Some(members) = members(root)? else {
+/// Adds the features package of the staged `files` (the manifests as the
+/// stage holds them: an edition's, without the course's own lines) to
+/// them, and makes it a member of the staged workspace. A workspace
+/// without a `members` list (a single package) gets none.
+pub fn add_package(files: &mut Files) -> Result<()> {
+    let Some(members) = members(files)? else {
         return Ok(());
     };
+    let manifest = manifest(files, &members)?;
     let home = Path::new(FEATURES_DIR);
-    files.push((
-        home.join("Cargo.toml"),
-        Source::Text(manifest(root, &members)?.into()),
-    ));
+    files.push((home.join("Cargo.toml"), Source::Text(manifest.into())));
     files.push((
         home.join("lib.rs"),
         Source::Text(
@@ -78,16 +76,26 @@ pub fn add_package(root: &Path, files: &mut Files) -> Result<()> {
     )
 }
 
-/// The folders of the members of the workspace at `root` (its `members`,
-/// a `dir/*` pattern read as the folders in `dir` with a manifest),
-/// relative to it; `None` where it lists none.
-fn members(root: &Path) -> Result<Option<Vec<String>>> {
-    let path = root.join("Cargo.toml");
-    let text =
-        fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
-    let manifest: toml::Table =
-        toml::from_str(&text).with_context(|| format!("cannot parse {}", path.display()))?;
-    let Some(listed) = manifest
+/// The staged file at `path`, parsed as TOML; `None` where there is none.
+fn staged_toml(files: &Files, path: &Path) -> Result<Option<toml::Table>> {
+    let Some((_, source)) = files.iter().find(|(to, _)| to == path) else {
+        return Ok(None);
+    };
+    let text = String::from_utf8(source.read()?)
+        .with_context(|| format!("{} is not UTF-8", path.display()))?;
+    toml::from_str(&text)
+        .map(Some)
+        .with_context(|| format!("cannot parse {}", path.display()))
+}
+
+/// The folders of the members of the staged workspace (its `members`, a
+/// `dir/*` pattern read as the folders in `dir` with a manifest); `None`
+/// where it lists none.
+fn members(files: &Files) -> Result<Option<Vec<String>>> {
+    let Some(workspace) = staged_toml(files, Path::new("Cargo.toml"))? else {
+        return Ok(None);
+    };
+    let Some(listed) = workspace
         .get("workspace")
         .and_then(|w| w.get("members"))
         .and_then(toml::Value::as_array)
@@ -95,16 +103,24 @@ fn members(root: &Path) -> Result<Option<Vec<String>>> {
         return Ok(None);
     };
     let mut members = Vec::new();
-    for member in listed.iter().filter_map(toml::Value::as_str) {
+    // (The replay packages are the topics again, built apart.)
+    let replays = format!("{}/", super::replay::REPLAY_DIR);
+    for member in listed
+        .iter()
+        .filter_map(toml::Value::as_str)
+        .filter(|member| !member.starts_with(&replays))
+    {
         match member.strip_suffix("/*") {
             Some(dir) => {
-                let entries = fs::read_dir(root.join(dir))
-                    .with_context(|| format!("cannot read {}", root.join(dir).display()))?;
-                let mut found: Vec<String> = entries
-                    .flatten()
-                    .filter(|entry| entry.path().join("Cargo.toml").is_file())
-                    .filter_map(|entry| entry.file_name().into_string().ok())
-                    .map(|name| format!("{dir}/{name}"))
+                let mut found: Vec<String> = files
+                    .iter()
+                    .filter_map(|(to, _)| {
+                        let rest = to.strip_prefix(dir).ok()?;
+                        let mut parts = rest.components();
+                        let name = parts.next()?.as_os_str().to_str()?;
+                        (parts.as_path() == Path::new("Cargo.toml"))
+                            .then(|| format!("{dir}/{name}"))
+                    })
                     .collect();
                 found.sort();
                 members.extend(found);
@@ -164,18 +180,13 @@ fn enabled_by_default(manifest: &toml::Table) -> BTreeMap<String, Vec<String>> {
 
 /// The manifest: what every member (but the benchmarks) depends on, each
 /// system's dependencies under that system's `target` table.
-fn manifest(root: &Path, members: &[String]) -> Result<String> {
+fn manifest(files: &Files, members: &[String]) -> Result<String> {
     let mut dependencies: BTreeMap<String, toml::Value> = BTreeMap::new();
     let mut targets: BTreeMap<String, BTreeMap<String, toml::Value>> = BTreeMap::new();
     for member in members {
-        let path = root.join(member).join("Cargo.toml");
-        if !path.is_file() {
+        let Some(manifest) = staged_toml(files, &Path::new(member).join("Cargo.toml"))? else {
             continue;
-        }
-        let text =
-            fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
-        let manifest: toml::Table =
-            toml::from_str(&text).with_context(|| format!("cannot parse {}", path.display()))?;
+        };
         let name = manifest
             .get("package")
             .and_then(|p| p.get("name"))
@@ -334,6 +345,8 @@ fn merge(dependencies: &mut BTreeMap<String, toml::Value>, name: &str, spec: tom
 
 #[cfg(test)]
 mod tests {
+    use std::path::PathBuf;
+
     use super::*;
 
     fn table(text: &str) -> toml::Value {
@@ -398,16 +411,17 @@ mod tests {
     #[test]
     fn the_course_s_members_but_the_benchmarks_are_named() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-        let members = members(root).unwrap().unwrap();
+        let files = crate::stage::edition_plan(root, crate::stage::Overlay::Own).unwrap();
+        let members = members(&files).unwrap().unwrap();
         assert!(
             members.contains(&"exercises/01-lines".to_owned()),
             "{members:?}"
         );
         assert!(members.contains(&"xtask/viewer".to_owned()), "{members:?}");
-        let manifest: toml::Table = toml::from_str(&manifest(root, &members).unwrap()).unwrap();
+        let manifest: toml::Table = toml::from_str(&manifest(&files, &members).unwrap()).unwrap();
         let dependencies = manifest["dependencies"].as_table().unwrap();
         // A topic's, the grader's, the viewer's, a test's; not the benchmarks'.
-        for name in ["glam", "proptest", "clap", "eframe", "egui_kittest"] {
+        for name in ["glam", "proptest", "clap", "eframe", "approx"] {
             assert!(dependencies.contains_key(name), "{name}: {dependencies:?}");
         }
         assert!(!dependencies.contains_key("criterion"), "{dependencies:?}");
@@ -417,5 +431,33 @@ mod tests {
         );
         assert_eq!(by_default["wgpu"], ["dx12"]);
         assert!(by_default.contains_key("eframe") && !by_default.contains_key("lz4"));
+    }
+
+    #[test]
+    fn the_features_of_a_staged_edition_are_its_own() {
+        // An edition's workspace names no course-only dependency: neither
+        // may the features package built from it.
+        let files: Files = vec![
+            (
+                PathBuf::from("Cargo.toml"),
+                Source::Text(b"[workspace]\nmembers = [\"exercises/*\"]\n".to_vec()),
+            ),
+            (
+                PathBuf::from("exercises/01-x/Cargo.toml"),
+                Source::Text(
+                    b"[package]\nname = \"x\"\n[dev-dependencies]\nglam.workspace = true\n"
+                        .to_vec(),
+                ),
+            ),
+            (
+                PathBuf::from("exercises/01-x/src/lib.rs"),
+                Source::Text(Vec::new()),
+            ),
+        ];
+        let members = members(&files).unwrap().unwrap();
+        assert_eq!(members, ["exercises/01-x"]);
+        let manifest: toml::Table = toml::from_str(&manifest(&files, &members).unwrap()).unwrap();
+        let dependencies = manifest["dependencies"].as_table().unwrap();
+        assert_eq!(dependencies.keys().collect::<Vec<_>>(), ["glam"]);
     }
 }

@@ -183,7 +183,7 @@ pub fn plan(root: &Path, overlay: Overlay<'_>) -> Result<Files> {
     let mut files = edition_plan(root, overlay)?;
     replay::add_packages(root, &mut files)?;
     if root.join("exercises").is_dir() {
-        features::add_package(root, &mut files)?;
+        features::add_package(&mut files)?;
     }
     files.sort();
     Ok(files)
