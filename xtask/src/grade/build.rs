@@ -265,7 +265,10 @@ pub fn build_all(
     for topic in topics {
         args.extend(["--package", &topic.package]);
     }
-    let args = builder.unified(args);
+    let mut targets: Vec<String> = topics.iter().flat_map(|t| test_targets(&t.dir)).collect();
+    targets.sort();
+    targets.dedup();
+    let args = builder.unified(only_tests(args, &targets));
     let names: Vec<&str> = topics.iter().map(|t| t.name.as_str()).collect();
     let run = builder.cargo(&names.join("+"), &args, &[])?;
     if let Some(stopped) = run.stopped {
@@ -278,6 +281,16 @@ pub fn build_all(
         .iter()
         .map(|topic| test_binaries(&run.stdout, Some(&topic.dir)))
         .collect()))
+}
+
+/// `args` with `--test` for each of `targets`, the integration tests a
+/// grade runs: not the libraries' own unit tests, which no task holds.
+/// With no targets, `args` as they are (cargo builds every test).
+fn only_tests<'a>(mut args: Vec<&'a str>, targets: &'a [String]) -> Vec<&'a str> {
+    for target in targets {
+        args.extend(["--test", target]);
+    }
+    args
 }
 
 /// `cargo test --no-run` with JSON messages.
@@ -295,7 +308,8 @@ fn cargo_test_args() -> Vec<&'static str> {
 pub fn build(builder: &Builder, topic: &Topic) -> Result<Build> {
     let mut args = cargo_test_args();
     args.extend(["--package", &topic.package]);
-    let args = builder.unified(args);
+    let targets = test_targets(&topic.dir);
+    let args = builder.unified(only_tests(args, &targets));
     let run = builder.cargo(&topic.name, &args, &[])?;
     if let Some(stopped) = run.stopped {
         return Ok(Build::Failed(stopped));
@@ -376,7 +390,8 @@ pub fn add_replays(
     let package = crate::stage::replay::package_name(topic);
     let mut args = cargo_test_args();
     args.extend(["--package", &package]);
-    let args = builder.unified(args);
+    let targets = test_targets(package_dir);
+    let args = builder.unified(only_tests(args, &targets));
     let what = format!("{}{}", topic.name, crate::stage::replay::REPLAY_SUFFIX);
     let run = builder.cargo(&what, &args, &[])?;
     if !run.success {
