@@ -10,6 +10,7 @@ mod common;
 
 use std::fs;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
 
 use serde_json::Value;
 
@@ -423,12 +424,29 @@ fn checkout(dir: &Path, a: &str) {
     write("exercises/01-x/src/b.rs", UNTOUCHED);
 }
 
+/// Whether this run wrote the fake course already. The tests of this file
+/// run at once and share the course: the first writes it and holds this
+/// while it runs (its run installs the engine), the others wait for it,
+/// so that none reads a file another is writing or an engine half
+/// installed.
+static COURSE_WRITTEN: Mutex<bool> = Mutex::new(false);
+
 /// The fake course (kept between runs, with the engine in its tools
-/// folder) and a fresh class of [`MEMBERS`].
-fn course_and_class(case: &str) -> (PathBuf, PathBuf) {
+/// folder) and a fresh class of [`MEMBERS`]; for the first test of the
+/// run, the lock to hold while it runs (see [`COURSE_WRITTEN`]).
+fn course_and_class(case: &str) -> (PathBuf, PathBuf, Option<MutexGuard<'static, bool>>) {
     let scratch = Path::new(env!("CARGO_TARGET_TMPDIR"));
     let course = scratch.join("similarity-course");
-    checkout(&course, &format!("{GIVEN}{TASKS}"));
+    let mut written = COURSE_WRITTEN
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let first = if *written {
+        None
+    } else {
+        checkout(&course, &format!("{GIVEN}{TASKS}"));
+        *written = true;
+        Some(written)
+    };
     let class = scratch.join(format!("similarity-class-{case}"));
     if class.exists() {
         fs::remove_dir_all(&class).unwrap();
@@ -436,7 +454,7 @@ fn course_and_class(case: &str) -> (PathBuf, PathBuf) {
     for (name, solution) in MEMBERS {
         checkout(&class.join(name), &format!("{GIVEN}{solution}"));
     }
-    (course, class)
+    (course, class, first)
 }
 
 fn pair<'a>(report: &'a Value, a: &str, b: &str) -> &'a Value {
@@ -450,7 +468,7 @@ fn pair<'a>(report: &'a Value, a: &str, b: &str) -> &'a Value {
 
 #[test]
 fn a_copied_pair_is_flagged_and_ranks_above_an_accidental_one() {
-    let (course, class) = course_and_class("ranking");
+    let (course, class, _first) = course_and_class("ranking");
     let out = class.join("similarity");
     let output = common::xtask(
         &course,
@@ -512,7 +530,7 @@ fn a_copied_pair_is_flagged_and_ranks_above_an_accidental_one() {
 
 #[test]
 fn the_threshold_decides_what_is_flagged() {
-    let (course, class) = course_and_class("threshold");
+    let (course, class, _first) = course_and_class("threshold");
     let out = class.join("similarity");
     let output = common::xtask(
         &course,
@@ -542,7 +560,7 @@ fn the_threshold_decides_what_is_flagged() {
 
 #[test]
 fn one_checkout_is_no_class() {
-    let (course, class) = course_and_class("one");
+    let (course, class, _first) = course_and_class("one");
     let output = common::xtask(
         &course,
         &["similarity", class.join("s01-ada").to_str().unwrap()],
