@@ -378,15 +378,15 @@ fn record(
                 let inner = format_ident!("__transcript_inner{position}");
                 let wrapper = quote! {
                     move |#(#arguments: #types),*| -> #ret {
-                        let __transcript_outside = __transcript_recording.callback(
+                        __transcript_recording.callback(
                             #position,
-                            &mut |__transcript_out: &mut ::std::vec::Vec<u8>| {
-                                #(::transcript::Record::record(&#arguments, __transcript_out);)*
+                            (#(#arguments,)*),
+                            |__transcript_arguments, __transcript_out| {
+                                let (#(#arguments,)*) = __transcript_arguments;
+                                #(::transcript::Record::record(#arguments, __transcript_out);)*
                             },
-                        );
-                        let __transcript_value = (#inner)(#(#arguments),*);
-                        ::core::mem::drop(__transcript_outside);
-                        __transcript_value
+                            |(#(#arguments,)*)| (#inner)(#(#arguments),*),
+                        )
                     }
                 };
                 prologue.push(match callback.by_ref {

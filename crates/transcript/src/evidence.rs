@@ -124,9 +124,7 @@ impl Changes {
     #[inline]
     pub fn note_range(&mut self, range: std::ops::Range<usize>) {
         if let Some(journal) = &mut self.0 {
-            for index in range {
-                journal.note(index);
-            }
+            journal.note_range(range);
         }
     }
 
@@ -154,8 +152,19 @@ impl Changes {
     }
 }
 
+// The journal's writes are kept out of line: a write to a value outside
+// the grader (a benchmark, the viewer) is then one test of the journal's
+// absence in a loop whose variables stay in registers; inlined, the loop
+// that plots a midpoint line's pixels ran at two thirds of the speed.
 impl Journal {
-    #[inline]
+    #[inline(never)]
+    fn note_range(&mut self, range: std::ops::Range<usize>) {
+        for index in range {
+            self.note(index);
+        }
+    }
+
+    #[inline(never)]
     fn note(&mut self, index: usize) {
         if self.everything {
             return;

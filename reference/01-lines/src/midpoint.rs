@@ -39,36 +39,51 @@ pub fn midpoint_line(from: Pixel, to: Pixel, mut plot: impl FnMut(Pixel)) {
     {
         return;
     }
-    let (dx, dy) = (i64::from(to.x - from.x), i64::from(to.y - from.y));
-    let (sx, sy) = (if dx < 0 { -1 } else { 1 }, if dy < 0 { -1 } else { 1 });
-    let x_major = dx.abs() >= dy.abs();
-    let (long, short) = if x_major {
-        (dx.abs(), dy.abs())
+    let (dx, dy) = (to.x - from.x, to.y - from.y);
+    // The octant is settled here, once: `walk` steps along the major axis
+    // and `pixel` puts its (major, minor) coordinates back in place. Each
+    // call is compiled with its own `pixel`, so the loop that runs per
+    // pixel chooses nothing.
+    if dx.abs() >= dy.abs() {
+        walk(from.x, from.y, dx, dy, Pixel::new, &mut plot);
     } else {
-        (dy.abs(), dx.abs())
-    };
-    // The diagonal step leads to the smaller minor coordinate exactly when
-    // the minor axis runs backwards: then a tie takes it.
-    let diagonal_on_tie = if x_major { sy < 0 } else { sx < 0 };
-    // "d > 0, or d = 0 when ties take the diagonal" is, for integers,
-    // "d + 1 > 0" in the second case: one comparison per pixel.
-    let tie_bias = i64::from(diagonal_on_tie);
-    let diagonal = (sx, sy);
-    let straight = if x_major { (sx, 0) } else { (0, sy) };
-    let mut d = 2 * short - long;
-    let (mut x, mut y) = (from.x, from.y);
-    plot(Pixel::new(x, y));
-    for _ in 0..long {
-        let step = if d + tie_bias > 0 {
-            d += 2 * (short - long);
-            diagonal
-        } else {
-            d += 2 * short;
-            straight
-        };
-        x += step.0;
-        y += step.1;
-        plot(Pixel::new(x, y));
+        walk(from.y, from.x, dy, dx, |major, minor| Pixel::new(minor, major), &mut plot);
     }
     // END SOLUTION
 }
+
+// BEGIN SOLUTION
+
+/// The midpoint walk in the first octant's terms: from `(major, minor)`,
+/// `|d_major|` steps of one pixel along the major axis, each also a step
+/// along the minor axis when the decision variable says so. A tie takes
+/// the diagonal step exactly when the minor axis runs backwards, so that
+/// it leads to the smaller minor coordinate.
+#[inline(always)] // the caller's `pixel` and `plot` inlined into the loop
+fn walk(
+    mut major: i32,
+    mut minor: i32,
+    d_major: i32,
+    d_minor: i32,
+    pixel: impl Fn(i32, i32) -> Pixel,
+    plot: &mut impl FnMut(Pixel),
+) {
+    let (long, short) = (i64::from(d_major).abs(), i64::from(d_minor).abs());
+    let (step_major, step_minor) = (d_major.signum(), d_minor.signum());
+    // "d > 0, or d = 0 when ties take the diagonal" is, for integers,
+    // "d + 1 > 0" in the second case: one comparison per pixel.
+    let tie_bias = i64::from(d_minor < 0);
+    let mut d = 2 * short - long;
+    plot(pixel(major, minor));
+    for _ in 0..long {
+        if d + tie_bias > 0 {
+            d += 2 * (short - long);
+            minor += step_minor;
+        } else {
+            d += 2 * short;
+        }
+        major += step_major;
+        plot(pixel(major, minor));
+    }
+}
+// END SOLUTION

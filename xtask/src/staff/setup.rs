@@ -155,7 +155,14 @@ pub fn cargo_insta(tools: &Path) -> anyhow::Result<std::path::PathBuf> {
         "==> installing cargo-insta {CARGO_INSTA_VERSION}, insta's review tool (once, under a minute): cargo install cargo-insta --locked --debug"
     );
     let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
-        .args(["install", "--quiet", "--locked", "--debug", "cargo-insta", "--version"])
+        .args([
+            "install",
+            "--quiet",
+            "--locked",
+            "--debug",
+            "cargo-insta",
+            "--version",
+        ])
         .arg(CARGO_INSTA_VERSION)
         .env("CARGO_PROFILE_DEV_DEBUG", "false")
         .arg("--root")
