@@ -6,7 +6,8 @@
 //! credited to every contender) and small ones (vertices within 16 pixels
 //! of each other, throughput in triangles: set-up cost dominates).
 //! Contenders: the reference scanline fill with its active edge table
-//! (writing spans, and pixel by pixel through `fill_polygon`), the
+//! (writing spans, and pixel by pixel through `fill_polygon`), the same
+//! spans found beforehand and only written (the writes' own cost), the
 //! reference edge-function rasterizer (which also interpolates depth
 //! and colour per pixel), the same in lanes over the bounding box (task
 //! 03/7, seed 004's vectorised bonus: eight pixels of a row at once, depth
@@ -141,6 +142,28 @@ fn contenders(group: &mut BenchmarkGroup<'_, WallTime>, triangles: &[[Vec2; 3]])
                         |span| canvas.fill_span(span, Rgba::WHITE),
                         |_, _| ControlFlow::Continue(()),
                     );
+                }
+                black_box(&canvas);
+            });
+        },
+    );
+    // The writes alone: the same spans, found beforehand, filled into the
+    // canvas. What the fill's own work costs is the difference.
+    let mut spans = Vec::new();
+    for tri in triangles {
+        fill_spans(
+            tri,
+            viewport,
+            |span| spans.push(span),
+            |_, _| ControlFlow::Continue(()),
+        );
+    }
+    group.bench_function(
+        "Canvas::fill_span of the same spans, found beforehand (the writes alone)",
+        |b| {
+            b.iter(|| {
+                for &span in &spans {
+                    canvas.fill_span(span, Rgba::WHITE);
                 }
                 black_box(&canvas);
             });
