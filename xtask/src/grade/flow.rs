@@ -454,6 +454,20 @@ impl Prepared {
             .unwrap_or_else(std::sync::PoisonError::into_inner);
         let viewer = match self.viewer.take() {
             Some(viewer) => viewer,
+            None if !pipeline::worth_drawing(
+                &topics
+                    .iter()
+                    .map(|t| {
+                        (
+                            t.name.as_str(),
+                            t.tasks.iter().map(|task| task.passed).sum(),
+                        )
+                    })
+                    .collect::<Vec<_>>(),
+            ) =>
+            {
+                pipeline::Viewer::NotYet
+            }
             None => {
                 let building = Instant::now();
                 let viewer = self.build_viewer(&plans, events);

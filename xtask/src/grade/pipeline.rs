@@ -178,6 +178,22 @@ pub enum Viewer {
     Built(PathBuf),
     /// Why it did not build.
     Failed(String),
+    /// Not built: no stage of the pictures' topics passes a test yet, so
+    /// the pictures would show nothing of the student's (a grade built
+    /// topic by topic, the student's own: the viewer's first build takes
+    /// about half a minute, the first grade's longest wait after the
+    /// dependencies).
+    NotYet,
+}
+
+/// Whether the student's stages can draw anything yet: some topic whose
+/// stages the pictures draw with passes a test (`passed`: each graded
+/// topic and the tests it passes).
+#[must_use]
+pub fn worth_drawing(passed: &[(&str, usize)]) -> bool {
+    passed.iter().any(|&(topic, passed)| {
+        passed > 0 && (MESH_TOPICS.contains(&topic) || CHAIN_TOPICS.contains(&topic))
+    })
 }
 
 /// Builds the viewer of the staged course at `root` with the stages of the
@@ -233,6 +249,12 @@ pub fn draw_all(plan: &Plan<'_>, viewer: &Viewer) -> Vec<PipelinePicture> {
     let binary = match viewer {
         Viewer::None => return Vec::new(),
         Viewer::Failed(error) => return failed(format!("the viewer did not build: {error}")),
+        Viewer::NotYet => {
+            return failed(
+                "drawn once one of your stages (clipping, lines, fill, depth test, NURBS, tessellation) passes a test"
+                    .to_owned(),
+            );
+        }
         Viewer::Built(binary) => binary,
     };
     if let Err(error) = fs::create_dir_all(&dir) {
@@ -446,6 +468,20 @@ fn tail(path: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_viewer_waits_for_a_stage_that_passes_a_test() {
+        assert!(!worth_drawing(&[]));
+        assert!(!worth_drawing(&[
+            ("01-lines", 0),
+            ("03-fill", 0),
+            ("09-tessellation", 0)
+        ]));
+        // A topic that no picture draws with does not count.
+        assert!(!worth_drawing(&[("01-lines", 0), ("02-circles", 5)]));
+        assert!(worth_drawing(&[("01-lines", 1)]));
+        assert!(worth_drawing(&[("02-circles", 0), ("08-nurbs", 3)]));
+    }
 
     #[test]
     fn the_viewers_manifest_pairs_its_features_with_topics() {
