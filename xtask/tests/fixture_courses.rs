@@ -258,6 +258,21 @@ fn processes_with(marker: &str) -> Vec<String> {
 #[test]
 fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
     let root = fixture("hostile", "tricks");
+    // The sleep this grade's `spawns` leaves behind is told apart by its
+    // argument: the test above grades the same course at the same time,
+    // and its sleep is alive while its own `spawns` test runs.
+    let marker = format!("sleep 299.{}", std::process::id());
+    let tricks = root.join("exercises/04-tricks/src/tricks.rs");
+    let code = fs::read_to_string(&tricks).unwrap();
+    assert!(code.contains(".arg(\"299.123\")"), "{code}");
+    fs::write(
+        &tricks,
+        code.replace(
+            ".arg(\"299.123\")",
+            &format!(".arg(\"{}\")", &marker["sleep ".len()..]),
+        ),
+    )
+    .unwrap();
     let (_, report, elapsed) = grade(&root, "grade", &["tricks", "--jobs", "1"]);
 
     // In the sandbox the solution cannot be read, and the report a test
@@ -291,7 +306,7 @@ fn tricks_leave_nothing_behind_and_a_looping_task_fails_fast() {
     // The sleeps a test started and left running die with it.
     let spawns = task(&report, "04-tricks", "spawns");
     assert_eq!(spawns["score"], 0.0);
-    let left = processes_with("sleep 299.123");
+    let left = processes_with(&marker);
     assert!(left.is_empty(), "processes outlived their test: {left:?}");
 
     // Once a test of a task timed out, its other tests are not run.
