@@ -1,7 +1,9 @@
 //! The reference lines against imageproc, on a 1024² canvas, in one run:
 //! the midpoint line, task 1's DDA and the bonus's DDA in lanes (both with
-//! colour and depth), imageproc's line; Wu against imageproc's antialiased
-//! line.
+//! colour and depth), imageproc's line, and the same pixels written without
+//! finding them (the floor any line pays here); the midpoint line and
+//! imageproc's on flat and steep lines apart; Wu against imageproc's
+//! antialiased line.
 //!
 //! Throughput is in pixels: every line of the set counts
 //! `max(|Δx|, |Δy|) + 1` pixels for both contenders.
@@ -9,7 +11,8 @@
 use std::hint::black_box;
 
 use canvas::{Canvas, Pixel, Rgba, Vertex};
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main};
 use image::RgbaImage;
 use imageproc::drawing::{draw_antialiased_line_segment_mut, draw_line_segment_mut};
 use imageproc::pixelops::interpolate;
@@ -76,10 +79,47 @@ fn aliased(c: &mut Criterion) {
             black_box(&canvas);
         });
     });
+    imageproc_lines(&mut group, &lines);
+    // What any rasterizer writing these pixels pays: the same pixels,
+    // found beforehand, written in the same order.
+    let pixels = midpoint_pixels(&lines);
+    canvas_writes(&mut group, &mut canvas, &pixels);
+    plain_stores(&mut group, &pixels);
+    group.finish();
+}
+
+/// The line set split by orientation: flat lines step along rows (a
+/// pixel's neighbour is the next 4 bytes), steep lines along columns (a
+/// row, 4 KiB, from the last), so the two meet the memory differently.
+fn orientations(c: &mut Criterion) {
+    let (flat, steep): (Vec<_>, Vec<_>) = line_set()
+        .into_iter()
+        .partition(|[a, b]| (a.x - b.x).abs() >= (a.y - b.y).abs());
+    for (name, lines) in [("flat, |Δx| ≥ |Δy|", flat), ("steep, |Δx| < |Δy|", steep)] {
+        let mut group = c.benchmark_group(format!("aliased lines, 1024², {name}"));
+        group.throughput(Throughput::Elements(pixel_count(&lines)));
+        let mut canvas = Canvas::new(SIDE, SIDE);
+        group.bench_function("reference midpoint_line", |b| {
+            b.iter(|| {
+                for &[from, to] in &lines {
+                    midpoint_line(from, to, |p| canvas.set(p, Rgba::WHITE));
+                }
+                black_box(&canvas);
+            });
+        });
+        imageproc_lines(&mut group, &lines);
+        let pixels = midpoint_pixels(&lines);
+        canvas_writes(&mut group, &mut canvas, &pixels);
+        plain_stores(&mut group, &pixels);
+        group.finish();
+    }
+}
+
+fn imageproc_lines(group: &mut BenchmarkGroup<'_, WallTime>, lines: &[[Pixel; 2]]) {
     let mut image = RgbaImage::new(SIDE, SIDE);
     group.bench_function("imageproc draw_line_segment_mut", |b| {
         b.iter(|| {
-            for &[from, to] in &lines {
+            for &[from, to] in lines {
                 draw_line_segment_mut(
                     &mut image,
                     (from.x as f32, from.y as f32),
@@ -90,7 +130,52 @@ fn aliased(c: &mut Criterion) {
             black_box(&image);
         });
     });
-    group.finish();
+}
+
+/// Every pixel of the set, in the order the midpoint line plots them.
+fn midpoint_pixels(lines: &[[Pixel; 2]]) -> Vec<Pixel> {
+    let mut pixels = Vec::new();
+    for &[from, to] in lines {
+        midpoint_line(from, to, |p| pixels.push(p));
+    }
+    pixels
+}
+
+/// The canvas's part: the pixels written with [`Canvas::set`], found
+/// beforehand.
+fn canvas_writes(group: &mut BenchmarkGroup<'_, WallTime>, canvas: &mut Canvas, pixels: &[Pixel]) {
+    group.bench_function(
+        "Canvas::set of the same pixels, found beforehand (the writes alone)",
+        |b| {
+            b.iter(|| {
+                for &p in pixels {
+                    canvas.set(p, Rgba::WHITE);
+                }
+                black_box(&*canvas);
+            });
+        },
+    );
+}
+
+/// The floor of the benchmark: the pixels' stores and nothing else (a
+/// plain image of the canvas's size, the indices worked out beforehand).
+fn plain_stores(group: &mut BenchmarkGroup<'_, WallTime>, pixels: &[Pixel]) {
+    let indices: Vec<usize> = pixels
+        .iter()
+        .map(|p| p.y as usize * SIDE as usize + p.x as usize)
+        .collect();
+    let mut image = vec![[0_u8; 4]; SIDE as usize * SIDE as usize];
+    group.bench_function(
+        "plain stores of the same pixels, indices found beforehand (the floor)",
+        |b| {
+            b.iter(|| {
+                for &i in &indices {
+                    image[i] = [255; 4];
+                }
+                black_box(&image);
+            });
+        },
+    );
 }
 
 /// The rasterizers alone: every fragment goes into a checksum instead of
@@ -170,5 +255,5 @@ fn antialiased(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, aliased, pixels_only, antialiased);
+criterion_group!(benches, aliased, orientations, pixels_only, antialiased);
 criterion_main!(benches);
