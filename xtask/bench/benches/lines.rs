@@ -50,14 +50,7 @@ fn aliased(c: &mut Criterion) {
     let mut group = c.benchmark_group("aliased lines, 1024²");
     group.throughput(Throughput::Elements(pixel_count(&lines)));
     let mut canvas = Canvas::new(SIDE, SIDE);
-    group.bench_function("reference midpoint_line", |b| {
-        b.iter(|| {
-            for &[from, to] in &lines {
-                midpoint_line(from, to, |p| canvas.set(p, Rgba::WHITE));
-            }
-            black_box(&canvas);
-        });
-    });
+    midpoint_lines(&mut group, &mut canvas, &lines);
     // The DDAs interpolate colour and depth as well (white to white here).
     let vertices: Vec<[Vertex; 2]> = lines
         .iter()
@@ -99,20 +92,28 @@ fn orientations(c: &mut Criterion) {
         let mut group = c.benchmark_group(format!("aliased lines, 1024², {name}"));
         group.throughput(Throughput::Elements(pixel_count(&lines)));
         let mut canvas = Canvas::new(SIDE, SIDE);
-        group.bench_function("reference midpoint_line", |b| {
-            b.iter(|| {
-                for &[from, to] in &lines {
-                    midpoint_line(from, to, |p| canvas.set(p, Rgba::WHITE));
-                }
-                black_box(&canvas);
-            });
-        });
+        midpoint_lines(&mut group, &mut canvas, &lines);
         imageproc_lines(&mut group, &lines);
         let pixels = midpoint_pixels(&lines);
         canvas_writes(&mut group, &mut canvas, &pixels);
         plain_stores(&mut group, &pixels);
         group.finish();
     }
+}
+
+fn midpoint_lines(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    canvas: &mut Canvas,
+    lines: &[[Pixel; 2]],
+) {
+    group.bench_function("reference midpoint_line", |b| {
+        b.iter(|| {
+            for &[from, to] in lines {
+                midpoint_line(from, to, |p| canvas.set(p, Rgba::WHITE));
+            }
+            black_box(&*canvas);
+        });
+    });
 }
 
 fn imageproc_lines(group: &mut BenchmarkGroup<'_, WallTime>, lines: &[[Pixel; 2]]) {
