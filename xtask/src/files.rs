@@ -203,9 +203,25 @@ pub fn plain_file(root: &Path, relative: &Path) -> std::result::Result<(), Strin
 /// through plain folders ([`plain_file`]) and holds at most
 /// [`MAX_SUBMITTED_FILE`] bytes; `None` otherwise (a link, a device, a
 /// pipe, a flood: nothing the grader reads could block it or follow a
-/// link out of the submission).
+/// link out of the submission). On Unix it is read through one handle
+/// opened without following a link and without blocking (see
+/// `nofollow`): a file swapped for a named pipe between a check and the
+/// open cannot stop the grader.
 #[must_use]
 pub fn read_plain(root: &Path, relative: &Path) -> Option<Vec<u8>> {
+    #[cfg(unix)]
+    {
+        crate::grade::submission::nofollow::read(root, relative, MAX_SUBMITTED_FILE).ok()
+    }
+    #[cfg(not(unix))]
+    {
+        read_checked(root, relative)
+    }
+}
+
+/// [`read_plain`] off Unix: the path checked ([`plain_file`]), then opened.
+#[cfg(not(unix))]
+fn read_checked(root: &Path, relative: &Path) -> Option<Vec<u8>> {
     use std::io::Read as _;
     plain_file(root, relative).ok()?;
     let file = File::open(root.join(relative)).ok()?;
@@ -397,6 +413,19 @@ pub fn remove_tree(path: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Writes `contents` to a new file at `path`, never to one found there:
+/// an entry already at `path` (a file, or a link a test left for the
+/// grader's next write to follow) is an `Err`, and nothing is written.
+pub fn write_new(path: &Path, contents: &[u8]) -> Result<()> {
+    use std::io::Write as _;
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .and_then(|mut file| file.write_all(contents))
+        .with_context(|| format!("cannot write a new {}", path.display()))
+}
+
 /// Removes a file, link or other entry that is no folder (on Windows a
 /// link to a folder is removed as a folder).
 fn remove_entry(path: &Path, kind: &fs::FileType) -> Result<()> {
@@ -413,9 +442,21 @@ fn remove_entry(path: &Path, kind: &fs::FileType) -> Result<()> {
     }
 }
 
-/// `fs::read_dir`, and where that is denied, again after the folder was
-/// made its owner's to read and change ([`make_owners`]).
+/// `fs::read_dir` of a folder about to be emptied, made its owner's to
+/// read and change first where it is not ([`make_owners`]): a test may
+/// leave a folder it can read but not change (`chmod 0555`), whose
+/// entries a grader that is not root could then not remove.
 fn read_dir_as_owner(folder: &Path) -> std::io::Result<fs::ReadDir> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        if let Ok(meta) = fs::symlink_metadata(folder)
+            && meta.is_dir()
+            && meta.permissions().mode() & 0o700 != 0o700
+        {
+            make_owners(folder);
+        }
+    }
     fs::read_dir(folder).or_else(|error| {
         if error.kind() == ErrorKind::PermissionDenied {
             make_owners(folder);
@@ -821,6 +862,67 @@ pub(crate) mod tests {
         remove_tree(&dir.join("missing")).unwrap();
         remove_tree(&dir).unwrap();
         assert!(!dir.exists());
+    }
+
+    /// The grader's token goes only into a file of its own making: a link
+    /// a test left where the token goes is not followed.
+    #[cfg(unix)]
+    #[test]
+    fn a_new_file_is_never_one_found_there() {
+        let dir = scratch("write-new");
+        fs::write(dir.join("row.json"), "a member's row").unwrap();
+        std::os::unix::fs::symlink(dir.join("row.json"), dir.join("token")).unwrap();
+        assert!(write_new(&dir.join("token"), b"secret").is_err());
+        assert_eq!(
+            fs::read_to_string(dir.join("row.json")).unwrap(),
+            "a member's row"
+        );
+        std::os::unix::fs::symlink(dir.join("nowhere"), dir.join("dangling")).unwrap();
+        assert!(write_new(&dir.join("dangling"), b"secret").is_err());
+        assert!(
+            !dir.join("nowhere").exists(),
+            "a dangling link makes no file"
+        );
+        write_new(&dir.join("fresh"), b"secret").unwrap();
+        assert_eq!(fs::read(dir.join("fresh")).unwrap(), b"secret");
+        remove_tree(&dir).unwrap();
+    }
+
+    /// A grader that is not root (a delegated cgroup v2) removes a test's
+    /// folders as their owner, not past their permissions: a folder a test
+    /// left readable but not writable (`chmod 0555`) once kept its
+    /// entries, and with them whatever the test had planted for the
+    /// grader's next write there. Run as root, the test above proves
+    /// nothing of this: here it is run again as `nobody`.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn read_only_folders_are_removed_by_a_grader_that_is_not_root() {
+        use std::os::unix::fs::MetadataExt as _;
+        let dir = scratch("uid");
+        fs::write(dir.join("mine"), "").unwrap();
+        let root = fs::metadata(dir.join("mine")).unwrap().uid() == 0;
+        remove_tree(&dir).unwrap();
+        if !root {
+            return; // the test above ran as the user it needs
+        }
+        let test = "files::tests::removal_takes_read_only_folders_and_single_entries";
+        let run = std::process::Command::new("setpriv")
+            .args(["--reuid=65534", "--regid=65534", "--clear-groups", "--"])
+            .arg(std::env::current_exe().unwrap())
+            .args(["--exact", test, "--test-threads=1"])
+            .env("TMPDIR", std::env::temp_dir())
+            .output();
+        let Ok(run) = run else {
+            eprintln!("no setpriv here: the removal was not tried as another user");
+            return;
+        };
+        let said = String::from_utf8_lossy(&run.stdout);
+        assert!(
+            run.status.success(),
+            "as nobody:\n{said}{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        assert!(said.contains("1 passed"), "{said}");
     }
 
     /// A checkout whose folders nest past [`MAX_DEPTH`], or whose path is

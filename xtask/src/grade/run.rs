@@ -250,7 +250,10 @@ impl TestCommand {
             stderr: None,
         };
         let recorded = Jail::get().run(&job)?;
-        let _ = crate::files::remove_tree(scratch);
+        // What the student's code left in the scratch folder goes before
+        // the grader writes there (the token's file): it is the grader's
+        // own folder again, or the test is not run with the token.
+        crate::files::remove_tree(scratch)?;
         let recorded_output = read_tail(&recorded_log)?;
         // Stopped by a limit or killed by a signal (a stack overflow, an
         // abort): nothing to replay, and its own output says why.
@@ -272,7 +275,7 @@ impl TestCommand {
             .as_ref()
             .is_some_and(|meta| !meta.file_type().is_file());
         if not_plain {
-            let _ = crate::files::remove_tree(&transcript);
+            crate::files::remove_tree(&transcript)?;
         }
         let replayed = self.run_with_token(replay, Some(&transcript));
         let _ = crate::files::remove_tree(&record_dir);
@@ -369,15 +372,16 @@ impl TestCommand {
             fs::create_dir_all(parent)
                 .with_context(|| format!("cannot create {}", parent.display()))?;
         }
-        fs::write(&self.verdict_file, &token)
-            .with_context(|| format!("cannot write {}", self.verdict_file.display()))?;
+        // A new file, never one found there: a link left in the folder by
+        // a test's code is not followed.
+        crate::files::write_new(&self.verdict_file, token.as_bytes())?;
         let mut env = self.env.clone();
         env.push((VERDICT_FILE_VAR.into(), self.verdict_file.clone().into()));
         let mut read_only = vec![executable.to_path_buf()];
         let mut writable = self.writable.clone();
         if let Some(transcript) = transcript {
             env.push((transcript::REPLAY_VAR.into(), transcript.into()));
-            if transcript.exists() {
+            if fs::symlink_metadata(transcript).is_ok_and(|meta| meta.is_file()) {
                 read_only.push(transcript.to_path_buf());
             }
             // A test of a topic not replayed runs the student's code with

@@ -100,12 +100,26 @@ jobs:
           TOKEN: ${{{{ secrets.CLASS_TOKEN || github.token }}}}
         run: |
           mkdir class
-          while IFS= read -r line || [ -n "$line" ]; do
-            repository="$(printf '%s' "${{line%%#*}}" | tr -d '[:space:]')"
-            [ -z "$repository" ] && continue
-            git clone --quiet --depth 1 "https://x-access-token:$TOKEN@github.com/$repository.git" "class/${{repository##*/}}" \
+          repositories() {{
+            while IFS= read -r line || [ -n "$line" ]; do
+              repository="$(printf '%s' "${{line%%#*}}" | tr -d '[:space:]')"
+              if [ -n "$repository" ]; then printf '%s\n' "$repository"; fi
+            done < "$ROSTER"
+          }}
+          # A member's folder is its repository's name; where the roster
+          # names more than one owner, owner--name, so that two owners'
+          # repositories of one name are two members.
+          owners="$(repositories | sed 's|/.*||' | sort -u | wc -l)"
+          while IFS= read -r repository; do
+            folder="${{repository##*/}}"
+            [ "$owners" -gt 1 ] && folder="${{repository%%/*}}--$folder"
+            if [ -e "class/$folder" ]; then
+              echo "::error::$repository is on the roster twice (its folder class/$folder is taken)"
+              continue
+            fi
+            git clone --quiet --depth 1 "https://x-access-token:$TOKEN@github.com/$repository.git" "class/$folder" \
               || echo "::warning::cannot clone $repository"
-          done < "$ROSTER"
+          done < <(repositories)
           echo "$(find class -mindepth 1 -maxdepth 1 -type d | wc -l) member(s) cloned"
       - name: Grade this shard
         working-directory: course
@@ -165,5 +179,94 @@ mod tests {
             !yaml.contains("${{{") && !yaml.contains("{MAX_SHARDS}"),
             "{yaml}"
         );
+    }
+
+    /// The script of the step `step` of `yaml`, as bash gets it.
+    fn script(yaml: &str, step: &str) -> String {
+        let from = yaml.find(&format!("- name: {step}\n")).expect("the step");
+        let run = from + yaml[from..].find("run: |\n").expect("its script") + "run: |\n".len();
+        yaml[run..]
+            .lines()
+            .take_while(|line| line.is_empty() || line.starts_with("          "))
+            .map(|line| line.get(10..).unwrap_or(""))
+            .collect::<Vec<_>>()
+            .join("\n")
+    }
+
+    /// Two owners' repositories of one name are two members (a member
+    /// once took a classmate's row by naming a repository like theirs),
+    /// and a repository twice on the roster is cloned once.
+    #[cfg(unix)]
+    #[test]
+    fn the_class_is_cloned_into_a_folder_for_each_repository() {
+        let dir = crate::files::tests::scratch("clone-class");
+        let bin = dir.join("bin");
+        std::fs::create_dir(&bin).unwrap();
+        // git clone --quiet --depth 1 URL FOLDER: the folder, with the URL.
+        crate::files::write_file(
+            &bin.join("git"),
+            "#!/bin/sh\nmkdir \"$6\" && echo \"$5\" > \"$6/url\"\n",
+        )
+        .unwrap();
+        std::fs::set_permissions(
+            bin.join("git"),
+            std::os::unix::fs::PermissionsExt::from_mode(0o755),
+        )
+        .unwrap();
+        let clone = |roster: &str| -> (Vec<String>, String) {
+            let _ = crate::files::remove_tree(&dir.join("class"));
+            std::fs::write(dir.join("roster.txt"), roster).unwrap();
+            let run = std::process::Command::new("bash")
+                // As GitHub runs a step's script: `bash -eo pipefail`.
+                .args([
+                    "-eo",
+                    "pipefail",
+                    "-c",
+                    &script(
+                        &workflow(&"teach/raster".parse().unwrap()),
+                        "Clone the class",
+                    ),
+                ])
+                .current_dir(&dir)
+                .env("ROSTER", dir.join("roster.txt"))
+                .env("TOKEN", "t")
+                .env(
+                    "PATH",
+                    format!("{}:{}", bin.display(), std::env::var("PATH").unwrap()),
+                )
+                .output()
+                .unwrap();
+            assert!(
+                run.status.success(),
+                "{}",
+                String::from_utf8_lossy(&run.stderr)
+            );
+            let mut folders: Vec<String> = std::fs::read_dir(dir.join("class"))
+                .unwrap()
+                .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect();
+            folders.sort();
+            (folders, String::from_utf8_lossy(&run.stdout).into_owned())
+        };
+        let (folders, said) =
+            clone("alice/raster\n# a note\n\n bob/raster # Bob\nalice/raster\n# the end\n");
+        assert_eq!(folders, ["alice--raster", "bob--raster"], "{said}");
+        assert!(
+            said.contains("::error::alice/raster is on the roster twice"),
+            "{said}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("class/bob--raster/url"))
+                .unwrap()
+                .trim(),
+            "https://x-access-token:t@github.com/bob/raster.git"
+        );
+        let (folders, _) = clone("org/raster-anna\norg/raster-ben");
+        assert_eq!(
+            folders,
+            ["raster-anna", "raster-ben"],
+            "one owner: the repositories' names"
+        );
+        crate::files::remove_tree(&dir).unwrap();
     }
 }

@@ -193,6 +193,19 @@ mod tests {
             read("../sub/exercises/01-x/src/dda.rs"),
             Err(Refusal::Refused(_))
         ));
+        // A named pipe with no writer: opened without blocking, refused
+        // (the grader's reads of a member's files go through here).
+        let pipe = sub.join("exercises/01-x/src/pipe.rs");
+        let made = std::process::Command::new("mkfifo").arg(&pipe).status();
+        if made.is_ok_and(|status| status.success()) {
+            assert!(
+                matches!(read("exercises/01-x/src/pipe.rs"), Err(Refusal::Refused(why)) if why.contains("not a plain file"))
+            );
+            assert_eq!(
+                crate::files::read_plain(&sub, Path::new("exercises/01-x/src/pipe.rs")),
+                None
+            );
+        }
         let _ = fs::remove_dir_all(&dir);
     }
 }
