@@ -10,6 +10,9 @@
 //! | `sparse-task-file` | its task file a sparse file of 1 TiB | (read whole, as any task file) |
 //! | `leaves-links` | a link to a solution, and a pipe, in its picture and pending-snapshot folders | `zip -r` of the report follows the link |
 //! | `evil⏎total 20.0 ∕ 20 ok␛[2J` | its name, and a grading file's, hold a line break and a terminal escape | a fake total line in the tutor's terminal |
+//! | `gradebook.json` | its name, the class's gradebook's | its report folder took the gradebook's place: no gradebook was written |
+//! | `twin-\xfe`, `twin-\xff` | names that are not UTF-8 | decoded lossily, one name: both graded into one folder at once |
+//! | `=HYPERLINK("…")` | its name a formula | a live formula in the tutor's spreadsheet |
 //!
 //! — beside an honest member, who must be graded in full; the gradebook
 //! and a merge of it must be written; each hostile member gets its grade
@@ -38,6 +41,9 @@ mod linux {
     /// The name of the member whose name is an attack on the terminal (a
     /// file name holds no `/`: its fake total divides with U+2215).
     const EVIL: &str = "evil\ntotal 20.0 \u{2215} 20 ok\u{1b}[2J";
+
+    /// The name of the member whose name is a spreadsheet formula.
+    const FORMULA: &str = "=HYPERLINK(\"http:∕∕example.com\")";
 
     /// What the grader keeps of one grade's pictures, snapshots and logs
     /// (`files::KEPT_BUDGET`).
@@ -154,6 +160,15 @@ mod linux {
         );
         member(official, class, "leaves-links", Some(&planting(&links)));
 
+        member(official, class, "gradebook.json", Some(&ops("x * 2", "-x")));
+        member(official, class, FORMULA, Some(&ops("x * 2", "-x")));
+        for (twin, byte) in [("twin-a", 0xfe_u8), ("twin-b", 0xff)] {
+            use std::os::unix::ffi::OsStrExt as _;
+            let made = member(official, class, twin, Some(&ops("x * 2", "-x")));
+            let name = [b"twin-".as_slice(), &[byte]].concat();
+            fs::rename(made, class.join(std::ffi::OsStr::from_bytes(&name))).unwrap();
+        }
+
         let evil = member(official, class, EVIL, Some(&ops("x * 2", "-x")));
         fs::write(
             evil.join(format!("exercises/01-tiny/tests/fake\n{}.rs", &EVIL[5..])),
@@ -201,6 +216,24 @@ mod linux {
         assert!(gradebook.contains("\na-honest,3,3,"), "{gradebook}");
         let honest = read_json(&out.join("a-honest/report.json"));
         assert_eq!(honest["score"], 3.0);
+
+        // Members named like the class's gradebook, twins by lossy
+        // decoding, a formula: each graded into a folder of its own, the
+        // class's files beside them, no formula in the gradebook.
+        assert!(
+            out.join("gradebook.json").is_file(),
+            "the class's gradebook"
+        );
+        for name in ["_gradebook.json", "twin-%FE", "twin-%FF"] {
+            let report = read_json(&out.join(name).join("report.json"));
+            assert_eq!(report["score"], 3.0, "{name}: {report:#}");
+            assert!(gradebook.contains(&format!("\n{name},3,3,")), "{gradebook}");
+        }
+        assert!(
+            gradebook.contains("\n\"'=HYPERLINK(\"\"http:∕∕example.com\"\")\",3,3,"),
+            "{gradebook}"
+        );
+        assert!(!gradebook.contains("\n="), "{gradebook}");
 
         // Each hostile member has its grade, or its reason.
         for name in ["deep-folders", "floods-pictures", "leaves-links", EVIL] {

@@ -38,12 +38,20 @@ pub enum Edition {
     Reference,
 }
 
+/// A path as JSON text: its lossy UTF-8 form.
+fn lossy_path<S: serde::Serializer>(path: &std::path::Path, to: S) -> Result<S::Ok, S::Error> {
+    to.serialize_str(&path.to_string_lossy())
+}
+
 /// Everything one `cargo xtask grade` found.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
     /// [`SCHEMA`].
     pub schema: u32,
-    /// The checkout that was graded.
+    /// The checkout that was graded (a path that is not UTF-8 is written
+    /// lossily: a member's folder name may be anything a file system
+    /// takes, and the report is still written).
+    #[serde(serialize_with = "lossy_path")]
     pub root: PathBuf,
     /// Student code or reference solutions.
     pub edition: Edition,

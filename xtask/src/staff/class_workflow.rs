@@ -117,7 +117,7 @@ jobs:
               echo "::error::$repository is on the roster twice (its folder class/$folder is taken)"
               continue
             fi
-            git clone --quiet --depth 1 "https://x-access-token:$TOKEN@github.com/$repository.git" "class/$folder" \
+            git clone --quiet --depth 1 "https://x-access-token:$TOKEN@github.com/$repository.git" "class/$folder" </dev/null \
               || echo "::warning::cannot clone $repository"
           done < <(repositories)
           echo "$(find class -mindepth 1 -maxdepth 1 -type d | wc -l) member(s) cloned"

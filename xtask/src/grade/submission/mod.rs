@@ -392,12 +392,49 @@ pub fn run(official: &Path, dir: &Path, options: &GradeOptions) -> Result<Report
     Ok(report)
 }
 
-/// A member's name: its checkout's folder name.
+/// The entries a class's grade folder holds of its own, beside its
+/// members' folders: no member's folder is named like one of them.
+pub(crate) const CLASS_ENTRIES: [&str; 6] = [
+    "gradebook.csv",
+    "gradebook.json",
+    "class.html",
+    "class.json",
+    "similarity.html",
+    "similarity.json",
+];
+
+/// A member's name, which is also its folder's in the class's grade
+/// folder: its checkout's folder name, made one that no other member and
+/// no entry of the class folder ([`CLASS_ENTRIES`]) can have.
+///
+/// - A byte that is not part of a UTF-8 character is written `%XX`, and
+///   `%` itself `%25` (decoded lossily, `a\xff` and `a\xfe` were both
+///   `a\u{fffd}`: two members graded into one folder at once).
+/// - A name of the class folder's own entries (in any case: a folder
+///   `Class.html` is `class.html` on macOS), or one that starts with `_`,
+///   gets a `_` in front (a member `gradebook.json` stopped the class's
+///   gradebook from being written).
+///
+/// Each step maps different names to different names, so no two members
+/// share one.
 pub(crate) fn member_name(submission: &Path) -> String {
-    submission.file_name().map_or_else(
-        || "submission".to_owned(),
-        |n| n.to_string_lossy().into_owned(),
-    )
+    let Some(raw) = submission.file_name() else {
+        return "submission".to_owned();
+    };
+    let mut name = String::new();
+    for chunk in raw.as_encoded_bytes().utf8_chunks() {
+        name.push_str(&chunk.valid().replace('%', "%25"));
+        for byte in chunk.invalid() {
+            name.push_str(&format!("%{byte:02X}"));
+        }
+    }
+    let reserved = CLASS_ENTRIES
+        .iter()
+        .any(|entry| entry.eq_ignore_ascii_case(&name));
+    if reserved || name.starts_with('_') {
+        name.insert(0, '_');
+    }
+    name
 }
 
 /// A relative path with `/` separators, for messages.
@@ -411,6 +448,34 @@ pub(crate) fn slashed(path: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Members' names: plain ones as they are; no two members one name,
+    /// and none the name of the class folder's own entries.
+    #[test]
+    fn member_names_are_distinct_and_none_is_the_class_folders() {
+        let name = |n: &str| member_name(&Path::new("class").join(n));
+        assert_eq!(name("anna"), "anna");
+        assert_eq!(name("raster-ben.2"), "raster-ben.2");
+        assert_eq!(name("gradebook.json"), "_gradebook.json");
+        assert_eq!(name("Class.HTML"), "_Class.HTML");
+        assert_eq!(name("_gradebook.json"), "__gradebook.json");
+        assert_eq!(name("100%"), "100%25");
+        assert_eq!(member_name(Path::new("/")), "submission");
+        for entry in CLASS_ENTRIES {
+            assert_ne!(name(entry).to_lowercase(), entry);
+        }
+        #[cfg(unix)]
+        {
+            use std::os::unix::ffi::OsStrExt as _;
+            let raw = |bytes: &[u8]| {
+                member_name(&Path::new("class").join(std::ffi::OsStr::from_bytes(bytes)))
+            };
+            assert_eq!(raw(b"a\xff"), "a%FF");
+            assert_ne!(raw(b"a\xff"), raw(b"a\xfe"));
+            assert_ne!(raw(b"a\xff"), name("a%FF"));
+            assert_eq!(raw("zoë".as_bytes()), "zoë");
+        }
+    }
 
     /// The course this tooling ships with.
     fn course() -> PathBuf {

@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped, remove_tree};
 use crate::grade::report::{self, Report};
-use crate::grade::submission::Integrity;
+use crate::grade::submission::{CLASS_ENTRIES, Integrity};
 
 /// A member's row, in its report folder.
 pub const ROW_FILE: &str = "gradebook-row.json";
@@ -153,6 +153,10 @@ impl Class {
         let json =
             serde_json::to_string_pretty(&self.rows).context("cannot serialise the gradebook")?;
         for (file, contents) in [("gradebook.csv", csv), ("gradebook.json", json)] {
+            debug_assert!(
+                CLASS_ENTRIES.contains(&file),
+                "no member may be named {file}"
+            );
             let path = out.join(file);
             fs::write(&path, contents)
                 .with_context(|| format!("cannot write {}", path.display()))?;
@@ -304,12 +308,21 @@ pub(super) fn gradebook_csv(rows: &[GradebookRow]) -> String {
     csv
 }
 
-/// A CSV field, quoted when it holds a comma, a quote or a line break.
+/// A CSV text field, quoted when it holds a comma, a quote or a line
+/// break. A field that a spreadsheet would take for a formula (a member's
+/// folder named `=HYPERLINK(…)`: it starts with `=`, `+`, `-`, `@`, a tab
+/// or a carriage return) gets a `'` in front, which spreadsheets read as
+/// "text follows" (OWASP's advice on CSV injection).
 fn csv_field(text: &str) -> String {
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        format!("'{text}")
+    } else {
+        text.to_owned()
+    };
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {
-        text.to_owned()
+        text
     }
 }
 
@@ -404,9 +417,13 @@ mod tests {
     }
 
     #[test]
-    fn csv_fields_are_quoted_only_when_needed() {
+    fn csv_fields_are_quoted_only_when_needed_and_never_formulas() {
         assert_eq!(csv_field("anna"), "anna");
         assert_eq!(csv_field("a,b"), "\"a,b\"");
         assert_eq!(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(csv_field("=1+1"), "'=1+1");
+        assert_eq!(csv_field("@SUM(A1)"), "'@SUM(A1)");
+        assert_eq!(csv_field("-2,3"), "\"'-2,3\"");
+        assert_eq!(csv_field("anna-2"), "anna-2");
     }
 }
