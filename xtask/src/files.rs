@@ -203,33 +203,35 @@ pub fn plain_file(root: &Path, relative: &Path) -> std::result::Result<(), Strin
 /// through plain folders ([`plain_file`]) and holds at most
 /// [`MAX_SUBMITTED_FILE`] bytes; `None` otherwise (a link, a device, a
 /// pipe, a flood: nothing the grader reads could block it or follow a
-/// link out of the submission). On Unix it is read through one handle
-/// opened without following a link and without blocking (see
-/// `nofollow`): a file swapped for a named pipe between a check and the
-/// open cannot stop the grader.
+/// link out of the submission). On Unix the file is opened without
+/// following a link and without blocking, and read only if the handle is
+/// a plain file: a file swapped for a named pipe or a link after the check
+/// cannot stop the grader or lead it elsewhere.
 #[must_use]
 pub fn read_plain(root: &Path, relative: &Path) -> Option<Vec<u8>> {
-    #[cfg(unix)]
-    {
-        crate::grade::submission::nofollow::read(root, relative, MAX_SUBMITTED_FILE).ok()
-    }
-    #[cfg(not(unix))]
-    {
-        read_checked(root, relative)
-    }
-}
-
-/// [`read_plain`] off Unix: the path checked ([`plain_file`]), then opened.
-#[cfg(not(unix))]
-fn read_checked(root: &Path, relative: &Path) -> Option<Vec<u8>> {
     use std::io::Read as _;
     plain_file(root, relative).ok()?;
-    let file = File::open(root.join(relative)).ok()?;
+    let file = open_plain(&root.join(relative))?;
     let mut bytes = Vec::new();
     file.take(MAX_SUBMITTED_FILE + 1)
         .read_to_end(&mut bytes)
         .ok()?;
     (bytes.len() as u64 <= MAX_SUBMITTED_FILE).then_some(bytes)
+}
+
+/// The file at `path` opened for reading if, as opened, it is a plain
+/// file; on Unix opened without following a link and without blocking (a
+/// named pipe with no writer would block the open until one came).
+fn open_plain(path: &Path) -> Option<File> {
+    let mut open = fs::OpenOptions::new();
+    open.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt as _;
+        open.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
+    }
+    let file = open.open(path).ok()?;
+    file.metadata().ok()?.is_file().then_some(file)
 }
 
 /// Writes `contents` to `path`, creating the folders it lies in.
@@ -862,6 +864,27 @@ pub(crate) mod tests {
         remove_tree(&dir.join("missing")).unwrap();
         remove_tree(&dir).unwrap();
         assert!(!dir.exists());
+    }
+
+    /// What the grader opens to read is a plain file as opened: a named
+    /// pipe (which would block the open) or a link put in a file's place
+    /// after its check is not read.
+    #[cfg(unix)]
+    #[test]
+    fn only_a_plain_file_is_opened_and_a_pipe_without_blocking() {
+        let dir = scratch("open-plain");
+        fs::write(dir.join("file"), "x").unwrap();
+        std::os::unix::fs::symlink(dir.join("file"), dir.join("link")).unwrap();
+        assert!(open_plain(&dir.join("file")).is_some());
+        assert!(open_plain(&dir.join("link")).is_none());
+        assert!(open_plain(&dir).is_none());
+        let made = std::process::Command::new("mkfifo")
+            .arg(dir.join("pipe"))
+            .status();
+        if made.is_ok_and(|status| status.success()) {
+            assert!(open_plain(&dir.join("pipe")).is_none());
+        }
+        remove_tree(&dir).unwrap();
     }
 
     /// The grader's token goes only into a file of its own making: a link
