@@ -227,8 +227,9 @@ fn open_plain(path: &Path) -> Option<File> {
     open.read(true);
     #[cfg(unix)]
     {
+        use rustix::fs::OFlags;
         use std::os::unix::fs::OpenOptionsExt as _;
-        open.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
+        open.custom_flags((OFlags::NOFOLLOW | OFlags::NONBLOCK).bits().cast_signed());
     }
     let file = open.open(path).ok()?;
     file.metadata().ok()?.is_file().then_some(file)

@@ -252,8 +252,15 @@ impl TestCommand {
         let recorded = Jail::get().run(&job)?;
         // What the student's code left in the scratch folder goes before
         // the grader writes there (the token's file): it is the grader's
-        // own folder again, or the test is not run with the token.
-        crate::files::remove_tree(scratch)?;
+        // own folder again, or the test is not run with the token. (Off
+        // Unix, where students grade their own work, a virus scanner that
+        // holds a file a moment is no reason to stop: the token's file is
+        // still a new one.)
+        if let Err(error) = crate::files::remove_tree(scratch)
+            && cfg!(unix)
+        {
+            return Err(error);
+        }
         let recorded_output = read_tail(&recorded_log)?;
         // Stopped by a limit or killed by a signal (a stack overflow, an
         // abort): nothing to replay, and its own output says why.
@@ -373,7 +380,8 @@ impl TestCommand {
                 .with_context(|| format!("cannot create {}", parent.display()))?;
         }
         // A new file, never one found there: a link left in the folder by
-        // a test's code is not followed.
+        // a test's code is not followed (removed, it is the link that goes).
+        let _ = fs::remove_file(&self.verdict_file);
         crate::files::write_new(&self.verdict_file, token.as_bytes())?;
         let mut env = self.env.clone();
         env.push((VERDICT_FILE_VAR.into(), self.verdict_file.clone().into()));

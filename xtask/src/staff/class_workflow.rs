@@ -182,6 +182,7 @@ mod tests {
     }
 
     /// The script of the step `step` of `yaml`, as bash gets it.
+    #[cfg(unix)]
     fn script(yaml: &str, step: &str) -> String {
         let from = yaml.find(&format!("- name: {step}\n")).expect("the step");
         let run = from + yaml[from..].find("run: |\n").expect("its script") + "run: |\n".len();
