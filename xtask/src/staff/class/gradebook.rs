@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::files::{MAX_SUBMITTED_FILE, files_under, read_capped, remove_tree};
 use crate::grade::report::{self, Report};
-use crate::grade::submission::{CLASS_ENTRIES, Integrity};
+use crate::grade::submission::Integrity;
 
 /// A member's row, in its report folder.
 pub const ROW_FILE: &str = "gradebook-row.json";
@@ -153,10 +153,6 @@ impl Class {
         let json =
             serde_json::to_string_pretty(&self.rows).context("cannot serialise the gradebook")?;
         for (file, contents) in [("gradebook.csv", csv), ("gradebook.json", json)] {
-            debug_assert!(
-                CLASS_ENTRIES.contains(&file),
-                "no member may be named {file}"
-            );
             let path = out.join(file);
             fs::write(&path, contents)
                 .with_context(|| format!("cannot write {}", path.display()))?;
